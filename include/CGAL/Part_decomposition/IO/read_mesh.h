@@ -1,0 +1,343 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_IO_READ_MESH_H
+#define CGAL_PART_DECOMPOSITION_IO_READ_MESH_H
+
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Dynamic_property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace IO {
+
+/*!
+\ingroup PkgPartDecompositionIO
+What `read_triangle_mesh()` did to turn a file into a triangle mesh, and the correspondence
+between the faces of the mesh and the faces of the file, so that per-face results can be written
+in the file's face order with `labels_in_file_order()`.
+*/
+struct Mesh_file_info
+{
+  /// the number of faces (polygons) in the file.
+  std::size_t number_of_input_faces = 0;
+  /// the number of vertices in the file.
+  std::size_t number_of_input_vertices = 0;
+  /// for the `i`-th face of the mesh, in the iteration order of `faces(tm)`, the index of the
+  /// file face it comes from (a polygon of the file gives several triangles).
+  std::vector<std::size_t> face_to_input;
+  /// the file faces that gave no triangle (fewer than three distinct vertices), each with the
+  /// index (iteration order) of the mesh face whose result it takes: a face sharing a vertex with
+  /// it, or else the face with the nearest centroid.
+  std::vector<std::pair<std::size_t, std::size_t> > dropped_faces;
+  /// the number of file faces with more than three vertices, triangulated by ear clipping.
+  std::size_t number_of_triangulated_faces = 0;
+  /// the number of file vertices merged into another one with the same coordinates.
+  std::size_t number_of_merged_vertices = 0;
+  /// the number of vertices duplicated to make the surface manifold and orientable.
+  std::size_t number_of_duplicated_vertices = 0;
+  /// the number of closed connected components whose orientation was reversed to point outward.
+  std::size_t number_of_reversed_components = 0;
+};
+
+/*!
+\ingroup PkgPartDecompositionIO
+reads the file `filename` (OFF, OBJ, PLY, STL; chosen by extension) into the triangle mesh `tm`,
+whatever the file holds: polygons are triangulated, vertices with equal coordinates are merged,
+the soup is oriented consistently (vertices are duplicated where the surface is non-manifold or
+not orientable), and every closed connected component is oriented outward. Open, non-manifold,
+self-intersecting meshes and meshes made of many pieces are all accepted. Faces with fewer than
+three distinct vertices are left out of `tm` and reported in the returned information.
+
+\tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
+
+\param filename the file
+\param tm an empty mesh that receives the triangles
+
+\returns the correspondence between the faces of `tm` and those of the file.
+
+\throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
+(`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
+(`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`).
+*/
+template <typename TriangleMesh>
+Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type VPM;
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
+
+  Mesh_file_info info;
+  {
+    std::ifstream probe(filename);
+    if(!probe)
+      throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
+  }
+  std::vector<Read_point> file_points;
+  std::vector<std::vector<std::size_t> > polygons;
+  bool ok = false;
+  try
+  {
+    ok = CGAL::IO::read_polygon_soup(filename, file_points, polygons,
+                                     CGAL::parameters::verbose(false));
+  }
+  catch(const std::exception&)
+  {
+    ok = false;
+  }
+  if(!ok)
+    throw Invalid_input(Input_error::UNREADABLE_FILE,
+                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY or STL mesh");
+  info.number_of_input_faces = polygons.size();
+  info.number_of_input_vertices = file_points.size();
+  if(polygons.empty())
+    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face");
+  for(const Read_point& p : file_points)
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
+                          "'" + filename + "' has a vertex with a non-finite coordinate");
+  for(const std::vector<std::size_t>& poly : polygons)
+  {
+    if(poly.size() < 3)
+      throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with fewer than 3 vertices");
+    for(std::size_t id : poly)
+      if(id >= file_points.size())
+        throw Invalid_input(Input_error::INVALID_FACE,
+                            "'" + filename + "' has a face with an out-of-range vertex index");
+  }
+
+  // Merge points with equal coordinates (STL stores each triangle's corners separately).
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::size_t> merged(file_points.size());
+  {
+    std::map<std::array<double, 3>, std::size_t> index;
+    for(std::size_t i = 0; i < file_points.size(); ++i)
+    {
+      const std::array<double, 3> c = {{file_points[i].x(), file_points[i].y(), file_points[i].z()}};
+      auto res = index.emplace(c, points.size());
+      if(res.second) points.push_back(c);
+      merged[i] = res.first->second;
+    }
+    info.number_of_merged_vertices = file_points.size() - points.size();
+  }
+
+  // Triangles with three distinct vertices, each tagged with its file face.
+  std::vector<std::vector<std::size_t> > triangles;
+  std::vector<std::size_t> triangle_to_input;
+  std::vector<std::size_t> dropped;
+  {
+    auto xyz = [&](std::size_t i) { return points[i]; };
+    std::vector<std::array<std::size_t, 3> > tris;
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+    {
+      std::vector<std::size_t> poly;
+      for(std::size_t id : polygons[f])
+        if(poly.empty() || poly.back() != merged[id]) poly.push_back(merged[id]);
+      while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+      tris.clear();
+      if(poly.size() >= 3)
+      {
+        if(poly.size() > 3) ++info.number_of_triangulated_faces;
+        internal::triangulate_polygon(poly, xyz, tris);
+      }
+      bool any = false;
+      for(const std::array<std::size_t, 3>& t : tris)
+      {
+        if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+        triangles.push_back({t[0], t[1], t[2]});
+        triangle_to_input.push_back(f);
+        any = true;
+      }
+      if(!any) dropped.push_back(f);
+    }
+  }
+  if(triangles.empty())
+    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face with three distinct vertices");
+
+  // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
+  std::vector<std::size_t> triangle_of_point(points.size(), std::size_t(-1));
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(std::size_t id : triangles[t])
+      if(triangle_of_point[id] == std::size_t(-1)) triangle_of_point[id] = t;
+
+  const std::size_t n_points_before = points.size();
+  std::vector<Point> soup_points;
+  soup_points.reserve(points.size());
+  for(const std::array<double, 3>& c : points) soup_points.push_back(Point(c[0], c[1], c[2]));
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, triangles);
+  info.number_of_duplicated_vertices = soup_points.size() - n_points_before;
+
+  // Build the mesh face by face so that a face refused by add_face cannot shift the order;
+  // points that no triangle uses are not added.
+  std::vector<vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
+  for(const std::vector<std::size_t>& t : triangles)
+    for(std::size_t id : t)
+      if(vmap[id] == GT::null_vertex())
+      {
+        vmap[id] = add_vertex(tm);
+        put(get(CGAL::vertex_point, tm), vmap[id], soup_points[id]);
+      }
+  std::vector<face_descriptor> triangle_face(triangles.size(), GT::null_face());
+  std::vector<vertex_descriptor> corners(3);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for(int k = 0; k < 3; ++k) corners[k] = vmap[triangles[t][k]];
+    triangle_face[t] = CGAL::Euler::add_face(corners, tm);
+  }
+
+  // A refused triangle (should not happen after orientation) is treated like a dropped face.
+  std::vector<char> input_has_face(polygons.size(), 0);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    if(triangle_face[t] != GT::null_face()) input_has_face[triangle_to_input[t]] = 1;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    if(triangle_face[t] == GT::null_face() && !input_has_face[triangle_to_input[t]])
+    {
+      input_has_face[triangle_to_input[t]] = 2; // mark once
+      dropped.push_back(triangle_to_input[t]);
+    }
+  if(faces(tm).begin() == faces(tm).end())
+    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' gives no valid triangle");
+
+  // Orient every closed connected component outward (positive enclosed volume).
+  {
+    auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    const std::size_t ncc = CGAL::Polygon_mesh_processing::connected_components(tm, fcc);
+    std::vector<double> volume(ncc, 0.);
+    std::vector<char> closed(ncc, 1);
+    for(face_descriptor f : faces(tm))
+    {
+      const std::size_t c = get(fcc, f);
+      std::array<std::array<double, 3>, 3> p;
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const Point& q = get(get(CGAL::vertex_point, tm), target(h, tm));
+        p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+        if(is_border(opposite(h, tm), tm)) closed[c] = 0;
+      }
+      volume[c] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1])
+                 - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0])
+                 + p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    }
+    std::vector<face_descriptor> to_reverse;
+    for(face_descriptor f : faces(tm))
+      if(closed[get(fcc, f)] && volume[get(fcc, f)] < 0.) to_reverse.push_back(f);
+    for(std::size_t c = 0; c < ncc; ++c)
+      if(closed[c] && volume[c] < 0.) ++info.number_of_reversed_components;
+    if(!to_reverse.empty())
+      CGAL::Polygon_mesh_processing::reverse_face_orientations(to_reverse, tm);
+  }
+
+  // Face correspondence in the iteration order of faces(tm).
+  {
+    auto ftri = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      if(triangle_face[t] != GT::null_face()) put(ftri, triangle_face[t], t);
+    std::vector<std::size_t> position_of_triangle(triangles.size(), std::size_t(-1));
+    for(face_descriptor f : faces(tm))
+    {
+      position_of_triangle[get(ftri, f)] = info.face_to_input.size();
+      info.face_to_input.push_back(triangle_to_input[get(ftri, f)]);
+    }
+    for(std::size_t f : dropped)
+    {
+      std::size_t donor = std::size_t(-1);
+      for(std::size_t id : polygons[f])
+      {
+        const std::size_t t = triangle_of_point[merged[id]];
+        if(t != std::size_t(-1) && position_of_triangle[t] != std::size_t(-1)) { donor = position_of_triangle[t]; break; }
+      }
+      if(donor == std::size_t(-1))
+      {
+        // isolated degenerate face: the mesh face with the nearest centroid
+        std::array<double, 3> c = {{0., 0., 0.}};
+        for(std::size_t id : polygons[f])
+          for(int a = 0; a < 3; ++a) c[a] += points[merged[id]][a] / double(polygons[f].size());
+        double best = std::numeric_limits<double>::infinity();
+        for(std::size_t t = 0; t < triangles.size(); ++t)
+        {
+          if(position_of_triangle[t] == std::size_t(-1)) continue;
+          double d2 = 0.;
+          for(int a = 0; a < 3; ++a)
+          {
+            const double m = (CGAL::to_double(soup_points[triangles[t][0]][a]) +
+                              CGAL::to_double(soup_points[triangles[t][1]][a]) +
+                              CGAL::to_double(soup_points[triangles[t][2]][a])) / 3. - c[a];
+            d2 += m * m;
+          }
+          if(d2 < best) { best = d2; donor = position_of_triangle[t]; }
+        }
+      }
+      info.dropped_faces.emplace_back(f, donor);
+    }
+  }
+  return info;
+}
+
+/*!
+\ingroup PkgPartDecompositionIO
+turns one label per mesh face (in the iteration order of `faces(tm)`, as read by
+`read_triangle_mesh()`) into one label per face of the file, in the file's order. A polygon
+triangulated into several faces takes the label most of its triangles carry (the smallest one on a
+tie); a face left out of the mesh takes the label of its donor face.
+
+\pre `mesh_labels.size() == info.face_to_input.size()`
+*/
+template <typename Label>
+std::vector<Label> labels_in_file_order(const Mesh_file_info& info, const std::vector<Label>& mesh_labels)
+{
+  CGAL_precondition(mesh_labels.size() == info.face_to_input.size());
+  std::vector<std::vector<Label> > votes(info.number_of_input_faces);
+  for(std::size_t i = 0; i < mesh_labels.size(); ++i)
+    votes[info.face_to_input[i]].push_back(mesh_labels[i]);
+  std::vector<Label> out(info.number_of_input_faces, Label());
+  for(std::size_t f = 0; f < votes.size(); ++f)
+  {
+    std::vector<Label>& v = votes[f];
+    if(v.empty()) continue;
+    std::sort(v.begin(), v.end());
+    std::size_t best_count = 0;
+    for(std::size_t i = 0; i < v.size();)
+    {
+      std::size_t j = i;
+      while(j < v.size() && v[j] == v[i]) ++j;
+      if(j - i > best_count) { best_count = j - i; out[f] = v[i]; }
+      i = j;
+    }
+  }
+  for(const auto& d : info.dropped_faces)
+    out[d.first] = mesh_labels[d.second];
+  return out;
+}
+
+} // namespace IO
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_IO_READ_MESH_H

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_NORMALIZATION_H
+#define CGAL_PART_DECOMPOSITION_NORMALIZATION_H
+
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/input_validation.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Part_decomposition {
+
+/*!
+\ingroup PkgPartDecompositionRef
+A uniform scaling and translation that maps the input coordinates of a mesh into the normalized
+cube \f$[-0.5,0.5]^3\f$ in which every voxel grid of the method lives:
+`unit = (p - center) * scale`. Results are mapped back with `from_unit()`.
+*/
+class Normalization
+{
+public:
+  /// the identity.
+  Normalization() : m_center{{0., 0., 0.}}, m_scale(1.) {}
+  /// the map `p -> (p - center) * scale`. \pre `scale > 0`
+  Normalization(const std::array<double, 3>& center, double scale) : m_center(center), m_scale(scale)
+  {
+    CGAL_precondition(scale > 0.);
+  }
+
+  /// the input point mapped to the centre of the cube.
+  const std::array<double, 3>& center() const { return m_center; }
+  /// the factor from input lengths to normalized lengths.
+  double scale() const { return m_scale; }
+
+  /// maps input coordinates to the normalized cube.
+  std::array<double, 3> to_unit(double x, double y, double z) const
+  {
+    return {{(x - m_center[0]) * m_scale, (y - m_center[1]) * m_scale, (z - m_center[2]) * m_scale}};
+  }
+  /// maps a point with `x()`, `y()`, `z()` (any \cgal point) to the normalized cube.
+  template <typename Point_3>
+  std::array<double, 3> to_unit(const Point_3& p) const
+  {
+    return to_unit(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  /// maps normalized coordinates back to input coordinates.
+  std::array<double, 3> from_unit(const std::array<double, 3>& u) const
+  {
+    return {{u[0] / m_scale + m_center[0], u[1] / m_scale + m_center[1], u[2] / m_scale + m_center[2]}};
+  }
+
+private:
+  std::array<double, 3> m_center;
+  double m_scale;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the normalization of `tm`: the centre of its axis-aligned bounding box goes to the
+origin and its longest side to `1 - 2*margin`, so that a free layer of width `margin` separates
+the shape from the border of the cube and the exterior of the shape is connected around it on
+every grid.
+
+\tparam FaceListGraph a model of `FaceListGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<FaceListGraph>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization_margin}
+    \cgalParamDescription{the free margin left on each side of the cube, in normalized units}
+    \cgalParamType{`double`, in `[0, 0.25]`}
+    \cgalParamDefault{`2.0/64`, two voxels of the \f$64^3\f$ grid}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+Only the vertices incident to a face count.
+
+\throws Invalid_input if `tm` has no face, a non-finite coordinate, or all its vertices coincide.
+*/
+template <typename FaceListGraph, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Normalization compute_normalization(const FaceListGraph& tm,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetVertexPointMap<FaceListGraph, NamedParameters>::const_type VPM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), 2.0 / 64.);
+  if(!(margin >= 0. && margin <= 0.25))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "normalization_margin must be in [0, 0.25]");
+
+  double lo[3], hi[3];
+  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
+  bool any = false;
+  for(auto f : faces(tm))
+    for(auto v : vertices_around_face(halfedge(f, tm), tm))
+    {
+      const auto& p = get(vpm, v);
+      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      for(int a = 0; a < 3; ++a)
+      {
+        if(!std::isfinite(c[a]))
+          throw Invalid_input(Input_error::NON_FINITE_COORDINATES, "a vertex has a non-finite coordinate");
+        lo[a] = (std::min)(lo[a], c[a]);
+        hi[a] = (std::max)(hi[a], c[a]);
+      }
+      any = true;
+    }
+  if(!any)
+    throw Invalid_input(Input_error::NO_FACES, "the mesh has no face");
+
+  // Centre and extent in long double: at 1e8 offsets with 1e-8 extents the difference matters.
+  std::array<double, 3> center;
+  long double extent = 0;
+  for(int a = 0; a < 3; ++a)
+  {
+    center[a] = double((static_cast<long double>(lo[a]) + hi[a]) / 2);
+    extent = (std::max)(extent, static_cast<long double>(hi[a]) - lo[a]);
+  }
+  const double scale = double((1. - 2. * margin) / extent);
+  if(!(extent > 0) || !std::isfinite(scale) || !(scale > 0.))
+    throw Invalid_input(Input_error::DEGENERATE_EXTENT, "all vertices of the mesh coincide");
+  return Normalization(center, scale);
+}
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_NORMALIZATION_H

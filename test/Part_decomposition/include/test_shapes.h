@@ -1,0 +1,161 @@
+// Generated analytic shapes shared by the tests. Every shape is closed and outward oriented
+// unless stated otherwise.
+#ifndef PART_DECOMPOSITION_TEST_SHAPES_H
+#define PART_DECOMPOSITION_TEST_SHAPES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace test_shapes {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef CGAL::Surface_mesh<Point> Mesh;
+
+// A triangle soup whose equal points are merged, turned into a Surface_mesh.
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > triangles;
+  std::map<std::array<double, 3>, std::size_t> index;
+
+  std::size_t point(const Point& p)
+  {
+    const std::array<double, 3> c = {{p.x(), p.y(), p.z()}};
+    auto r = index.emplace(c, points.size());
+    if(r.second) points.push_back(p);
+    return r.first->second;
+  }
+  void triangle(const Point& a, const Point& b, const Point& c)
+  {
+    triangles.push_back({point(a), point(b), point(c)});
+  }
+  Mesh mesh() const
+  {
+    Mesh m;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
+    return m;
+  }
+};
+
+// Sphere of radius R: an icosahedron subdivided `level` times, projected on the sphere.
+inline Mesh make_sphere(const Point& c, double R, int level)
+{
+  const double t = (1. + std::sqrt(5.)) / 2.;
+  std::vector<std::array<double, 3> > v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3> > f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
+                                        {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                        {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
+                                        {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  auto unit = [](std::array<double, 3> a) {
+    const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    return std::array<double, 3>{{a[0] / n, a[1] / n, a[2] / n}};
+  };
+  for(auto& p : v) p = unit(p);
+  for(int l = 0; l < level; ++l)
+  {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = mid.find(key);
+      if(it != mid.end()) return it->second;
+      v.push_back(unit({{(v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2}}));
+      return mid[key] = int(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3> > g;
+    for(const auto& tri : f)
+    {
+      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), cc = midpoint(tri[2], tri[0]);
+      g.push_back({tri[0], a, cc});
+      g.push_back({tri[1], b, a});
+      g.push_back({tri[2], cc, b});
+      g.push_back({a, b, cc});
+    }
+    f.swap(g);
+  }
+  Soup s;
+  auto P = [&](int i) { return Point(c.x() + R * v[i][0], c.y() + R * v[i][1], c.z() + R * v[i][2]); };
+  for(const auto& tri : f) s.triangle(P(tri[0]), P(tri[1]), P(tri[2]));
+  return s.mesh();
+}
+
+// Axis-aligned box [lo, hi], each face split into n x n squares of two triangles.
+inline Mesh make_box(const Point& lo, const Point& hi, int n)
+{
+  Soup s;
+  const double L[3] = {lo.x(), lo.y(), lo.z()}, H[3] = {hi.x(), hi.y(), hi.z()};
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+    {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      auto P = [&](int i, int j) {
+        double c[3];
+        c[axis] = side ? H[axis] : L[axis];
+        c[u] = L[u] + (H[u] - L[u]) * i / n;
+        c[w] = L[w] + (H[w] - L[w]) * j / n;
+        return Point(c[0], c[1], c[2]);
+      };
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          // (u, w, axis) is right-handed: counter-clockwise in (u, w) faces +axis.
+          if(side)
+          {
+            s.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+            s.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+          }
+          else
+          {
+            s.triangle(P(i, j), P(i + 1, j + 1), P(i + 1, j));
+            s.triangle(P(i, j), P(i, j + 1), P(i + 1, j + 1));
+          }
+        }
+    }
+  return s.mesh();
+}
+
+// Closed cylinder of radius R around the z axis through c, from c.z()-h/2 to c.z()+h/2;
+// `na` segments around, `nz` along, caps as triangle fans.
+inline Mesh make_cylinder(const Point& c, double R, double h, int na, int nz)
+{
+  Soup s;
+  const double pi = std::acos(-1.);
+  auto P = [&](int i, int k) {
+    const double a = 2 * pi * (i % na) / na;
+    return Point(c.x() + R * std::cos(a), c.y() + R * std::sin(a), c.z() - h / 2 + h * k / nz);
+  };
+  for(int i = 0; i < na; ++i)
+    for(int k = 0; k < nz; ++k)
+    {
+      s.triangle(P(i, k), P(i + 1, k), P(i + 1, k + 1));
+      s.triangle(P(i, k), P(i + 1, k + 1), P(i, k + 1));
+    }
+  const Point bottom(c.x(), c.y(), c.z() - h / 2), top(c.x(), c.y(), c.z() + h / 2);
+  for(int i = 0; i < na; ++i)
+  {
+    s.triangle(bottom, P(i + 1, 0), P(i, 0));
+    s.triangle(top, P(i, nz), P(i + 1, nz));
+  }
+  return s.mesh();
+}
+
+// Appends `b` to `a` (disjoint union); returns the number of faces `a` had before.
+inline std::size_t append(Mesh& a, const Mesh& b)
+{
+  const std::size_t before = num_faces(a);
+  a.join(b);
+  return before;
+}
+
+} // namespace test_shapes
+
+#endif // PART_DECOMPOSITION_TEST_SHAPES_H
