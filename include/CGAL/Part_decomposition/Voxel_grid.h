@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +34,19 @@ inline int voxel_coordinate(double p, int r)
   if(t >= double(r - 1)) return r - 1;
   return int(t);
 }
+
+/*!
+\ingroup PkgPartDecompositionRef
+The role of a voxel in the Flow/Freeze prior (paper Sec. 3.2): `FLOW` voxels are low-complexity
+surface support where primitives may grow, `FREEZE` voxels mark articulation and thin-structure
+boundaries that stop them, `EMPTY` voxels hold no surface sample.
+*/
+enum class Voxel_class : std::uint8_t
+{
+  EMPTY = 0,  ///< no surface sample
+  FLOW = 1,   ///< surface support below the Freeze threshold
+  FREEZE = 2  ///< surface support at or above the Freeze threshold
+};
 
 /*!
 \ingroup PkgPartDecompositionRef
