@@ -52,6 +52,7 @@ namespace Part_decomposition {
   X(dihedral_quantile_t, dihedral_quantile, dihedral_quantile)                       \
   X(smoothing_iterations_t, smoothing_iterations, smoothing_iterations)              \
   X(minimum_patch_size_t, minimum_patch_size, minimum_patch_size)                    \
+  X(maximum_patch_size_t, maximum_patch_size, maximum_patch_size)                    \
   X(vote_temperature_t, vote_temperature, vote_temperature)                          \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
