@@ -9,11 +9,22 @@
 #define CGAL_PART_DECOMPOSITION_TOPOLOGY_SCORE_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/sample_accumulation.h>
+#include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -50,6 +61,356 @@ struct Topology_score_field
   /// the number of `FREEZE` voxels.
   std::size_t number_of_freeze_voxels = 0;
 };
+
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Fills every grid of `field` but the cut from the sums.
+inline void make_score_field(const Voxel_sums& vs, const std::array<double, 4>& weights,
+                             Topology_score_field& field)
+{
+  const int r = vs.r;
+  field.resolution = r;
+  field.sample_count = Voxel_grid<std::uint32_t>(r, 0);
+  field.curvature_mean = Voxel_grid<double>(r, 0.);
+  field.curvature_deviation = Voxel_grid<double>(r, 0.);
+  field.curvature_gradient = Voxel_grid<double>(r, 0.);
+  field.normal_deviation = Voxel_grid<double>(r, 0.);
+  field.score = Voxel_grid<double>(r, 0.);
+  field.sample_count.values() = vs.n;
+  std::vector<double>& mu = field.curvature_mean.values();
+  for(std::size_t v = 0; v < vs.n.size(); ++v)
+  {
+    if(vs.n[v] == 0) continue;
+    const double inv = 1. / double(vs.n[v]);
+    const double m = vs.s1[v] * inv;
+    mu[v] = m;
+    field.curvature_deviation[v] = std::sqrt((std::max)(0., vs.s2[v] * inv - m * m));
+    field.normal_deviation[v] = vs.sphi[v] * inv;
+  }
+  for(int k = 0; k < r; ++k)
+    for(int j = 0; j < r; ++j)
+      for(int i = 0; i < r; ++i)
+      {
+        const std::size_t v = field.score.index(i, j, k);
+        if(vs.n[v] == 0) continue;
+        const double delta = dense_gradient_norm(mu, r, i, j, k);
+        field.curvature_gradient[v] = delta;
+        field.score[v] = (weights[0] * mu[v] + weights[1] * field.curvature_deviation[v] +
+                          weights[2] * delta + weights[3] * field.normal_deviation[v]) *
+                         std::sqrt(double(vs.n[v]));
+      }
+}
+
+// The Flow/Freeze cut of a field whose `sample_count` and `score` are set.
+inline void flow_freeze_cut(Topology_score_field& field, double alpha)
+{
+  const std::size_t size = field.score.size();
+  CGAL_precondition(field.sample_count.size() == size);
+  field.classes = Voxel_grid<Voxel_class>(field.score.resolution(), Voxel_class::EMPTY);
+  std::vector<double> active;
+  for(std::size_t v = 0; v < size; ++v)
+    if(field.sample_count[v] > 0) active.push_back(field.score[v]);
+  field.number_of_active_voxels = active.size();
+  field.number_of_freeze_voxels = 0;
+  field.threshold = 0.;
+  if(active.empty()) return;
+  field.threshold = linear_quantile(active, 1. - alpha);
+  for(std::size_t v = 0; v < size; ++v)
+  {
+    if(field.sample_count[v] == 0) continue;
+    // A zero score carries no boundary evidence: it only ties at a zero threshold (more than
+    // 1 - alpha of the voxels without any evidence, e.g. flat axis-aligned faces), where freezing
+    // it would freeze the whole support.
+    const bool freeze = field.score[v] >= field.threshold && field.score[v] > 0.;
+    field.classes[v] = freeze ? Voxel_class::FREEZE : Voxel_class::FLOW;
+    field.number_of_freeze_voxels += freeze ? 1 : 0;
+  }
+}
+
+// The score fields and cuts at every resolution of `resolutions`, each a power of two dividing the
+// finest one (the largest), all from one pass over the samples.
+template <typename ConcurrencyTag>
+std::vector<Topology_score_field>
+topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
+                      const std::vector<int>& resolutions, const Normalization& normalization,
+                      const std::vector<std::array<double, 3> >& barycentric,
+                      const std::array<double, 4>& weights, double alpha)
+{
+  CGAL_precondition(!resolutions.empty());
+  const int rf = *std::max_element(resolutions.begin(), resolutions.end());
+  std::vector<Voxel_sums> sums(resolutions.size());
+  for(std::size_t l = 0; l < resolutions.size(); ++l)
+  {
+    const int r = resolutions[l];
+    CGAL_precondition(r >= 1 && rf % r == 0 && is_power_of_two(rf / r));
+    sums[l].r = r;
+    while((r << sums[l].shift) < rf) ++sums[l].shift;
+  }
+  std::vector<Vec3> unit_points(mesh.points.size());
+  for(std::size_t v = 0; v < unit_points.size(); ++v)
+    unit_points[v] = normalization.to_unit(mesh.points[v][0], mesh.points[v][1], mesh.points[v][2]);
+  accumulate_samples<ConcurrencyTag>(unit_points, mesh.faces, c, phi, barycentric, rf, sums);
+
+  std::vector<Topology_score_field> fields(resolutions.size());
+  for_each_block<ConcurrencyTag>(resolutions.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t l = begin; l < end; ++l)
+    {
+      make_score_field(sums[l], weights, fields[l]);
+      flow_freeze_cut(fields[l], alpha);
+    }
+  });
+  return fields;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPartDecompositionRef
+returns the barycentric coordinates \f$(u,v,w)\f$, \f$u+v+w=1\f$, of the deterministic sample
+grid of a triangle (paper App. B, "Surface sampling"): each side is split in \f$n\f$ equal
+parts, which cuts the triangle into \f$n^2\f$ congruent sub-triangles, and the samples are their
+centroids. All samples are strictly inside the triangle, none is shared with a neighbouring
+face, and they are evenly spread over its area. The order is fixed: the \f$n(n+1)/2\f$ upright
+sub-triangles, then the \f$n(n-1)/2\f$ inverted ones. A sample is
+\f$u\,\mathbf{v}_0 + v\,\mathbf{v}_1 + w\,\mathbf{v}_2\f$ for the face's vertices in
+`vertices_around_face()` order.
+
+\param number_of_points_per_face \f$n^2\f$, a perfect square (36 in the paper)
+
+\throws Invalid_input (`INVALID_PARAMETER`) if `number_of_points_per_face` is not a positive
+perfect square.
+*/
+inline std::vector<std::array<double, 3> > barycentric_sample_grid(std::size_t number_of_points_per_face)
+{
+  std::size_t n = std::size_t(std::llround(std::sqrt(double(number_of_points_per_face))));
+  if(number_of_points_per_face == 0 || n * n != number_of_points_per_face)
+    throw Invalid_input(Input_error::INVALID_PARAMETER,
+                        "number_of_points_per_face must be a positive perfect square (n per side gives n^2)");
+  std::vector<std::array<double, 3> > samples;
+  samples.reserve(number_of_points_per_face);
+  const double dn = double(n);
+  // Upright sub-triangle at lattice node (i,j,k), i+j+k = n-1: centroid (i+1/3, j+1/3, k+1/3)/n.
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; i + j < n; ++j)
+    {
+      const double u = (double(i) + 1. / 3.) / dn, v = (double(j) + 1. / 3.) / dn;
+      samples.push_back({{u, v, 1. - u - v}});
+    }
+  // Inverted sub-triangle at (i,j,k), i+j+k = n-2: centroid (i+2/3, j+2/3, k+2/3)/n.
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    for(std::size_t j = 0; i + j + 1 < n; ++j)
+    {
+      const double u = (double(i) + 2. / 3.) / dn, v = (double(j) + 2. / 3.) / dn;
+      samples.push_back({{u, v, 1. - u - v}});
+    }
+  return samples;
+}
+
+/*!
+\ingroup PkgPartDecompositionRef
+(re)computes the Flow/Freeze cut of `field` (paper Eq. 4, 5) from its `sample_count` and
+`score` grids: \f$\tau_\alpha\f$ is the \f$(1-\alpha)\f$-quantile of the scores of the active
+voxels (`sample_count > 0`), computed with linear interpolation between order statistics (the
+default of `numpy.quantile`: with the \f$m\f$ active scores sorted increasingly
+\f$s_0 \le \dots \le s_{m-1}\f$ and \f$h = (m-1)(1-\alpha)\f$,
+\f$\tau_\alpha = s_{\lfloor h\rfloor} + (h - \lfloor h\rfloor)(s_{\lfloor h\rfloor+1} - s_{\lfloor h\rfloor})\f$).
+Active voxels with \f$S_B \geq \tau_\alpha\f$ become `FREEZE`, the others `FLOW`, inactive
+voxels `EMPTY`; a zero score is never Freeze (when more than \f$1-\alpha\f$ of the active
+voxels have no evidence at all, \f$\tau_\alpha = 0\f$ and only the positive scores freeze).
+Without ties the number of Freeze voxels is \f$m - \lceil h \rceil\f$ (or
+\f$m - h\f$ when \f$h\f$ is an integer), within one voxel of \f$\alpha m\f$; tied scores at the
+threshold are all Freeze. Sets `classes`, `threshold`, `number_of_active_voxels` and
+`number_of_freeze_voxels`.
+
+\param field a field whose `sample_count` and `score` grids have the same resolution
+\param freeze_ratio \f$\alpha\f$
+
+\throws Invalid_input (`INVALID_PARAMETER`) unless \f$0 < \alpha < 1\f$.
+*/
+inline void apply_flow_freeze_cut(Topology_score_field& field, double freeze_ratio)
+{
+  internal::flow_freeze_cut(field, internal::checked_freeze_ratio(freeze_ratio));
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+template <typename NamedParameters>
+std::vector<std::array<double, 3> > barycentric_sample_grid_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face), 36));
+  if(!(n >= 1. && n <= 1e7) || n != std::floor(n))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "number_of_points_per_face must be a positive perfect square");
+  return barycentric_sample_grid(std::size_t(n));
+}
+
+template <typename NamedParameters>
+std::array<double, 4> cue_weights_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights),
+                                         std::array<double, 4>{{1., 1., 1., 1.}}));
+}
+
+template <typename NamedParameters>
+double freeze_ratio_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return checked_freeze_ratio(double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), 0.15)));
+}
+
+template <typename TriangleMesh, typename NamedParameters>
+Normalization normalization_parameter(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  if constexpr(is_default_parameter<NamedParameters, internal_np::normalization_t>::value)
+    return compute_normalization(tm, np);
+  else
+    return get_parameter(np, internal_np::normalization);
+}
+
+// The score fields at each resolution (see topology_score_fields()), all parameters read from np.
+template <typename ConcurrencyTag, typename NamedParameters>
+std::vector<Topology_score_field>
+topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
+                      const std::vector<int>& resolutions, const Normalization& normalization,
+                      const NamedParameters& np)
+{
+  return topology_score_fields<ConcurrencyTag>(mesh, c, phi, resolutions, normalization,
+                                               barycentric_sample_grid_parameter(np),
+                                               cue_weights_parameter(np), freeze_ratio_parameter(np));
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the voxel cues, the topology score \f$S_B\f$ and its Flow/Freeze cut at resolution `r`
+(paper Sec. 3.2, Eq. 3-5, App. B).
+
+Every face gets the `number_of_points_per_face` samples of `barycentric_sample_grid()`; they are
+mapped to the normalized cube by `normalization` and binned with `voxel_coordinate()`. One
+accumulation pass gives, per voxel, the number of samples \f$n\f$, the mean \f$\mu^\kappa\f$ and
+standard deviation \f$\sigma^\kappa = \sqrt{\max(0, E[c^2] - \mu^2)}\f$ of the face curvature cue,
+and the mean normal deviation \f$\phi_{norm}\f$ (each sample carries the values of its face).
+\f$\Delta^\kappa = \|\nabla\mu^\kappa\|\f$ is taken on the dense \f$r^3\f$ array of
+\f$\mu^\kappa\f$ (0 in empty voxels) with unit spacing: central differences inside, one-sided
+differences at the border of the grid. Then
+\f$S_B = (\lambda_1\mu^\kappa + \lambda_2\sigma^\kappa + \lambda_3\Delta^\kappa + \lambda_4\phi_{norm})\sqrt{n}\f$
+on the active voxels (\f$n > 0\f$), and `apply_flow_freeze_cut()` with \f$\alpha\f$ =
+`freeze_ratio` gives the classes. Every grid holds 0 (`EMPTY`) outside the active voxels.
+
+The sums are accumulated in face order whatever the number of threads: results are identical
+with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+\tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
+\tparam FaceCurvatureMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `double` as value type
+\tparam FaceNormalDeviationMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `double` as value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh
+\param face_curvature_map the face curvature cue \f$c_f\f$ (e.g. from `compute_geometric_cues()`)
+\param face_normal_deviation_map the normal deviation \f$\phi_{norm}(f)\f$
+\param resolution the resolution \f$r\f$ of the grid
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization}
+    \cgalParamDescription{the map from input coordinates to the normalized cube \f$[-0.5,0.5]^3\f$}
+    \cgalParamType{`CGAL::Part_decomposition::Normalization`}
+    \cgalParamDefault{`compute_normalization(tm, np)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization_margin}
+    \cgalParamDescription{passed to `compute_normalization()` when `normalization` is not given}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`2.0/64`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_points_per_face}
+    \cgalParamDescription{the number of samples per face, \f$n^2\f$ for \f$n\f$ divisions per side}
+    \cgalParamType{an integer type, a positive perfect square}
+    \cgalParamDefault{`36`}
+  \cgalParamNEnd
+  \cgalParamNBegin{cue_weights}
+    \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of
+                          \f$\mu^\kappa, \sigma^\kappa, \Delta^\kappa, \phi_{norm}\f$}
+    \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
+    \cgalParamDefault{`{1, 1, 1, 1}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{freeze_ratio}
+    \cgalParamDescription{the fraction \f$\alpha\f$ of active voxels with the highest scores that become Freeze}
+    \cgalParamType{`double`, in \f$(0, 1)\f$}
+    \cgalParamDefault{`0.15`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the field at resolution `r`.
+
+\pre `tm` has no garbage (`Surface_mesh`)
+\throws Invalid_input (`INVALID_PARAMETER`) if `r` is not in `[1, 256]` or a parameter is out
+of range; (`NOT_TRIANGLE_MESH`) if a face is not a triangle; the exceptions of
+`compute_normalization()` when `normalization` is not given.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename FaceCurvatureMap, typename FaceNormalDeviationMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Topology_score_field compute_topology_score(const TriangleMesh& tm, FaceCurvatureMap face_curvature_map,
+                                            FaceNormalDeviationMap face_normal_deviation_map, int resolution,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::static_check_concurrency_tag<ConcurrencyTag>();
+  if(resolution < 1 || resolution > 256)
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "the resolution must be in [1, 256]");
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const internal::Triangle_arrays mesh =
+    internal::make_triangle_arrays(tm, vpm, CGAL::get_initialized_vertex_index_map(tm, np), fim);
+  std::vector<double> c(mesh.faces.size(), 0.), phi(mesh.faces.size(), 0.);
+  for(auto f : faces(tm))
+  {
+    const std::size_t i = std::size_t(get(fim, f));
+    c[i] = double(get(face_curvature_map, f));
+    phi[i] = double(get(face_normal_deviation_map, f));
+  }
+  const Normalization normalization = internal::normalization_parameter(tm, np);
+  std::vector<Topology_score_field> fields = internal::topology_score_fields<ConcurrencyTag>(
+    mesh, c, phi, std::vector<int>(1, resolution), normalization, np);
+  return std::move(fields.front());
+}
 
 } // namespace Part_decomposition
 } // namespace CGAL

@@ -1,0 +1,129 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_NORMAL_DEVIATION_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_NORMAL_DEVIATION_H
+
+#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/triangle_arrays.h>
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// phi(f) = (2/pi) * mean over the k faces with the nearest centroids of arccos <n_f, n_f'>.
+//
+// The search runs on the centroids of the non-degenerate faces only (a zero-area face has no
+// normal, so it is nobody's neighbour). k+1 neighbours are asked for and f itself is removed;
+// if f is not among them (another face has the same centroid), the farthest one is dropped, so a
+// duplicated face counts its twin as a neighbour at deviation 0. Ties at the k-th distance are
+// broken by the kd-tree's traversal order: deterministic for a given mesh, and independent of the
+// number of threads since queries do not interact. A degenerate face takes the mean phi of its k
+// nearest non-degenerate faces (0 if the mesh has none).
+template <typename ConcurrencyTag>
+std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size_t k)
+{
+  typedef CGAL::Simple_cartesian<double> SC;
+  typedef SC::Point_3 Point;
+  typedef CGAL::Pointer_property_map<Point>::const_type Point_map;
+  typedef CGAL::Search_traits_3<SC> Base_traits;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Knn;
+  typedef typename Knn::Tree Tree;
+
+  const std::size_t nf = mesh.faces.size();
+  std::vector<double> phi(nf, 0.);
+  if(nf == 0) return phi;
+
+  std::vector<Point> centroid(nf);
+  std::vector<Vec3> normal(nf, Vec3{{0., 0., 0.}});
+  std::vector<std::uint8_t> degenerate(nf, 0);
+  std::vector<std::size_t> keys;
+  keys.reserve(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const Vec3& a = mesh.points[mesh.faces[f][0]];
+    const Vec3& b = mesh.points[mesh.faces[f][1]];
+    const Vec3& c = mesh.points[mesh.faces[f][2]];
+    centroid[f] = Point((a[0] + b[0] + c[0]) / 3., (a[1] + b[1] + c[1]) / 3., (a[2] + b[2] + c[2]) / 3.);
+    double twice_area;
+    if(is_degenerate_triangle(a, b, c, twice_area))
+    {
+      degenerate[f] = 1;
+      continue;
+    }
+    const Vec3 n = cross(sub(b, a), sub(c, a));
+    normal[f] = {{n[0] / twice_area, n[1] / twice_area, n[2] / twice_area}};
+    keys.push_back(f);
+  }
+  if(keys.empty()) return phi;
+
+  const Point_map pmap(centroid.data());
+  Tree tree(keys.begin(), keys.end(), typename Tree::Splitter(), Traits(pmap));
+  tree.build(); // before the concurrent queries
+  const Distance distance(pmap);
+  const double to_right_angles = 2. / std::acos(-1.);
+
+  for_each_block<ConcurrencyTag>(nf, 1024, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::size_t> nb;
+    nb.reserve(k + 1);
+    for(std::size_t f = begin; f < end; ++f)
+    {
+      if(degenerate[f]) continue;
+      nb.clear();
+      Knn search(tree, centroid[f], static_cast<unsigned int>(k + 1), 0., true, distance, true);
+      for(auto it = search.begin(); it != search.end(); ++it) nb.push_back(it->first);
+      auto self = std::find(nb.begin(), nb.end(), f);
+      if(self != nb.end())
+        nb.erase(self);
+      else if(nb.size() > k)
+        nb.pop_back();
+      if(nb.empty()) continue;
+      double s = 0.;
+      for(std::size_t g : nb)
+      {
+        const double d = (std::max)(-1., (std::min)(1., dot(normal[f], normal[g])));
+        s += std::acos(d);
+      }
+      phi[f] = to_right_angles * s / double(nb.size());
+    }
+  });
+
+  if(keys.size() < nf)
+  {
+    for_each_block<ConcurrencyTag>(nf, 1024, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        if(!degenerate[f]) continue;
+        Knn search(tree, centroid[f], static_cast<unsigned int>(k), 0., true, distance, true);
+        double s = 0.;
+        std::size_t n = 0;
+        for(auto it = search.begin(); it != search.end(); ++it, ++n) s += phi[it->first];
+        phi[f] = n ? s / double(n) : 0.;
+      }
+    });
+  }
+  return phi;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_NORMAL_DEVIATION_H

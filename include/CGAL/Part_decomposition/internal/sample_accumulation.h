@@ -1,0 +1,168 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_SAMPLE_ACCUMULATION_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_SAMPLE_ACCUMULATION_H
+
+#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/triangle_arrays.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Copies any range of 4 numbers (std::array, std::vector, ...) into weights.
+template <typename Range>
+std::array<double, 4> to_cue_weights(const Range& range)
+{
+  std::array<double, 4> w{{0., 0., 0., 0.}};
+  std::size_t n = 0;
+  for(auto it = std::begin(range); it != std::end(range); ++it, ++n)
+  {
+    if(n >= 4) break;
+    w[n] = double(*it);
+  }
+  if(n != 4 || std::distance(std::begin(range), std::end(range)) != 4)
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "cue_weights must hold exactly 4 values");
+  for(double x : w)
+    if(!std::isfinite(x))
+      throw Invalid_input(Input_error::INVALID_PARAMETER, "cue_weights must be finite");
+  return w;
+}
+
+inline double checked_freeze_ratio(double alpha)
+{
+  if(!(alpha > 0. && alpha < 1.))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "freeze_ratio must be in (0, 1)");
+  return alpha;
+}
+
+inline bool is_power_of_two(int r) { return r > 0 && (r & (r - 1)) == 0; }
+
+// The per-voxel sums of one resolution: n, sum c, sum c^2, sum phi.
+struct Voxel_sums
+{
+  int r = 0;
+  int shift = 0; // log2(finest / r)
+  std::vector<std::uint32_t> n;
+  std::vector<double> s1, s2, sphi;
+};
+
+// One (face, voxel of the finest grid, number of samples) entry; faces ascending.
+struct Face_voxel_count
+{
+  std::uint32_t face, voxel, count;
+};
+
+// Bins the samples of every face at the finest resolution `rf` and accumulates the four sums at
+// every resolution of `sums` in one pass. Samples are never stored: each block of faces lists
+// its (face, voxel, count) triples, and the blocks are merged in face order, so the sums have the
+// same bits for any number of threads. A coarser voxel index is the finest one shifted: with
+// r = rf / 2^s, floor((p+0.5) r) = floor((p+0.5) rf) >> s exactly (scaling by a power of two is
+// exact), including the clamp of p = +0.5 to the last voxel.
+template <typename ConcurrencyTag>
+void accumulate_samples(const std::vector<Vec3>& unit_points,
+                        const std::vector<std::array<std::uint32_t, 3> >& faces,
+                        const std::vector<double>& c, const std::vector<double>& phi,
+                        const std::vector<std::array<double, 3> >& barycentric, int rf,
+                        std::vector<Voxel_sums>& sums)
+{
+  const std::size_t nf = faces.size(), ns = barycentric.size();
+  const std::size_t block_size = 1024;
+  const std::size_t number_of_blocks = (nf + block_size - 1) / block_size;
+  std::vector<std::vector<Face_voxel_count> > blocks(number_of_blocks);
+  for_each_block<ConcurrencyTag>(nf, block_size, [&](std::size_t begin, std::size_t end) {
+    std::vector<Face_voxel_count>& out = blocks[begin / block_size];
+    out.reserve(2 * (end - begin));
+    std::vector<std::uint32_t> voxel(ns), count(ns);
+    for(std::size_t f = begin; f < end; ++f)
+    {
+      const Vec3& a = unit_points[faces[f][0]];
+      const Vec3& b = unit_points[faces[f][1]];
+      const Vec3& d = unit_points[faces[f][2]];
+      std::size_t distinct = 0;
+      for(const auto& w : barycentric)
+      {
+        const int i = voxel_coordinate(w[0] * a[0] + w[1] * b[0] + w[2] * d[0], rf);
+        const int j = voxel_coordinate(w[0] * a[1] + w[1] * b[1] + w[2] * d[1], rf);
+        const int k = voxel_coordinate(w[0] * a[2] + w[1] * b[2] + w[2] * d[2], rf);
+        const std::uint32_t idx = std::uint32_t(i) + std::uint32_t(rf) * (std::uint32_t(j) + std::uint32_t(rf) * std::uint32_t(k));
+        std::size_t s = 0;
+        while(s < distinct && voxel[s] != idx) ++s;
+        if(s == distinct)
+        {
+          voxel[distinct] = idx;
+          count[distinct++] = 0;
+        }
+        ++count[s];
+      }
+      for(std::size_t s = 0; s < distinct; ++s)
+        out.push_back(Face_voxel_count{std::uint32_t(f), voxel[s], count[s]});
+    }
+  });
+
+  for(Voxel_sums& vs : sums)
+  {
+    const std::size_t size = std::size_t(vs.r) * std::size_t(vs.r) * std::size_t(vs.r);
+    vs.n.assign(size, 0);
+    vs.s1.assign(size, 0.);
+    vs.s2.assign(size, 0.);
+    vs.sphi.assign(size, 0.);
+  }
+  const std::uint32_t urf = std::uint32_t(rf);
+  for(const auto& block : blocks)
+    for(const Face_voxel_count& e : block)
+    {
+      const std::uint32_t i = e.voxel % urf, j = (e.voxel / urf) % urf, k = e.voxel / (urf * urf);
+      const double cf = c[e.face], pf = phi[e.face], n = double(e.count);
+      for(Voxel_sums& vs : sums)
+      {
+        const std::uint32_t r = std::uint32_t(vs.r);
+        const std::size_t idx = std::size_t(i >> vs.shift) +
+                                std::size_t(r) * (std::size_t(j >> vs.shift) + std::size_t(r) * std::size_t(k >> vs.shift));
+        vs.n[idx] += e.count;
+        vs.s1[idx] += n * cf;
+        vs.s2[idx] += n * (cf * cf);
+        vs.sphi[idx] += n * pf;
+      }
+    }
+}
+
+// Gradient magnitude of the dense field at (i,j,k), unit spacing: central differences
+// (f[i+1]-f[i-1])/2 inside, one-sided f[1]-f[0] and f[r-1]-f[r-2] at the border, 0 if r = 1.
+inline double dense_gradient_norm(const std::vector<double>& f, int r, int i, int j, int k)
+{
+  if(r < 2) return 0.;
+  const std::size_t sx = 1, sy = std::size_t(r), sz = std::size_t(r) * std::size_t(r);
+  const std::size_t idx = std::size_t(i) * sx + std::size_t(j) * sy + std::size_t(k) * sz;
+  auto partial = [&](int x, std::size_t stride) {
+    if(x == 0) return f[idx + stride] - f[idx];
+    if(x == r - 1) return f[idx] - f[idx - stride];
+    return 0.5 * (f[idx + stride] - f[idx - stride]);
+  };
+  const double gx = partial(i, sx), gy = partial(j, sy), gz = partial(k, sz);
+  return std::sqrt(gx * gx + gy * gy + gz * gz);
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_SAMPLE_ACCUMULATION_H

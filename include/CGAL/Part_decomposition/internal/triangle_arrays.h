@@ -1,0 +1,100 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H
+
+#include <CGAL/Part_decomposition/input_validation.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+typedef std::array<double, 3> Vec3;
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+// Relative area below which a triangle counts as degenerate: twice its area must exceed this
+// times its longest squared edge (a height of 1e-12 longest edges). Rounding noise of the
+// cross product is ~1e-16 relative, so every triangle above the bound has a meaningful normal.
+constexpr double degenerate_triangle_ratio = 1e-12;
+
+inline bool is_degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double& twice_area)
+{
+  const Vec3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
+  const Vec3 n = cross(ab, ac);
+  twice_area = std::sqrt(dot(n, n));
+  double l2 = dot(ab, ab);
+  l2 = (std::max)(l2, dot(ac, ac));
+  l2 = (std::max)(l2, dot(bc, bc));
+  return !(twice_area > degenerate_triangle_ratio * l2) || !std::isfinite(twice_area);
+}
+
+// The mesh as flat arrays in double: vertex points by vertex index, face corners by face index.
+struct Triangle_arrays
+{
+  std::vector<Vec3> points;
+  std::vector<std::array<std::uint32_t, 3> > faces;
+};
+
+// Throws Invalid_input(NOT_TRIANGLE_MESH) on a face that is not a triangle.
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
+Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const VertexPointMap& vpm,
+                                     const VertexIndexMap& vim, const FaceIndexMap& fim)
+{
+  Triangle_arrays arrays;
+  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+  CGAL_precondition(nv < std::size_t((std::numeric_limits<std::uint32_t>::max)()));
+  arrays.points.assign(nv, Vec3{{0., 0., 0.}});
+  arrays.faces.resize(nf);
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = std::size_t(get(vim, v));
+    CGAL_precondition(i < nv);
+    const auto& p = get(vpm, v);
+    arrays.points[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  }
+  for(auto f : faces(tm))
+  {
+    const std::size_t fi = std::size_t(get(fim, f));
+    CGAL_precondition(fi < nf);
+    auto h = halfedge(f, tm);
+    std::array<std::uint32_t, 3> corners;
+    for(int c = 0; c < 3; ++c)
+    {
+      corners[c] = std::uint32_t(get(vim, target(h, tm)));
+      h = next(h, tm);
+    }
+    if(h != halfedge(f, tm))
+      throw Invalid_input(Input_error::NOT_TRIANGLE_MESH, "the mesh has a face that is not a triangle");
+    arrays.faces[fi] = corners;
+  }
+  return arrays;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H

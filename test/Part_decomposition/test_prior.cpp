@@ -1,0 +1,696 @@
+// The prior: geometric cues, topology score, Flow/Freeze cut and the octree fusion.
+#include <catch2/catch.hpp>
+
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
+#include <CGAL/Part_decomposition/geometric_cues.h>
+#include <CGAL/Part_decomposition/topology_score.h>
+
+#include "test_shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+using test_shapes::Mesh;
+using test_shapes::Point;
+typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+typedef PD::Voxel_class VC;
+
+namespace {
+
+// Flat n x n grid of squares (two triangles each) over [0,1]^2 at z = 0: an open mesh.
+Mesh make_sheet(int n)
+{
+  test_shapes::Soup s;
+  auto P = [&](int i, int j) { return Point(double(i) / n, double(j) / n, 0.); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      s.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+      s.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+    }
+  return s.mesh();
+}
+
+std::vector<double> vertex_curvatures(const Mesh& m)
+{
+  std::vector<double> k(num_vertices(m), -1.);
+  PD::compute_vertex_mean_curvature(m, CGAL::make_property_map(k));
+  return k;
+}
+
+struct Face_cues
+{
+  std::vector<double> c, phi;
+};
+
+template <typename ConcurrencyTag = CGAL::Sequential_tag>
+Face_cues face_cues(const Mesh& m)
+{
+  Face_cues cues;
+  cues.c.assign(num_faces(m), -1.);
+  cues.phi.assign(num_faces(m), -1.);
+  PD::compute_geometric_cues<ConcurrencyTag>(m, CGAL::make_property_map(cues.c), CGAL::make_property_map(cues.phi));
+  return cues;
+}
+
+Point centroid(const Mesh& m, face_descriptor f)
+{
+  double x = 0, y = 0, z = 0;
+  for(auto v : vertices_around_face(halfedge(f, m), m))
+  {
+    x += m.point(v).x() / 3;
+    y += m.point(v).y() / 3;
+    z += m.point(v).z() / 3;
+  }
+  return Point(x, y, z);
+}
+
+// Two boxes joined by a thin bar along x.
+Mesh make_dumbbell()
+{
+  Mesh m = test_shapes::make_box(Point(-1, -0.35, -0.35), Point(-0.3, 0.35, 0.35), 12);
+  test_shapes::append(m, test_shapes::make_box(Point(0.3, -0.35, -0.35), Point(1, 0.35, 0.35), 12));
+  test_shapes::append(m, test_shapes::make_box(Point(-0.3, -0.06, -0.06), Point(0.3, 0.06, 0.06), 6));
+  return m;
+}
+
+// A 2-level hand-made pair of grids: parents at resolution r, children at 2r.
+struct Levels
+{
+  std::vector<PD::Voxel_grid<VC> > grids;
+  explicit Levels(std::vector<int> res)
+  {
+    for(int r : res) grids.emplace_back(r, VC::EMPTY);
+  }
+  // Sets the 8 children of coarse voxel (i,j,k) of level l (child c: bit0 = x, bit1 = y, bit2 = z).
+  void children(std::size_t l, int i, int j, int k, const std::array<VC, 8>& cls)
+  {
+    for(int c = 0; c < 8; ++c)
+      grids[l + 1](2 * i + (c & 1), 2 * j + ((c >> 1) & 1), 2 * k + ((c >> 2) & 1)) = cls[std::size_t(c)];
+  }
+};
+
+const VC E = VC::EMPTY, F = VC::FLOW, Z = VC::FREEZE;
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Curvature
+
+TEST_CASE("Meyer mixed Voronoi areas sum to the triangle area", "[cues]")
+{
+  const std::vector<std::array<PD::internal::Vec3, 3> > triangles = {
+    {{{{0, 0, 0}}, {{1, 0, 0}}, {{0.4, 0.9, 0}}}},     // acute
+    {{{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}}},         // right angle at a
+    {{{{0, 0, 0}}, {{1, 0, 0}}, {{0.5, 0.1, 0.2}}}},   // obtuse at c
+    {{{{0.5, 0.05, 0}}, {{0, 0, 0}}, {{1, 0, 0.1}}}},  // obtuse at a
+    {{{{3, 1, 2}}, {{-1, 0.5, 1}}, {{0.2, 7, -3}}}}};
+  for(const auto& t : triangles)
+  {
+    const PD::internal::Vec3 n = PD::internal::cross(PD::internal::sub(t[1], t[0]), PD::internal::sub(t[2], t[0]));
+    const double area = 0.5 * std::sqrt(PD::internal::dot(n, n));
+    const std::array<double, 3> a = PD::internal::mixed_voronoi_areas(t[0], t[1], t[2]);
+    CHECK(a[0] + a[1] + a[2] == Approx(area).epsilon(1e-12));
+    for(double x : a) CHECK(x > 0.);
+  }
+  // Obtuse at c: c gets half, the others a quarter each.
+  const std::array<double, 3> a = PD::internal::mixed_voronoi_areas({{0, 0, 0}}, {{1, 0, 0}}, {{0.5, 0.1, 0.}});
+  CHECK(a[2] == Approx(0.025));
+  CHECK(a[0] == Approx(0.0125));
+  CHECK(a[1] == Approx(0.0125));
+  // Equilateral: a third each.
+  const std::array<double, 3> e = PD::internal::mixed_voronoi_areas({{0, 0, 0}}, {{1, 0, 0}}, {{0.5, std::sqrt(3.) / 2, 0.}});
+  CHECK(e[0] == Approx(std::sqrt(3.) / 12));
+  CHECK(e[1] == Approx(std::sqrt(3.) / 12));
+}
+
+TEST_CASE("mean curvature of a fine sphere is 1/R", "[cues]")
+{
+  const double R = 2.5;
+  const Mesh m = test_shapes::make_sphere(Point(1, -2, 0.5), R, 5);
+  const std::vector<double> k = vertex_curvatures(m);
+  for(auto v : vertices(m)) REQUIRE(k[v.idx()] == Approx(1. / R).epsilon(0.02));
+}
+
+TEST_CASE("mean curvature of a cylinder side is 1/(2R)", "[cues]")
+{
+  const double R = 0.8, h = 4.;
+  const int na = 96, nz = 76; // square-ish cells: 2 pi R / na ~ h / nz
+  const Mesh m = test_shapes::make_cylinder(Point(0, 0, 0), R, h, na, nz);
+  const std::vector<double> k = vertex_curvatures(m);
+  std::size_t checked = 0;
+  for(auto v : vertices(m))
+  {
+    const Point& p = m.point(v);
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    if(std::abs(r - R) > 1e-9 || std::abs(p.z()) > h / 2 - 3 * h / nz) continue;
+    ++checked;
+    CHECK(k[v.idx()] == Approx(1. / (2 * R)).epsilon(0.03));
+  }
+  CHECK(checked > std::size_t(na * (nz - 8)));
+}
+
+TEST_CASE("mean curvature is 0 on a flat sheet, 1/R on the border of an open sphere cap", "[cues]")
+{
+  const Mesh m = make_sheet(10);
+  const std::vector<double> k = vertex_curvatures(m);
+  for(auto v : vertices(m))
+  {
+    REQUIRE(std::isfinite(k[v.idx()]));
+    CHECK(k[v.idx()] < 1e-12); // also on the rim: only the normal component counts there
+  }
+  // An open hemisphere-like cap: finite on the border too.
+  Mesh s = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  std::vector<face_descriptor> remove;
+  for(auto f : faces(s))
+    if(centroid(s, f).z() > 0.3) remove.push_back(f);
+  for(auto f : remove) CGAL::Euler::remove_face(halfedge(f, s), s);
+  s.collect_garbage();
+  const std::vector<double> ks = vertex_curvatures(s);
+  std::size_t border = 0;
+  for(auto v : vertices(s))
+  {
+    REQUIRE(std::isfinite(ks[v.idx()]));
+    border += is_border(v, s) ? 1 : 0;
+    if(is_border(v, s))
+      CHECK(ks[v.idx()] <= 1.1); // the normal component only: no rim curvature added
+    else
+      CHECK(ks[v.idx()] == Approx(1.).epsilon(0.05));
+  }
+  CHECK(border > 0);
+}
+
+TEST_CASE("a zero-area face and an isolated vertex give finite cues", "[cues]")
+{
+  // A(0,0) M(0.5,0) B(1,0) collinear: face (A,B,M) has zero area; C above, D a tip out of plane.
+  Mesh m;
+  const auto A = m.add_vertex(Point(0, 0, 0)), B = m.add_vertex(Point(1, 0, 0)), M = m.add_vertex(Point(0.5, 0, 0));
+  const auto C = m.add_vertex(Point(0.5, 1, 0)), D = m.add_vertex(Point(0.5, 0.4, 0.7));
+  m.add_vertex(Point(5, 5, 5)); // isolated
+  REQUIRE(m.add_face(A, M, D) != Mesh::null_face());
+  REQUIRE(m.add_face(M, B, D) != Mesh::null_face());
+  REQUIRE(m.add_face(B, C, D) != Mesh::null_face());
+  REQUIRE(m.add_face(C, A, D) != Mesh::null_face());
+  REQUIRE(m.add_face(A, B, M) != Mesh::null_face()); // degenerate
+  const std::vector<double> k = vertex_curvatures(m);
+  for(double x : k) CHECK(std::isfinite(x));
+  CHECK(k[5] == 0.); // isolated
+  const Face_cues cues = face_cues(m);
+  for(double x : cues.c) CHECK((std::isfinite(x) && x >= 0. && x <= 1.));
+  for(double x : cues.phi) CHECK((std::isfinite(x) && x >= 0. && x <= 2.));
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);
+  for(double s : prior.fields.back().score.values()) CHECK(std::isfinite(s));
+}
+
+TEST_CASE("face curvature cue is clipped and normalized to [0,1]", "[cues]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  test_shapes::append(m, test_shapes::make_sphere(Point(3, 0, 0), 0.25, 3)); // 4x the curvature
+  const Face_cues cues = face_cues(m);
+  double cmax = 0.;
+  for(double x : cues.c)
+  {
+    CHECK(x >= 0.);
+    CHECK(x <= 1.);
+    cmax = (std::max)(cmax, x);
+  }
+  CHECK(cmax == Approx(1.));
+  // The large sphere has a quarter of the curvature of the small one.
+  const std::size_t n_big = num_faces(test_shapes::make_sphere(Point(0, 0, 0), 1., 3));
+  CHECK(cues.c[0] == Approx(0.25).epsilon(0.02));
+  CHECK(cues.c[n_big] == Approx(1.).epsilon(0.001));
+  // A flat sheet: the maximum is 0, every cue is 0.
+  const Face_cues flat = face_cues(make_sheet(6));
+  for(double x : flat.c) CHECK(x == 0.);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Normal deviation
+
+TEST_CASE("normal deviation is 0 on a flat sheet and high on a cube's edges", "[cues]")
+{
+  const Face_cues flat = face_cues(make_sheet(8));
+  for(double x : flat.phi) CHECK(x < 1e-6);
+
+  const int n = 8;
+  const Mesh cube = test_shapes::make_box(Point(-1, -1, -1), Point(1, 1, 1), n);
+  const Face_cues cues = face_cues(cube);
+  double edge_min = 10., centre_max = 0.;
+  for(auto f : faces(cube))
+  {
+    const Point c = centroid(cube, f);
+    const double a[3] = {std::abs(c.x()), std::abs(c.y()), std::abs(c.z())};
+    std::array<double, 3> s = {{a[0], a[1], a[2]}};
+    std::sort(s.begin(), s.end());
+    // s[2] = 1 on the face; s[1] = distance to the nearest edge's axis.
+    if(s[1] > 1. - 1. / n) edge_min = (std::min)(edge_min, cues.phi[f.idx()]);
+    if(s[1] < 0.5) centre_max = (std::max)(centre_max, cues.phi[f.idx()]);
+  }
+  CHECK(centre_max < 1e-6);
+  CHECK(edge_min > 0.2); // at least ~2 of 8 neighbours across a right angle
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sampling, binning, score
+
+TEST_CASE("barycentric sample grid: n^2 points strictly inside, summing to 1", "[score]")
+{
+  for(std::size_t n : {1, 2, 3, 6, 7})
+  {
+    const auto s = PD::barycentric_sample_grid(n * n);
+    REQUIRE(s.size() == n * n);
+    double mean[3] = {0, 0, 0};
+    for(const auto& w : s)
+    {
+      CHECK(w[0] + w[1] + w[2] == Approx(1.).epsilon(1e-14));
+      for(int i = 0; i < 3; ++i)
+      {
+        CHECK(w[i] > 0.);
+        mean[i] += w[i] / double(s.size());
+      }
+    }
+    for(int i = 0; i < 3; ++i) CHECK(mean[i] == Approx(1. / 3.)); // evenly spread
+    for(std::size_t a = 0; a < s.size(); ++a)
+      for(std::size_t b = a + 1; b < s.size(); ++b)
+        CHECK(std::abs(s[a][0] - s[b][0]) + std::abs(s[a][1] - s[b][1]) > 1e-9);
+  }
+  CHECK_THROWS_AS(PD::barycentric_sample_grid(35), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::barycentric_sample_grid(0), PD::Invalid_input);
+}
+
+TEST_CASE("binning p = +0.5 goes to the last voxel", "[score]")
+{
+  for(int r : {1, 16, 32, 64, 256}) CHECK(PD::voxel_coordinate(0.5, r) == r - 1);
+  // A box whose +x face is mapped exactly onto x = +0.5.
+  const Mesh box = test_shapes::make_box(Point(-1, -1, -1), Point(1, 1, 1), 2);
+  const PD::Normalization nz({{0., 0., 0.}}, 0.5);
+  std::vector<double> zero(num_faces(box), 0.);
+  const PD::Topology_score_field field = PD::compute_topology_score(
+    box, CGAL::make_property_map(zero), CGAL::make_property_map(zero), 16, PD::parameters::normalization(nz));
+  std::size_t last = 0;
+  for(int k = 0; k < 16; ++k)
+    for(int j = 0; j < 16; ++j) last += field.sample_count(15, j, k);
+  CHECK(last >= 36u * 8u); // the 8 triangles of the +x face at least
+}
+
+TEST_CASE("exactly N samples per face, counts summing to N*F at every resolution, as binned one by one", "[score]")
+{
+  const Mesh m = make_dumbbell();
+  const Face_cues cues = face_cues(m);
+  const PD::Normalization nz = PD::compute_normalization(m);
+  const std::vector<int> res = {8, 16, 32, 64};
+  for(std::size_t N : {36, 49})
+  {
+    const auto bary = PD::barycentric_sample_grid(N);
+    // Brute force: every sample binned at every resolution with voxel_coordinate().
+    std::vector<std::vector<double> > count(res.size()), sum(res.size());
+    for(std::size_t l = 0; l < res.size(); ++l)
+    {
+      count[l].assign(std::size_t(res[l] * res[l] * res[l]), 0.);
+      sum[l].assign(count[l].size(), 0.);
+    }
+    for(auto f : faces(m))
+    {
+      std::array<std::array<double, 3>, 3> u;
+      int c = 0;
+      for(auto v : vertices_around_face(halfedge(f, m), m)) u[c++] = nz.to_unit(m.point(v));
+      for(const auto& w : bary)
+      {
+        double p[3];
+        for(int a = 0; a < 3; ++a) p[a] = w[0] * u[0][a] + w[1] * u[1][a] + w[2] * u[2][a];
+        for(std::size_t l = 0; l < res.size(); ++l)
+        {
+          const int r = res[l];
+          const std::size_t idx = std::size_t(PD::voxel_coordinate(p[0], r) +
+                                              r * (PD::voxel_coordinate(p[1], r) + r * PD::voxel_coordinate(p[2], r)));
+          count[l][idx] += 1;
+          sum[l][idx] += cues.c[f.idx()];
+        }
+      }
+    }
+    for(std::size_t l = 0; l < res.size(); ++l)
+    {
+      const PD::Topology_score_field field = PD::compute_topology_score(
+        m, CGAL::make_property_map(cues.c), CGAL::make_property_map(cues.phi), res[l],
+        PD::parameters::combine(CGAL::parameters::number_of_points_per_face(N), PD::parameters::normalization(nz)));
+      REQUIRE(field.resolution == res[l]);
+      std::size_t total = 0, active = 0;
+      bool same = true;
+      for(std::size_t v = 0; v < field.sample_count.size(); ++v)
+      {
+        total += field.sample_count[v];
+        active += field.sample_count[v] > 0 ? 1 : 0;
+        same = same && double(field.sample_count[v]) == count[l][v];
+        if(field.sample_count[v] > 0)
+          same = same && std::abs(field.curvature_mean[v] - sum[l][v] / count[l][v]) < 1e-12;
+        else
+          same = same && field.score[v] == 0. && field.classes[v] == VC::EMPTY;
+      }
+      CHECK(same);
+      CHECK(total == N * num_faces(m));
+      CHECK(active == field.number_of_active_voxels);
+    }
+  }
+}
+
+TEST_CASE("score terms on a hand-checked configuration", "[score]")
+{
+  // Two faces in one voxel of a 1-grid with c = 0 and 1: mu = 1/2, sigma = 1/2, Delta = 0 (r = 1),
+  // phi mean = (0.2 + 0.6)/2; S = (mu + sigma + 0 + 0.4) * sqrt(72).
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0));
+  const auto c = m.add_vertex(Point(0, 1, 0)), d = m.add_vertex(Point(1, 1, 0.5));
+  m.add_face(a, b, c);
+  m.add_face(b, d, c);
+  std::vector<double> cv = {0., 1.}, pv = {0.2, 0.6};
+  const PD::Topology_score_field f = PD::compute_topology_score(
+    m, CGAL::make_property_map(cv), CGAL::make_property_map(pv), 1,
+    PD::parameters::cue_weights(std::array<double, 4>{{1., 1., 1., 1.}}));
+  CHECK(f.sample_count[0] == 72u);
+  CHECK(f.curvature_mean[0] == Approx(0.5));
+  CHECK(f.curvature_deviation[0] == Approx(0.5));
+  CHECK(f.curvature_gradient[0] == 0.);
+  CHECK(f.normal_deviation[0] == Approx(0.4));
+  CHECK(f.score[0] == Approx(1.4 * std::sqrt(72.)));
+  const PD::Topology_score_field g = PD::compute_topology_score(
+    m, CGAL::make_property_map(cv), CGAL::make_property_map(pv), 1,
+    PD::parameters::cue_weights(std::vector<double>{2., 0., 0., 0.5}));
+  CHECK(g.score[0] == Approx((2 * 0.5 + 0.5 * 0.4) * std::sqrt(72.)));
+}
+
+TEST_CASE("curvature gradient: central differences inside, one-sided at the border", "[score]")
+{
+  PD::internal::Voxel_sums vs;
+  vs.r = 4;
+  vs.n.assign(64, 1);
+  vs.s1.assign(64, 0.);
+  vs.s2.assign(64, 0.);
+  vs.sphi.assign(64, 0.);
+  // mu = i^2 along x, plus 3 k along z
+  for(int k = 0; k < 4; ++k)
+    for(int j = 0; j < 4; ++j)
+      for(int i = 0; i < 4; ++i) vs.s1[std::size_t(i + 4 * (j + 4 * k))] = double(i * i) + 3. * k;
+  PD::Topology_score_field f;
+  PD::internal::make_score_field(vs, {{0., 0., 1., 0.}}, f);
+  auto expect = [](int i) { return i == 0 ? 1. : i == 3 ? 5. : 2. * i; }; // d(i^2)/di
+  for(int k = 0; k < 4; ++k)
+    for(int i = 0; i < 4; ++i)
+      CHECK(f.curvature_gradient(i, 2, k) == Approx(std::sqrt(expect(i) * expect(i) + 9.)));
+}
+
+TEST_CASE("the top-alpha cut freezes alpha of the active voxels", "[score]")
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(0., 10.);
+  for(int trial = 0; trial < 30; ++trial)
+  {
+    const int r = 8 + (trial % 3) * 4;
+    PD::Topology_score_field field;
+    field.sample_count = PD::Voxel_grid<std::uint32_t>(r, 0);
+    field.score = PD::Voxel_grid<double>(r, 0.);
+    std::size_t m = 0;
+    for(std::size_t v = 0; v < field.score.size(); ++v)
+      if(U(rng) < 3.)
+      {
+        field.sample_count[v] = 1 + std::uint32_t(U(rng));
+        field.score[v] = U(rng);
+        ++m;
+      }
+    for(double alpha : {0.01, 0.15, 0.5, 0.9})
+    {
+      PD::apply_flow_freeze_cut(field, alpha);
+      CHECK(field.number_of_active_voxels == m);
+      std::size_t freeze = 0, flow = 0;
+      for(std::size_t v = 0; v < field.score.size(); ++v)
+      {
+        if(field.sample_count[v] == 0) CHECK(field.classes[v] == VC::EMPTY);
+        freeze += field.classes[v] == VC::FREEZE ? 1 : 0;
+        flow += field.classes[v] == VC::FLOW ? 1 : 0;
+        if(field.classes[v] == VC::FREEZE) CHECK(field.score[v] >= field.threshold);
+        if(field.classes[v] == VC::FLOW) CHECK(field.score[v] < field.threshold);
+      }
+      CHECK(freeze == field.number_of_freeze_voxels);
+      CHECK(freeze + flow == m);
+      CHECK(std::abs(double(freeze) - alpha * double(m)) <= 1.);
+    }
+  }
+  // Ties: all equal scores are all Freeze.
+  PD::Topology_score_field tied;
+  tied.sample_count = PD::Voxel_grid<std::uint32_t>(4, 1);
+  tied.score = PD::Voxel_grid<double>(4, 2.);
+  PD::apply_flow_freeze_cut(tied, 0.15);
+  CHECK(tied.number_of_freeze_voxels == 64u);
+  // ... except a zero score, which is no evidence at all: 90% zeros, alpha = 0.15.
+  for(std::size_t v = 0; v < 64; ++v) tied.score[v] = v < 58 ? 0. : 1. + double(v);
+  PD::apply_flow_freeze_cut(tied, 0.15);
+  CHECK(tied.threshold == 0.);
+  CHECK(tied.number_of_freeze_voxels == 6u);
+  CHECK_THROWS_AS(PD::apply_flow_freeze_cut(tied, 0.), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::apply_flow_freeze_cut(tied, 1.), PD::Invalid_input);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fusion
+
+TEST_CASE("fusion rules on two levels", "[fusion]")
+{
+  Levels L({2, 4});
+  auto& P = L.grids[0];
+  // (0,0,0) rule (i): Flow parent, 4 Flow children -> one Flow leaf at 2.
+  P(0, 0, 0) = F;
+  L.children(0, 0, 0, 0, {{F, F, F, F, E, E, E, E}});
+  // (1,0,0) rule (ii): Flow parent, one Freeze child -> split.
+  P(1, 0, 0) = F;
+  L.children(0, 1, 0, 0, {{F, F, F, Z, E, E, E, E}});
+  // (0,1,0) rule (iii): Freeze parent, 1 of 4 children Flow (1/4 < 0.5) -> one Freeze leaf.
+  P(0, 1, 0) = Z;
+  L.children(0, 0, 1, 0, {{Z, Z, Z, F, E, E, E, E}});
+  // (1,1,0) rule (iv): Freeze parent, 2 of 4 children Flow (2/4 >= 0.5) -> split.
+  P(1, 1, 0) = Z;
+  L.children(0, 1, 1, 0, {{Z, Z, F, F, E, E, E, E}});
+  // (0,0,1) sparse support: Flow parent with 2 Flow children -> split anyway.
+  P(0, 0, 1) = F;
+  L.children(0, 0, 0, 1, {{F, E, E, E, E, E, E, F}});
+  // (1,0,1) sparse support: Freeze parent with 1 Freeze child -> split.
+  P(1, 0, 1) = Z;
+  L.children(0, 1, 0, 1, {{E, E, E, E, E, E, Z, E}});
+  // (0,1,1) Freeze parent, 5 Freeze and 3 Flow children (3/8 < 0.5) -> Freeze leaf.
+  P(0, 1, 1) = Z;
+  L.children(0, 0, 1, 1, {{Z, F, Z, F, Z, F, Z, Z}});
+
+  const PD::Hierarchical_prior prior = PD::fuse_flow_freeze(L.grids);
+  REQUIRE(prior.classes.resolution() == 4);
+  REQUIRE(prior.resolutions == std::vector<int>({2, 4}));
+  const auto& fine = L.grids[1];
+  auto check_block = [&](int i, int j, int k, bool leaf, VC leaf_class) {
+    for(int c = 0; c < 8; ++c)
+    {
+      const int x = 2 * i + (c & 1), y = 2 * j + ((c >> 1) & 1), z = 2 * k + ((c >> 2) & 1);
+      INFO("parent " << i << j << k << " child " << c);
+      if(fine(x, y, z) == E)
+      {
+        CHECK(prior.classes(x, y, z) == E);
+        CHECK(prior.leaf_resolution(x, y, z) == 0);
+      }
+      else if(leaf)
+      {
+        CHECK(prior.classes(x, y, z) == leaf_class);
+        CHECK(prior.leaf_resolution(x, y, z) == 2);
+      }
+      else
+      {
+        CHECK(prior.classes(x, y, z) == fine(x, y, z));
+        CHECK(prior.leaf_resolution(x, y, z) == 4);
+      }
+    }
+  };
+  check_block(0, 0, 0, true, F);
+  check_block(1, 0, 0, false, E);
+  check_block(0, 1, 0, true, Z);
+  check_block(1, 1, 0, false, E);
+  check_block(0, 0, 1, false, E);
+  check_block(1, 0, 1, false, E);
+  check_block(0, 1, 1, true, Z);
+  check_block(1, 1, 1, false, E); // empty everywhere
+  CHECK(prior.number_of_flow_leaves == std::vector<std::size_t>({1, 3 + 2 + 2}));
+  CHECK(prior.number_of_freeze_leaves == std::vector<std::size_t>({2, 1 + 2 + 1}));
+  CHECK(prior.fields.empty());
+}
+
+TEST_CASE("fusion on three levels: backward consistency and inheritance", "[fusion]")
+{
+  Levels L({2, 4, 8});
+  auto& P = L.grids[0];
+  // Parent A (0,0,0), Freeze, keeps its children mostly Freeze (rule iii): it would stay a leaf...
+  P(0, 0, 0) = Z;
+  L.children(0, 0, 0, 0, {{Z, Z, Z, F, E, E, E, E}});
+  // ...but its child (1,0,0) (Freeze) relaxes (iv) at 8: 3 of 4 grandchildren Flow -> splits,
+  // which forces A to split. Child (1,1,0) is Flow with Flow grandchildren: it stays a leaf and
+  // inherits A's class Freeze; children (0,0,0) and (0,1,0) stay Freeze leaves at 4.
+  L.children(1, 1, 0, 0, {{F, F, F, Z, E, E, E, E}});
+  L.children(1, 0, 0, 0, {{Z, Z, Z, Z, E, E, E, E}});
+  L.children(1, 0, 1, 0, {{Z, Z, Z, F, E, E, E, E}});
+  L.children(1, 1, 1, 0, {{F, F, F, F, E, E, E, E}});
+  // Parent B (1,0,0), Flow, all children Flow with Flow grandchildren: one Flow leaf at 2.
+  P(1, 0, 0) = F;
+  L.children(0, 1, 0, 0, {{F, F, F, F, E, E, E, E}});
+  for(int c : {0, 1, 2, 3})
+    L.children(1, 2 + (c & 1), (c >> 1) & 1, 0, {{F, F, F, F, F, F, F, F}});
+  // Parent C (0,1,0) empty at 2 but with children at 4 (inconsistent grids): it splits and its
+  // children carry their own classes; child (0,2,0) Flow with one Freeze grandchild splits.
+  L.children(0, 0, 1, 0, {{F, F, F, E, E, E, E, E}});
+  L.children(1, 0, 2, 0, {{F, F, Z, F, E, E, E, E}});
+  L.children(1, 1, 2, 0, {{F, F, F, F, E, E, E, E}});
+  L.children(1, 0, 3, 0, {{F, F, F, F, E, E, E, E}});
+
+  const PD::Hierarchical_prior prior = PD::fuse_flow_freeze(L.grids);
+  const auto& fine = L.grids[2];
+  auto block = [&](int l, int i, int j, int k, VC cls, int res) {
+    const int s = 2 - l;
+    for(int z = k << s; z < (k + 1) << s; ++z)
+      for(int y = j << s; y < (j + 1) << s; ++y)
+        for(int x = i << s; x < (i + 1) << s; ++x)
+        {
+          INFO("level " << l << " cell " << i << j << k << " voxel " << x << y << z);
+          if(fine(x, y, z) == E)
+          {
+            CHECK(prior.classes(x, y, z) == E);
+            CHECK(prior.leaf_resolution(x, y, z) == 0);
+          }
+          else
+          {
+            CHECK(prior.classes(x, y, z) == (cls == E ? fine(x, y, z) : cls));
+            CHECK(prior.leaf_resolution(x, y, z) == res);
+          }
+        }
+  };
+  // A: forced split; (1,0,0) split at 8 (own classes), the others leaves at 4 carrying Freeze.
+  block(1, 1, 0, 0, E, 8);
+  block(1, 0, 0, 0, Z, 4);
+  block(1, 0, 1, 0, Z, 4);
+  block(1, 1, 1, 0, Z, 4); // Flow at 4 but inherits A's Freeze
+  // B: one Flow leaf at 2.
+  block(0, 1, 0, 0, F, 2);
+  // C: (0,2,0) split at 8; (1,2,0) and (0,3,0) Flow leaves at 4.
+  block(1, 0, 2, 0, E, 8);
+  block(1, 1, 2, 0, F, 4);
+  block(1, 0, 3, 0, F, 4);
+
+  CHECK(prior.number_of_flow_leaves == std::vector<std::size_t>({1, 2, 3 + 3}));
+  CHECK(prior.number_of_freeze_leaves == std::vector<std::size_t>({0, 3, 1 + 1}));
+}
+
+TEST_CASE("fusion of a single level is the identity", "[fusion]")
+{
+  PD::Voxel_grid<VC> g(4, E);
+  g(0, 0, 0) = F;
+  g(3, 2, 1) = Z;
+  g(1, 1, 1) = F;
+  const PD::Hierarchical_prior prior = PD::fuse_flow_freeze({g});
+  CHECK(prior.classes == g);
+  CHECK(prior.leaf_resolution(3, 2, 1) == 4);
+  CHECK(prior.leaf_resolution(2, 2, 2) == 0);
+  CHECK(prior.number_of_flow_leaves == std::vector<std::size_t>({2}));
+  CHECK(prior.number_of_freeze_leaves == std::vector<std::size_t>({1}));
+  CHECK_THROWS_AS(PD::fuse_flow_freeze({}), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fuse_flow_freeze({PD::Voxel_grid<VC>(4), PD::Voxel_grid<VC>(16)}), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fuse_flow_freeze({PD::Voxel_grid<VC>(3), PD::Voxel_grid<VC>(6)}), PD::Invalid_input);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole prior
+
+TEST_CASE("the prior of two boxes joined by a thin bar freezes the junctions", "[prior]")
+{
+  const Mesh m = make_dumbbell();
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);
+  REQUIRE(prior.resolutions == std::vector<int>({16, 32, 64}));
+  REQUIRE(prior.fields.size() == 3);
+  for(const auto& f : prior.fields)
+  {
+    // Within one voxel of alpha * active, up to the voxels tied at the threshold (the shape is
+    // symmetric: mirrored voxels have the same score).
+    std::size_t above = 0, tied = 0;
+    for(std::size_t v = 0; v < f.score.size(); ++v)
+      if(f.sample_count[v] > 0)
+      {
+        above += f.score[v] > f.threshold;
+        tied += f.score[v] == f.threshold;
+      }
+    const double target = 0.15 * double(f.number_of_active_voxels);
+    CHECK(double(above) <= target + 1.);
+    CHECK(double(above + tied) >= target - 1.);
+    CHECK(f.number_of_freeze_voxels == above + tied);
+  }
+  // Every finest voxel with support has a class and a leaf resolution; the others none.
+  std::size_t flow = 0, freeze = 0;
+  for(std::size_t v = 0; v < prior.classes.size(); ++v)
+  {
+    const bool support = prior.fields[2].sample_count[v] > 0;
+    CHECK((prior.classes[v] != VC::EMPTY) == support);
+    CHECK((prior.leaf_resolution[v] != 0) == support);
+    flow += prior.classes[v] == VC::FLOW;
+    freeze += prior.classes[v] == VC::FREEZE;
+  }
+  CHECK(flow > freeze);
+  // Near each junction (where the bar meets a box: x = +-0.3, y = z = 0) a finest voxel is Freeze;
+  // the middle of the bar and the centres of the big faces are Flow.
+  auto class_at = [&](double x, double y, double z, int radius) {
+    const auto u = prior.normalization.to_unit(x, y, z);
+    const auto c = prior.classes.locate(u[0], u[1], u[2]);
+    std::size_t nfreeze = 0, nflow = 0;
+    for(int k = c[2] - radius; k <= c[2] + radius; ++k)
+      for(int j = c[1] - radius; j <= c[1] + radius; ++j)
+        for(int i = c[0] - radius; i <= c[0] + radius; ++i)
+        {
+          if(!prior.classes.contains(i, j, k)) continue;
+          nfreeze += prior.classes(i, j, k) == VC::FREEZE;
+          nflow += prior.classes(i, j, k) == VC::FLOW;
+        }
+    return std::make_pair(nflow, nfreeze);
+  };
+  for(double x : {-0.3, 0.3}) CHECK(class_at(x, 0, 0, 2).second > 0);
+  CHECK(class_at(-0.65, 0.35, 0, 1).second == 0); // centre of a box's side face
+  CHECK(class_at(0.65, 0, -0.35, 1).second == 0);
+  CHECK(class_at(-1., 0., 0., 1).second == 0);
+}
+
+TEST_CASE("the prior is the same with any number of threads and validates its parameters", "[prior]")
+{
+  const Mesh m = make_dumbbell();
+  const PD::Hierarchical_prior a = PD::compute_flow_freeze_prior<CGAL::Sequential_tag>(m);
+#ifdef CGAL_LINKED_WITH_TBB
+  const PD::Hierarchical_prior b = PD::compute_flow_freeze_prior<CGAL::Parallel_tag>(m);
+  CHECK(a.classes == b.classes);
+  CHECK(a.leaf_resolution == b.leaf_resolution);
+  for(std::size_t l = 0; l < a.fields.size(); ++l)
+  {
+    CHECK(a.fields[l].score == b.fields[l].score);
+    CHECK(a.fields[l].threshold == b.fields[l].threshold);
+  }
+  const Face_cues ca = face_cues<CGAL::Sequential_tag>(m), cb = face_cues<CGAL::Parallel_tag>(m);
+  CHECK(ca.c == cb.c);
+  CHECK(ca.phi == cb.phi);
+#endif
+  CHECK(a.number_of_flow_leaves.size() == 3);
+  const PD::Hierarchical_prior c = PD::compute_flow_freeze_prior(
+    m, PD::parameters::voxel_resolutions(std::vector<int>{32}));
+  CHECK(c.classes == c.fields[0].classes);
+  using PD::parameters::voxel_resolutions;
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, voxel_resolutions(std::vector<int>{})), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, voxel_resolutions(std::vector<int>{16, 48})), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, voxel_resolutions(std::vector<int>{16, 64})), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, voxel_resolutions(std::vector<int>{256, 512})), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::freeze_ratio(0.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::freeze_ratio(1.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, CGAL::parameters::number_of_points_per_face(35)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::number_of_neighbors(0)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::curvature_percentile(101.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::cue_weights(std::vector<double>{1, 1, 1})),
+                  PD::Invalid_input);
+}
