@@ -1,0 +1,336 @@
+// Segmentation metrics (hand-computed answers and brute-force references), area-weighted sampling,
+// and the guards of the SDF peer used by the benchmark.
+#include <catch2/catch.hpp>
+
+#include <CGAL/Part_decomposition/segmentation_metrics.h>
+
+#include "test_shapes.h"
+#include "../../benchmark/Part_decomposition/sdf_peer.h"
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+using test_shapes::Mesh;
+using test_shapes::Point;
+
+namespace {
+
+void check_perfect(const PD::Segmentation_scores& s)
+{
+  CHECK(s.mean_iou == 1.);
+  CHECK(s.rand_index == 1.);
+  CHECK(s.variation_of_information == Approx(0.).margin(1e-12));
+  CHECK(s.segmentation_covering == 1.);
+}
+
+// Straight from the definitions of the paper (Appendix A): O(N^2) pairs, entropies, IoU of sets.
+PD::Segmentation_scores brute_force(const std::vector<int>& g, const std::vector<int>& p)
+{
+  const std::size_t n = g.size();
+  PD::Segmentation_scores s;
+  std::size_t agree = 0, pairs = 0;
+  for(std::size_t u = 0; u < n; ++u)
+    for(std::size_t v = u + 1; v < n; ++v, ++pairs)
+      agree += ((g[u] == g[v]) == (p[u] == p[v]));
+  s.rand_index = double(agree) / double(pairs);
+
+  std::map<int, double> pg, pp;
+  std::map<std::pair<int, int>, double> pgp;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    pg[g[k]] += 1. / n;
+    pp[p[k]] += 1. / n;
+    pgp[{g[k], p[k]}] += 1. / n;
+  }
+  double hg = 0., hp = 0., mi = 0.;
+  for(auto& e : pg) hg -= e.second * std::log(e.second);
+  for(auto& e : pp) hp -= e.second * std::log(e.second);
+  for(auto& e : pgp) mi += e.second * std::log(e.second / (pg[e.first.first] * pp[e.first.second]));
+  s.variation_of_information = hg + hp - 2. * mi;
+
+  double sum_iou = 0., covering = 0.;
+  for(auto& gi : pg)
+  {
+    double best = 0.;
+    for(auto& pj : pp)
+    {
+      std::size_t inter = 0, uni = 0;
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const bool a = g[k] == gi.first, b = p[k] == pj.first;
+        inter += (a && b);
+        uni += (a || b);
+      }
+      best = std::max(best, double(inter) / double(uni));
+    }
+    sum_iou += best;
+    covering += gi.second * best;
+  }
+  s.mean_iou = sum_iou / double(pg.size());
+  s.segmentation_covering = covering;
+  return s;
+}
+
+// Three disjoint triangles of areas 1, 2 and 5 (in face order) and one of area 0.
+Mesh make_weighted_triangles()
+{
+  Mesh m;
+  auto tri = [&](double x0, double base, double height) {
+    auto a = m.add_vertex(Point(x0, 0, 0)), b = m.add_vertex(Point(x0 + base, 0, 0)),
+         c = m.add_vertex(Point(x0, height, 0));
+    m.add_face(a, b, c);
+  };
+  tri(0., 1., 2.);   // area 1
+  tri(10., 2., 2.);  // area 2
+  tri(20., 2., 5.);  // area 5
+  auto a = m.add_vertex(Point(30, 0, 0)), b = m.add_vertex(Point(31, 0, 0)), c = m.add_vertex(Point(32, 0, 0));
+  m.add_face(a, b, c); // collinear: area 0
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("identical partitions score perfectly, whatever the label values", "[metrics]")
+{
+  const std::vector<int> g = {0, 0, 1, 1, 1, 2, 2, 0};
+  check_perfect(PD::compare_segmentations(g, g));
+  const std::vector<long> renamed = {5, 5, -9, -9, -9, 70, 70, 5};
+  const PD::Segmentation_scores s = PD::compare_segmentations(g, renamed);
+  check_perfect(s);
+  CHECK(s.number_of_samples == 8);
+  CHECK(s.number_of_ground_truth_parts == 3);
+  CHECK(s.number_of_predicted_parts == 3);
+}
+
+TEST_CASE("an all-in-one prediction", "[metrics]")
+{
+  // |G| = 2, 3, 1 of N = 6; P = one part.
+  const std::vector<int> g = {0, 0, 1, 1, 1, 2};
+  const std::vector<int> p(6, 7);
+  const PD::Segmentation_scores s = PD::compare_segmentations(g, p);
+  CHECK(s.mean_iou == Approx((2. / 6 + 3. / 6 + 1. / 6) / 3.)); // IoU(G_i, P) = |G_i| / N
+  CHECK(s.segmentation_covering == Approx((4. + 9. + 1.) / 36.));
+  // 15 pairs; together in G: 1 + 3 = 4, all 15 together in P -> 4 agree.
+  CHECK(s.rand_index == Approx(4. / 15.));
+  // VoI = H(G) when P is constant.
+  CHECK(s.variation_of_information ==
+        Approx(std::log(3.) / 3. + std::log(2.) / 2. + std::log(6.) / 6.));
+  CHECK(s.number_of_predicted_parts == 1);
+}
+
+TEST_CASE("a prediction splitting one part in two halves", "[metrics]")
+{
+  const std::vector<int> g = {0, 0, 0, 0, 1, 1, 1, 1};
+  const std::vector<int> p = {0, 0, 1, 1, 2, 2, 2, 2};
+  const PD::Segmentation_scores s = PD::compare_segmentations(g, p);
+  CHECK(s.mean_iou == Approx((0.5 + 1.) / 2.));
+  CHECK(s.segmentation_covering == Approx(0.5 * 0.5 + 0.5 * 1.));
+  // 28 pairs, the 4 pairs across the two halves of G_0 disagree.
+  CHECK(s.rand_index == Approx(24. / 28.));
+  // H(G|P) = 0, H(P|G) = 1/2 ln 2.
+  CHECK(s.variation_of_information == Approx(std::log(2.) / 2.));
+}
+
+TEST_CASE("a prediction merging two parts", "[metrics]")
+{
+  const std::vector<int> g = {0, 0, 1, 1, 2, 2, 2, 2};
+  const std::vector<int> p = {0, 0, 0, 0, 1, 1, 1, 1};
+  const PD::Segmentation_scores s = PD::compare_segmentations(g, p);
+  // Many-to-one: G_0 and G_1 both take P_0 (IoU 1/2).
+  CHECK(s.mean_iou == Approx((0.5 + 0.5 + 1.) / 3.));
+  CHECK(s.segmentation_covering == Approx(0.25 * 0.5 + 0.25 * 0.5 + 0.5 * 1.));
+  CHECK(s.rand_index == Approx(24. / 28.));
+  CHECK(s.variation_of_information == Approx(std::log(2.) / 2.));
+}
+
+TEST_CASE("an uneven overlap computed by hand", "[metrics]")
+{
+  // cells: (G0,P0) = 2, (G0,P1) = 1, (G1,P1) = 1
+  const std::vector<int> g = {0, 0, 0, 1};
+  const std::vector<int> p = {0, 0, 1, 1};
+  const PD::Segmentation_scores s = PD::compare_segmentations(g, p);
+  CHECK(s.mean_iou == Approx((2. / 3. + 1. / 2.) / 2.));
+  CHECK(s.segmentation_covering == Approx(0.75 * 2. / 3. + 0.25 * 0.5));
+  CHECK(s.rand_index == Approx(3. / 6.));
+  CHECK(s.variation_of_information == Approx(0.75 * std::log(3.)));
+  // SC is not symmetric, RI and VoI are: G'_0 = {0,1} takes P'_0 (2/3), G'_1 = {2,3} takes P'_1 (1/2).
+  const PD::Segmentation_scores t = PD::compare_segmentations(p, g);
+  CHECK(t.mean_iou == Approx((2. / 3. + 1. / 2.) / 2.));
+  CHECK(t.segmentation_covering == Approx(0.5 * 2. / 3. + 0.5 * 0.5));
+  CHECK(t.rand_index == Approx(s.rand_index));
+  CHECK(t.variation_of_information == Approx(s.variation_of_information));
+}
+
+TEST_CASE("random labelings match the definitions and ignore relabelling", "[metrics]")
+{
+  PD::internal::Splitmix64 rng(42);
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    const std::size_t n = 50 + std::size_t(rng.uniform() * 250);
+    const int kg = 1 + int(rng.uniform() * 8), kp = 1 + int(rng.uniform() * 12);
+    std::vector<int> g(n), p(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      g[k] = int(rng.uniform() * kg);
+      // correlated with g half of the time
+      p[k] = rng.uniform() < 0.5 ? g[k] % kp : int(rng.uniform() * kp);
+    }
+    const PD::Segmentation_scores s = PD::compare_segmentations(g, p);
+    const PD::Segmentation_scores r = brute_force(g, p);
+    CHECK(s.mean_iou == Approx(r.mean_iou));
+    CHECK(s.rand_index == Approx(r.rand_index));
+    CHECK(s.variation_of_information == Approx(r.variation_of_information).margin(1e-12));
+    CHECK(s.segmentation_covering == Approx(r.segmentation_covering));
+
+    // A bijective renaming of either side (other type, sparse, negative) changes nothing.
+    std::vector<std::int64_t> g2(n);
+    std::vector<unsigned> p2(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      g2[k] = -1000003 * std::int64_t(g[k]) + 17;
+      p2[k] = unsigned((p[k] * 7919 + 3) % 100000);
+    }
+    const PD::Segmentation_scores s2 = PD::compare_segmentations(g2, p2);
+    CHECK(s2.mean_iou == s.mean_iou);
+    CHECK(s2.rand_index == s.rand_index);
+    CHECK(s2.variation_of_information == s.variation_of_information);
+    CHECK(s2.segmentation_covering == s.segmentation_covering);
+  }
+}
+
+TEST_CASE("degenerate labelings", "[metrics]")
+{
+  const std::vector<int> empty;
+  const PD::Segmentation_scores e = PD::compare_segmentations(empty, empty);
+  CHECK(e.number_of_samples == 0);
+  CHECK(std::isnan(e.mean_iou));
+  CHECK(std::isnan(e.rand_index));
+  const std::vector<int> one = {3}, other = {8};
+  check_perfect(PD::compare_segmentations(one, other)); // no pair: RI = 1
+  const std::vector<int> two = {1, 2};
+  CHECK_THROWS_AS(PD::compare_segmentations(one, two), std::invalid_argument);
+}
+
+TEST_CASE("samples fall on faces in proportion to their area, reproducibly", "[sampling]")
+{
+  const Mesh m = make_weighted_triangles();
+  const std::size_t n = 80000;
+  const std::vector<std::size_t> s =
+    PD::sample_faces_by_area(m, CGAL::parameters::number_of_points_on_faces(n).random_seed(7u));
+  REQUIRE(s.size() == n);
+  std::vector<double> count(5, 0.);
+  for(std::size_t f : s) count[std::min<std::size_t>(f, 4)] += 1.;
+  CHECK(count[4] == 0.); // no index out of range
+  const double area[3] = {1., 2., 5.};
+  for(int f = 0; f < 3; ++f)
+  {
+    const double prob = area[f] / 8.;
+    const double sigma = std::sqrt(n * prob * (1. - prob));
+    CHECK(std::abs(count[f] - n * prob) < 5. * sigma);
+  }
+  CHECK(count[3] == 0.); // zero area, never drawn
+
+  // Same seed, same samples; another seed, other samples; the default N is 10000.
+  CHECK(PD::sample_faces_by_area(m, CGAL::parameters::number_of_points_on_faces(n).random_seed(7u)) == s);
+  CHECK(PD::sample_faces_by_area(m, CGAL::parameters::number_of_points_on_faces(n).random_seed(8u)) != s);
+  CHECK(PD::sample_faces_by_area(m).size() == 10000);
+  CHECK(PD::sample_faces_by_area(m) == PD::sample_faces_by_area(m, CGAL::parameters::random_seed(0u)));
+}
+
+TEST_CASE("sampling a mesh of zero area or without faces", "[sampling]")
+{
+  Mesh flat;
+  for(int t = 0; t < 2; ++t)
+  {
+    auto a = flat.add_vertex(Point(3 * t, 0, 0)), b = flat.add_vertex(Point(3 * t + 1, 0, 0)),
+         c = flat.add_vertex(Point(3 * t + 2, 0, 0));
+    flat.add_face(a, b, c);
+  }
+  const std::vector<std::size_t> s =
+    PD::sample_faces_by_area(flat, CGAL::parameters::number_of_points_on_faces(1000));
+  REQUIRE(s.size() == 1000);
+  std::size_t first = 0;
+  for(std::size_t f : s) first += (f == 0);
+  CHECK(first > 400); // uniform over the two faces
+  CHECK(first < 600);
+
+  const Mesh empty;
+  CHECK(PD::sample_faces_by_area(empty).empty());
+}
+
+TEST_CASE("evaluating face labelings of a sphere", "[metrics][sampling]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  typedef Mesh::Face_index Face;
+  auto upper = m.add_property_map<Face, int>("f:upper", 0).first;
+  auto octant = m.add_property_map<Face, std::size_t>("f:octant", 0).first;
+  auto whole = m.add_property_map<Face, int>("f:whole", 0).first;
+  for(Face f : faces(m))
+  {
+    double c[3] = {0., 0., 0.};
+    for(auto v : vertices_around_face(halfedge(f, m), m))
+      for(int a = 0; a < 3; ++a) c[a] += m.point(v)[a];
+    upper[f] = c[2] > 0. ? 1 : 0;
+    octant[f] = (c[0] > 0.) + 2 * (c[1] > 0.) + 4 * (c[2] > 0.);
+  }
+  check_perfect(PD::evaluate_segmentation(m, upper, upper));
+  check_perfect(PD::evaluate_segmentation(m, octant, octant));
+
+  // All in one against two hemispheres: mIoU = (|G_0| + |G_1|) / (2N) = 1/2 exactly;
+  // SC = sum (|G_i|/N)^2 = 1/2 up to the sampling and tessellation noise.
+  const PD::Segmentation_scores s = PD::evaluate_segmentation(m, upper, whole);
+  CHECK(s.mean_iou == Approx(0.5));
+  CHECK(s.segmentation_covering == Approx(0.5).margin(0.01));
+  CHECK(s.number_of_samples == 10000);
+
+  // Octants refine hemispheres: every hemisphere is 4 octants of about a quarter of its area.
+  const PD::Segmentation_scores t = PD::evaluate_segmentation(
+    m, upper, octant, CGAL::parameters::number_of_points_on_faces(20000).random_seed(3u));
+  CHECK(t.number_of_samples == 20000);
+  CHECK(t.mean_iou == Approx(0.25).margin(0.03));
+  CHECK(t.variation_of_information == Approx(std::log(4.)).margin(0.03)); // H(P|G) = ln 4
+}
+
+TEST_CASE("the SDF peer survives the inputs on which CGAL 5.5.1 fails", "[sdf_peer]")
+{
+  SECTION("a tetrahedron: fewer faces, hence SDF values, than clusters")
+  {
+    test_shapes::Soup soup;
+    const Point a(1, 1, 1), b(1, -1, -1), c(-1, 1, -1), d(-1, -1, 1);
+    soup.triangle(a, b, c);
+    soup.triangle(a, c, d);
+    soup.triangle(a, d, b);
+    soup.triangle(b, d, c);
+    const Mesh m = soup.mesh();
+    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
+    CHECK(r.labels.size() == 4);
+    CHECK(r.distinct_sdf_values <= 4);
+    CHECK(r.number_of_clusters == std::min<std::size_t>(4, r.distinct_sdf_values));
+    CHECK(r.number_of_segments >= 1);
+    CHECK((r.note.find("cluster") != std::string::npos || r.note.find("single segment") != std::string::npos));
+  }
+  SECTION("a closed sphere whose faces point inward")
+  {
+    Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 2);
+    CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
+    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
+    CHECK(r.reversed_components == 1);
+    CHECK(r.note.find("reoriented 1") != std::string::npos);
+    CHECK(r.labels.size() == num_faces(m));
+    CHECK(r.distinct_sdf_values > 5); // rays now hit the far side
+    CHECK(r.number_of_clusters == 5);
+  }
+  SECTION("a cube of twelve triangles")
+  {
+    const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
+    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
+    CHECK(r.labels.size() == 12);
+    CHECK(r.reversed_components == 0);
+    CHECK(r.number_of_clusters == std::min<std::size_t>(5, r.distinct_sdf_values));
+    for(std::size_t l : r.labels) CHECK(l < r.number_of_segments);
+  }
+}
