@@ -1,0 +1,264 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PATCH_OPERATIONS_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_PATCH_OPERATIONS_H
+
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// The q-th percentile (q in [0,100]) of `values` with linear interpolation between the closest
+// ranks (position (n-1) q/100, as numpy's default). `values` is reordered. 0 if empty.
+inline double percentile(std::vector<double>& values, double q)
+{
+  if(values.empty()) return 0.;
+  const double h = double(values.size() - 1) * q / 100.;
+  const std::size_t lo = (std::min)(values.size() - 1, std::size_t(std::floor(h)));
+  std::nth_element(values.begin(), values.begin() + lo, values.end());
+  const double v_lo = values[lo];
+  if(lo + 1 >= values.size()) return v_lo;
+  const double v_hi = *std::min_element(values.begin() + lo + 1, values.end());
+  return v_lo + (h - double(lo)) * (v_hi - v_lo);
+}
+
+// The dihedral angles of the interior edges between two faces of non-zero area, once per edge.
+inline std::vector<double> interior_edge_angles(const Face_adjacency& adj)
+{
+  std::vector<double> values;
+  values.reserve(3 * adj.number_of_faces / 2 + 1);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  {
+    if(adj.degenerate[i]) continue;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j != Face_adjacency::no_face && j > i && !adj.degenerate[j])
+        values.push_back(adj.angle[3 * i + k]);
+    }
+  }
+  return values;
+}
+
+// Renumbers the labels to 0..A-1 by increasing smallest face index; returns A.
+inline std::size_t renumber_by_first_face(std::vector<std::size_t>& label)
+{
+  const std::size_t none = Face_adjacency::no_face;
+  std::size_t max_label = 0;
+  for(std::size_t l : label) max_label = (std::max)(max_label, l);
+  std::vector<std::size_t> new_id(label.empty() ? 0 : max_label + 1, none);
+  std::size_t count = 0;
+  for(std::size_t& l : label)
+  {
+    if(new_id[l] == none) new_id[l] = count++;
+    l = new_id[l];
+  }
+  return count;
+}
+
+// Splits every patch of area above `max_area` by an ordered flood fill: its uncut edges are
+// crossed by increasing dihedral angle (ties: slot order), joining the two sides unless the
+// joined area would exceed `max_area` (Kruskal with a size cap), so that pieces meet along the
+// locally sharpest edges. Flat edges (angle <= `flat_angle`) are always crossed: a planar region
+// is never split. Patches not above `max_area` are unchanged. On output the labels are
+// renumbered by first face; returns their number.
+inline std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std::uint8_t>& cut,
+                                       std::vector<std::size_t>& label, std::size_t number_of_patches,
+                                       double max_area, double flat_angle)
+{
+  const std::size_t nf = adj.number_of_faces;
+  std::vector<double> patch_area(number_of_patches, 0.);
+  for(std::size_t i = 0; i < nf; ++i) patch_area[label[i]] += adj.area[i];
+  std::vector<std::uint8_t> large(number_of_patches, 0);
+  bool any = false;
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+    if(patch_area[p] > max_area) large[p] = 1, any = true;
+  if(!any) return renumber_by_first_face(label);
+
+  // Sort keys: the angle as a float (its bits order like the value for angles >= 0) above the
+  // slot, so that equal floats fall back to the slot order and every key is unique.
+  CGAL_precondition(3 * nf <= std::size_t(0xffffffffu));
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * nf / 2);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    if(!large[label[i]]) continue;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j != Face_adjacency::no_face && j > i && !cut[3 * i + k])
+      {
+        const float a = float(adj.angle[3 * i + k]);
+        std::uint32_t bits;
+        std::memcpy(&bits, &a, sizeof bits);
+        edges.push_back((std::uint64_t(bits) << 32) | std::uint64_t(3 * i + k));
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+
+  std::vector<std::size_t> parent(nf);
+  std::vector<double> area(adj.area);
+  for(std::size_t i = 0; i < nf; ++i) parent[i] = i;
+  auto find = [&](std::size_t p) {
+    std::size_t r = p;
+    while(parent[r] != r) r = parent[r];
+    while(parent[p] != r) { const std::size_t n = parent[p]; parent[p] = r; p = n; }
+    return r;
+  };
+  for(const std::uint64_t key : edges)
+  {
+    const std::size_t slot = std::size_t(key & 0xffffffffu);
+    const std::size_t a = find(slot / 3), b = find(adj.neighbor[slot]);
+    if(a == b || (area[a] + area[b] > max_area && adj.angle[slot] > flat_angle)) continue;
+    const std::size_t r = (std::min)(a, b), s = (std::max)(a, b);
+    parent[s] = r;
+    area[r] += area[s];
+  }
+  // Pieces of split patches get ids after the unchanged ones; renumbering orders them all.
+  for(std::size_t i = 0; i < nf; ++i)
+    if(large[label[i]]) label[i] = number_of_patches + find(i);
+  return renumber_by_first_face(label);
+}
+
+// Merges every patch whose area is below `min_area` into the neighbouring patch across its
+// weakest shared edge (smallest dihedral angle; ties: the smaller neighbour, then the smaller
+// id, so that equal fragments pair up rather than pile onto one), smallest patch first,
+// until every patch reaches `min_area` or has no neighbour. `label` holds ids in
+// [0, number_of_patches) on input, and the ids of the surviving patches (not renumbered) on output.
+inline void merge_small_patches(const Face_adjacency& adj, std::vector<std::size_t>& label,
+                                std::size_t number_of_patches, double min_area)
+{
+  const std::size_t nf = adj.number_of_faces;
+  const std::size_t np = number_of_patches;
+  std::vector<double> patch_area(np, 0.);
+  for(std::size_t i = 0; i < nf; ++i) patch_area[label[i]] += adj.area[i];
+
+  // Adjacency lists may hold stale ids and repeats; they are resolved through `find`.
+  struct Link { std::size_t patch; double angle; };
+  std::vector<std::vector<Link> > links(np);
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j == Face_adjacency::no_face || label[j] == label[i]) continue;
+      links[label[i]].push_back(Link{label[j], adj.angle[3 * i + k]});
+    }
+
+  std::vector<std::size_t> parent(np);
+  for(std::size_t p = 0; p < np; ++p) parent[p] = p;
+  auto find = [&](std::size_t p) {
+    std::size_t r = p;
+    while(parent[r] != r) r = parent[r];
+    while(parent[p] != r) { const std::size_t n = parent[p]; parent[p] = r; p = n; }
+    return r;
+  };
+
+  typedef std::pair<double, std::size_t> Entry; // (area, patch): smallest first
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
+  for(std::size_t p = 0; p < np; ++p)
+    if(patch_area[p] < min_area) queue.push(Entry(patch_area[p], p));
+
+  while(!queue.empty())
+  {
+    const Entry e = queue.top();
+    queue.pop();
+    const std::size_t p = e.second;
+    if(parent[p] != p || patch_area[p] != e.first) continue; // merged away or stale
+    std::size_t best = np;
+    double best_angle = 0.;
+    std::vector<Link>& lp = links[p];
+    std::size_t kept = 0;
+    for(std::size_t l = 0; l < lp.size(); ++l)
+    {
+      const std::size_t q = find(lp[l].patch);
+      if(q == p) continue;
+      lp[kept++] = Link{q, lp[l].angle};
+      if(best == np || lp[l].angle < best_angle ||
+         (lp[l].angle == best_angle &&
+          (patch_area[q] < patch_area[best] || (patch_area[q] == patch_area[best] && q < best))))
+      {
+        best = q;
+        best_angle = lp[l].angle;
+      }
+    }
+    lp.resize(kept);
+    if(best == np) continue; // an isolated piece of the mesh: nothing to merge with
+    parent[p] = best;
+    patch_area[best] += patch_area[p];
+    std::vector<Link>& lb = links[best];
+    lb.insert(lb.end(), lp.begin(), lp.end());
+    std::vector<Link>().swap(lp);
+    if(patch_area[best] < min_area) queue.push(Entry(patch_area[best], best));
+  }
+  for(std::size_t i = 0; i < nf; ++i) label[i] = find(label[i]);
+}
+
+// One pass of boundary smoothing: a face moves to the patch Q that holds at least two of its
+// three neighbours, counting only neighbours that do not move themselves in this pass. A moving
+// face has at most one neighbour in its own patch, so every patch stays edge-connected; a patch
+// may vanish. Decisions read the labels before the pass (order independent). Returns the number
+// of faces moved.
+template <typename ConcurrencyTag>
+std::size_t smooth_patch_boundaries(const Face_adjacency& adj, std::vector<std::size_t>& label)
+{
+  const std::size_t nf = adj.number_of_faces;
+  const std::size_t none = Face_adjacency::no_face;
+  // target[i]: the patch holding two or more neighbours of i (none if no such patch).
+  std::vector<std::size_t> target(nf, none);
+  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      const std::size_t* nb = &adj.neighbor[3 * i];
+      std::size_t l[3];
+      for(int k = 0; k < 3; ++k) l[k] = nb[k] == none ? none : label[nb[k]];
+      for(int k = 0; k < 3; ++k)
+        if(l[k] != none && l[k] != label[i] && (l[k] == l[(k + 1) % 3] || l[k] == l[(k + 2) % 3]))
+        {
+          target[i] = l[k];
+          break;
+        }
+    }
+  });
+  std::vector<std::size_t> next_label(label);
+  std::vector<std::uint8_t> moved(nf, 0);
+  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      if(target[i] == none) continue;
+      int stable = 0;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * i + k];
+        if(j != none && label[j] == target[i] && target[j] == none) ++stable;
+      }
+      if(stable >= 2) { next_label[i] = target[i]; moved[i] = 1; }
+    }
+  });
+  label.swap(next_label);
+  std::size_t count = 0;
+  for(std::uint8_t m : moved) count += m;
+  return count;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_PATCH_OPERATIONS_H

@@ -1,0 +1,317 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_OVER_SEGMENTATION_H
+#define CGAL_PART_DECOMPOSITION_OVER_SEGMENTATION_H
+
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/patch_operations.h>
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Edges whose dihedral angle is at most this many degrees are flat and never cut.
+constexpr double flat_dihedral_angle = 0.05;
+// Angles this close (degrees) to the quantile count as equal to it: rounding must not decide
+// whether a crease of a rotated cube is cut.
+constexpr double dihedral_tie_tolerance = 1e-6;
+
+// Readable edge -> bool map: whether the edge is cut, looked up in a per-slot array.
+template <typename TriangleMesh, typename FaceIndexMap>
+struct Cut_edge_map
+{
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor key_type;
+  typedef bool value_type;
+  typedef bool reference;
+  typedef boost::readable_property_map_tag category;
+
+  const TriangleMesh* tm;
+  FaceIndexMap fim;
+  const std::vector<std::uint8_t>* cut;
+
+  friend bool get(const Cut_edge_map& m, const key_type& e)
+  {
+    auto h = halfedge(e, *m.tm);
+    if(is_border(h, *m.tm)) h = opposite(h, *m.tm);
+    const std::size_t i = std::size_t(get(m.fim, face(h, *m.tm)));
+    return (*m.cut)[3 * i + slot_in_face(h, *m.tm)] != 0;
+  }
+};
+
+// Writable face -> std::size_t map into a vector indexed by the face index map.
+template <typename TriangleMesh, typename FaceIndexMap>
+struct Face_vector_map
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor key_type;
+  typedef std::size_t value_type;
+  typedef std::size_t& reference;
+  typedef boost::read_write_property_map_tag category;
+
+  FaceIndexMap fim;
+  std::vector<std::size_t>* values;
+
+  friend std::size_t get(const Face_vector_map& m, const key_type& f)
+  {
+    return (*m.values)[std::size_t(get(m.fim, f))];
+  }
+  friend void put(const Face_vector_map& m, const key_type& f, std::size_t v)
+  {
+    (*m.values)[std::size_t(get(m.fim, f))] = v;
+  }
+};
+
+// Statistics of one over-segmentation, for benchmarks and tests.
+struct Over_segmentation_statistics
+{
+  double threshold = 0.;                 // the dihedral quantile, degrees
+  std::size_t number_of_cut_edges = 0;   // interior edges cut (each once)
+  std::size_t number_of_components = 0;  // after the flood fill
+  std::size_t number_of_split_patches = 0;  // after splitting the large components
+  std::size_t number_of_merged_patches = 0; // after the clean-up
+  std::size_t number_of_smoothed_faces = 0;
+};
+
+// The over-segmentation as one label per face index; returns the number of patches.
+// `fim` is the face index map of `np` (or the default one), passed to be built only once.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename NamedParameters>
+std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim, std::vector<std::size_t>& label,
+                                const NamedParameters& np, Over_segmentation_statistics* stats = nullptr)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef FaceIndexMap FIM;
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+
+  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_quantile), 90.);
+  const double min_size =
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), 0.001);
+  const double max_size =
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), 0.0025);
+  const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), 1);
+  if(!(q >= 0. && q <= 100.))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_quantile must be in [0, 100]");
+  if(!(min_size >= 0. && min_size <= 1.))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "minimum_patch_size must be in [0, 1]");
+  if(!(max_size > 0. && max_size <= 1.))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "maximum_patch_size must be in (0, 1]");
+  if(smoothing < 0)
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "smoothing_iterations must be non-negative");
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+
+  const std::size_t nf = num_faces(tm);
+  label.assign(nf, 0);
+  if(nf == 0) return 0;
+
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
+  const Face_adjacency adj = build_face_adjacency<ConcurrencyTag>(tm, fim, vpm, gt, face_of);
+
+  std::vector<double> angles = interior_edge_angles(adj);
+  const double threshold = percentile(angles, q);
+  const double cut_from = (std::max)(threshold - dihedral_tie_tolerance, 0.);
+  std::vector<std::uint8_t> cut(3 * nf, 0);
+  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * i + k];
+        if(j == Face_adjacency::no_face) continue;
+        const double s = adj.angle[3 * i + k];
+        cut[3 * i + k] = (adj.degenerate[i] || adj.degenerate[j] ||
+                          (s >= cut_from && s > flat_dihedral_angle)) ? 1 : 0;
+      }
+  });
+
+  const Cut_edge_map<TriangleMesh, FIM> cut_map{&tm, fim, &cut};
+  const Face_vector_map<TriangleMesh, FIM> label_map{fim, &label};
+  const std::size_t components = PMP::connected_components(
+      tm, label_map, CGAL::parameters::edge_is_constrained_map(cut_map).face_index_map(fim));
+
+  double total_area = 0.;
+  for(double a : adj.area) total_area += a;
+  std::size_t patches = components;
+  if(max_size < 1.) patches = split_large_patches(adj, cut, label, components, max_size * total_area,
+                                                   flat_dihedral_angle);
+  const std::size_t split = patches;
+  merge_small_patches(adj, label, patches, min_size * total_area);
+  std::size_t merged = 0;
+  if(stats) merged = renumber_by_first_face(label);
+
+  std::size_t smoothed = 0;
+  for(int it = 0; it < smoothing; ++it)
+  {
+    const std::size_t moved = smooth_patch_boundaries<ConcurrencyTag>(adj, label);
+    smoothed += moved;
+    if(moved == 0) break;
+  }
+  const std::size_t count = renumber_by_first_face(label);
+
+  if(stats)
+  {
+    stats->threshold = threshold;
+    std::size_t n_cut = 0;
+    for(std::size_t i = 0; i < nf; ++i)
+      for(int k = 0; k < 3; ++k)
+        if(cut[3 * i + k] && adj.neighbor[3 * i + k] > i) ++n_cut;
+    stats->number_of_cut_edges = n_cut;
+    stats->number_of_components = components;
+    stats->number_of_split_patches = split;
+    stats->number_of_merged_patches = merged;
+    stats->number_of_smoothed_faces = smoothed;
+  }
+  return count;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the curvature-aware over-segmentation of `tm` into edge primitives (paper App. E.3):
+patches of faces bounded by the sharpest edges of the mesh. It is the first half of the
+superquadric-to-mesh assignment (`assign_parts()`) and is usable on its own.
+
+The steps are:
+1. <b>Dihedral angles.</b> Each interior edge between faces of unit normals \f$n_1, n_2\f$ gets
+   \f$s = \arccos\langle n_1, n_2\rangle\f$ in degrees, in \f$[0, 180]\f$. An edge incident to a
+   face of zero area (no normal) gets \f$s = 180\f$ and takes no part in the distribution below.
+2. <b>Threshold.</b> \f$t\f$ is the `dihedral_quantile`-th percentile of the angles of the interior
+   edges (each edge once), with linear interpolation between the closest ranks (position
+   \f$(n-1)\,q/100\f$ in the sorted list).
+3. <b>Cut.</b> An edge is cut if \f$s \ge t\f$ (up to \f$10^{-6}\f$ degree of rounding) and
+   \f$s > 0.05\f$ degree: ties at the quantile are cut (on a cube tessellated with two triangles per
+   side, 12 of the 18 edges are creases and the 90-th percentile is 90 degrees), and flat edges
+   never are, even when more than `100 - dihedral_quantile` percent of the edges are flat. Edges
+   incident to a face of zero area are always cut.
+4. <b>Flood fill.</b> The connected components of the faces across edges that are not cut
+   (`CGAL::Polygon_mesh_processing::connected_components()`); border edges are never crossed.
+5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
+   flood fill alone leaves one patch over most of an organic shape (measured: 1 to 55 patches on
+   the Princeton benchmark shapes, where the paper reports 200 to 500). A component larger than
+   `maximum_patch_size` times the area of the mesh is split by an ordered flood fill: its uncut
+   edges are crossed by increasing dihedral angle, joining the two sides unless the joined area
+   would exceed the cap, so that pieces meet along the locally sharpest edges. Flat edges
+   ($s \le 0.05$ degree) are always crossed: a planar region is never split.
+6. <b>Fragment clean-up.</b> A patch whose area is below `minimum_patch_size` times the area of the
+   mesh is merged into the neighbouring patch across its weakest shared edge (the one of smallest
+   dihedral angle; on a tie, the neighbour of smallest area, then of smallest id), the smallest
+   patch first, repeated until every patch is large enough or has no neighbour (a small connected
+   component of the mesh stays a patch of its own).
+7. <b>Boundary smoothing</b>, `smoothing_iterations` times: a face moves to the patch that holds at
+   least two of its three neighbours, counting only neighbours that do not move in the same pass
+   (this keeps every patch edge-connected). Patches are never created; one may vanish.
+8. Patches are numbered `0` to `A-1` by increasing smallest face index.
+
+The result does not depend on the number of threads.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the dihedral
+        angles and the smoothing run in parallel.
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam FacePatchMap a model of `WritablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as
+        value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh
+\param face_patch_map receives the patch id of each face, in `[0, A)`
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class, used for the face normals}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+                          `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+                   `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{dihedral_quantile}
+    \cgalParamDescription{the percentile \f$q\f$ of the dihedral angles above which edges are cut}
+    \cgalParamType{`double`, in `[0, 100]`}
+    \cgalParamDefault{`90`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_patch_size}
+    \cgalParamDescription{the smallest patch area kept by the clean-up, as a fraction of the area
+                          of the mesh; `0` disables the clean-up}
+    \cgalParamType{`double`, in `[0, 1]`}
+    \cgalParamDefault{`0.001`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_patch_size}
+    \cgalParamDescription{the largest patch area the size cap lets the ordered flood fill build,
+                          as a fraction of the area of the mesh; `1` disables the cap}
+    \cgalParamType{`double`, in `(0, 1]`}
+    \cgalParamDefault{`0.0025` (about 400 patches on organic shapes)}
+  \cgalParamNEnd
+  \cgalParamNBegin{smoothing_iterations}
+    \cgalParamDescription{the number of boundary-smoothing passes}
+    \cgalParamType{`int`, non-negative}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `CGAL::is_triangle_mesh(tm)`
+\pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)
+
+\returns the number `A` of patches (0 if `tm` has no face).
+
+\throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t over_segment(const TriangleMesh& tm, FacePatchMap face_patch_map,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
+  std::vector<std::size_t> label;
+  const std::size_t count =
+      internal::over_segment_labels<ConcurrencyTag>(tm, fim, label, np);
+  for(auto f : faces(tm)) put(face_patch_map, f, label[std::size_t(get(fim, f))]);
+  return count;
+}
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_OVER_SEGMENTATION_H
