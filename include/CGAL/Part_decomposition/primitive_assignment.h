@@ -1,0 +1,275 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
+#define CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
+
+#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/claimed_voxel_search.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+
+/*!
+\ingroup PkgPartDecompositionRef
+The primitive index that `assign_parts()` returns for its single part when no voxel is claimed.
+*/
+constexpr std::size_t no_primitive = (std::numeric_limits<std::size_t>::max)();
+
+namespace internal {
+
+// Per face index: the nearest claimed voxel of the face centroid (label, normalized distance).
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+                            const Claimed_voxel_search& search, const Normalization& normalization,
+                            std::vector<std::int32_t>& face_label, std::vector<double>& face_distance)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  const std::size_t nf = num_faces(tm);
+  std::vector<face_descriptor> face_of(nf);
+  for(face_descriptor f : faces(tm)) face_of[std::size_t(get(fim, f))] = f;
+  face_label.assign(nf, -1);
+  face_distance.assign(nf, 0.);
+  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      double c[3] = {0., 0., 0.};
+      int n = 0;
+      for(auto v : vertices_around_face(halfedge(face_of[i], tm), tm))
+      {
+        const auto& p = get(vpm, v);
+        c[0] += CGAL::to_double(p.x());
+        c[1] += CGAL::to_double(p.y());
+        c[2] += CGAL::to_double(p.z());
+        ++n;
+      }
+      const std::array<double, 3> u = normalization.to_unit(c[0] / n, c[1] / n, c[2] / n);
+      const Claimed_voxel_search::Result r = search.nearest(u);
+      face_label[i] = r.label;
+      face_distance[i] = r.distance;
+    }
+  });
+}
+
+// Eq. 9 on flat arrays: patch[i] in [0, number_of_patches) for each face index i; writes the
+// winning label of each patch (-1 for a patch without faces).
+template <typename ConcurrencyTag>
+std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patch, std::size_t number_of_patches,
+                                            const std::vector<std::int32_t>& face_label,
+                                            const std::vector<double>& face_distance, double tau)
+{
+  const std::size_t nf = patch.size();
+  // Faces grouped by patch, increasing face index inside a patch (counting sort): the sums
+  // run in a fixed order whatever the number of threads.
+  std::vector<std::size_t> start(number_of_patches + 1, 0);
+  for(std::size_t i = 0; i < nf; ++i) ++start[patch[i] + 1];
+  for(std::size_t p = 0; p < number_of_patches; ++p) start[p + 1] += start[p];
+  std::vector<std::size_t> order(nf);
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t i = 0; i < nf; ++i) order[fill[patch[i]]++] = i;
+  }
+  std::vector<std::int32_t> winner(number_of_patches, -1);
+  chunked_for<ConcurrencyTag>(number_of_patches, [&](std::size_t b, std::size_t e) {
+    std::vector<std::pair<std::int32_t, double> > votes;
+    for(std::size_t p = b; p < e; ++p)
+    {
+      if(start[p] == start[p + 1]) continue;
+      // exp(-(d - d_min)/tau) differs from exp(-d/tau) by a factor common to the patch: same
+      // argmax, no underflow far from every voxel.
+      double d_min = std::numeric_limits<double>::infinity();
+      for(std::size_t s = start[p]; s < start[p + 1]; ++s) d_min = (std::min)(d_min, face_distance[order[s]]);
+      votes.clear();
+      for(std::size_t s = start[p]; s < start[p + 1]; ++s)
+      {
+        const std::size_t i = order[s];
+        const double w = std::exp(-(face_distance[i] - d_min) / tau);
+        auto it = std::find_if(votes.begin(), votes.end(),
+                               [&](const std::pair<std::int32_t, double>& v) { return v.first == face_label[i]; });
+        if(it == votes.end()) votes.emplace_back(face_label[i], w);
+        else it->second += w;
+      }
+      std::pair<std::int32_t, double> best = votes.front();
+      for(const auto& v : votes)
+        if(v.second > best.second || (v.second == best.second && v.first < best.first)) best = v;
+      winner[p] = best.first;
+    }
+  });
+  return winner;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+transfers the primitives fitted in voxel space to the mesh (paper Sec. 3.3, App. E.4, Eq. 9): each
+patch of an over-segmentation of `tm` (see `over_segment()`) is given one primitive by a
+distance-weighted vote of its faces, and the patches given the same primitive form one part.
+
+1. The centroid of each face \f$f\f$, mapped to the normalized cube by `normalization`, is matched
+   to the nearest centre of a claimed voxel (a voxel of `claimed_labels` holding a primitive index
+   \f$\ge 0\f$): \f$\hat k_f\f$ is that voxel's primitive and \f$d_f\f$ the Euclidean distance
+   (normalized units). One kd-tree holds the claimed voxels.
+2. Each patch \f$j\f$ takes
+   \f$k^*_j = \arg\max_k \sum_{f \in j} \exp(-d_f/\tau_v)\,[\hat k_f = k]\f$, the smallest \f$k\f$
+   on a tie, with \f$\tau_v\f$ = `vote_temperature` voxel sizes of `claimed_labels`.
+3. The patches with the same \f$k^*\f$ form one part. Parts are numbered `0` to `K-1` by increasing
+   primitive index.
+
+If no voxel is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
+The result does not depend on the number of threads.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the
+        nearest-voxel queries and the votes run in parallel.
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam FacePatchMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an unsigned integer
+        type as value type
+\tparam FacePartMap a model of `WritablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as
+        value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh
+\param face_patch_map the patch of each face; ids need not be consecutive
+\param claimed_labels for each voxel of the finest grid, the index of the primitive that claims
+       it, or a negative value
+\param normalization the map from the coordinates of `tm` to the cube of `claimed_labels`
+\param face_part_map receives the part id of each face, in `[0, K)`
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+                          `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+                   `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{vote_temperature}
+    \cgalParamDescription{the temperature \f$\tau_v\f$ of the vote, in voxel sizes of
+                          `claimed_labels`: a face one \f$\tau_v\f$ farther weighs \f$1/e\f$ as much}
+    \cgalParamType{`double`, positive}
+    \cgalParamDefault{`1.0`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `CGAL::is_triangle_mesh(tm)`
+\pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)
+
+\returns the primitive index of each part, increasing: `K` values.
+
+\throws Invalid_input (`INVALID_PARAMETER`) if `vote_temperature` is not a positive finite number.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FacePatchMap,
+          typename FacePartMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_patch_map,
+                                      const Voxel_grid<std::int32_t>& claimed_labels,
+                                      const Normalization& normalization, FacePartMap face_part_map,
+                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
+  const double temperature = choose_parameter(get_parameter(np, internal_np::vote_temperature), 1.0);
+  if(!(temperature > 0.) || !std::isfinite(temperature))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "vote_temperature must be positive and finite");
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+
+  internal::Claimed_voxel_search search;
+  search.build<ConcurrencyTag>(claimed_labels);
+  if(!search.any())
+  {
+    for(auto f : faces(tm)) put(face_part_map, f, std::size_t(0));
+    return std::vector<std::size_t>(1, no_primitive);
+  }
+
+  // Patch ids as given, made consecutive in increasing order.
+  const std::size_t nf = num_faces(tm);
+  std::vector<std::size_t> patch(nf);
+  std::size_t max_id = 0;
+  for(auto f : faces(tm))
+  {
+    const std::size_t p = std::size_t(get(face_patch_map, f));
+    patch[std::size_t(get(fim, f))] = p;
+    max_id = (std::max)(max_id, p);
+  }
+  std::size_t number_of_patches = 0;
+  if(max_id < nf)
+  {
+    std::vector<std::size_t> new_id(max_id + 1, 0);
+    for(std::size_t p : patch) new_id[p] = 1;
+    for(std::size_t& n : new_id) { const std::size_t used = n; n = number_of_patches; number_of_patches += used; }
+    for(std::size_t& p : patch) p = new_id[p];
+  }
+  else
+  {
+    std::vector<std::size_t> ids(patch);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for(std::size_t& p : patch) p = std::size_t(std::lower_bound(ids.begin(), ids.end(), p) - ids.begin());
+    number_of_patches = ids.size();
+  }
+
+  std::vector<std::int32_t> face_label;
+  std::vector<double> face_distance;
+  internal::nearest_claimed_voxels<ConcurrencyTag>(tm, fim, vpm, search, normalization, face_label, face_distance);
+  const double tau = temperature * claimed_labels.voxel_size();
+  const std::vector<std::int32_t> winner =
+      internal::vote_patch_labels<ConcurrencyTag>(patch, number_of_patches, face_label, face_distance, tau);
+
+  std::vector<std::size_t> primitives;
+  for(std::int32_t w : winner) primitives.push_back(std::size_t(w));
+  std::sort(primitives.begin(), primitives.end());
+  primitives.erase(std::unique(primitives.begin(), primitives.end()), primitives.end());
+  std::vector<std::size_t> part_of_patch(number_of_patches);
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+    part_of_patch[p] = std::size_t(
+        std::lower_bound(primitives.begin(), primitives.end(), std::size_t(winner[p])) - primitives.begin());
+  for(auto f : faces(tm)) put(face_part_map, f, part_of_patch[patch[std::size_t(get(fim, f))]]);
+  return primitives;
+}
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
