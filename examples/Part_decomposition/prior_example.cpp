@@ -11,7 +11,9 @@
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
 
+#include <array>
 #include <chrono>
+#include <map>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -23,26 +25,51 @@ typedef K::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 namespace PD = CGAL::Part_decomposition;
 
-// Appends the closed box [lo, hi] (12 triangles, outward).
-void add_box(Mesh& m, const Point& lo, const Point& hi)
+// Appends the closed box [lo, hi], each side cut into n x n squares of two triangles, outward.
+void add_box(Mesh& m, const Point& lo, const Point& hi, int n)
 {
-  Mesh::Vertex_index v[8];
-  for(int i = 0; i < 8; ++i)
-    v[i] = m.add_vertex(Point((i & 1) ? hi.x() : lo.x(), (i & 2) ? hi.y() : lo.y(), (i & 4) ? hi.z() : lo.z()));
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for(const auto& q : quads)
-  {
-    m.add_face(v[q[0]], v[q[1]], v[q[2]]);
-    m.add_face(v[q[0]], v[q[2]], v[q[3]]);
-  }
+  std::map<std::array<double, 3>, Mesh::Vertex_index> index;
+  auto vertex = [&](const std::array<double, 3>& c) {
+    auto it = index.find(c);
+    if(it == index.end()) it = index.emplace(c, m.add_vertex(Point(c[0], c[1], c[2]))).first;
+    return it->second;
+  };
+  const double L[3] = {lo.x(), lo.y(), lo.z()}, H[3] = {hi.x(), hi.y(), hi.z()};
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+    {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      auto V = [&](int i, int j) {
+        std::array<double, 3> c;
+        c[axis] = side ? H[axis] : L[axis];
+        c[u] = L[u] + (H[u] - L[u]) * i / n;
+        c[w] = L[w] + (H[w] - L[w]) * j / n;
+        return vertex(c);
+      };
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          const auto a = V(i, j), b = V(i + 1, j), c = V(i + 1, j + 1), d = V(i, j + 1);
+          if(side)
+          {
+            m.add_face(a, b, c);
+            m.add_face(a, c, d);
+          }
+          else
+          {
+            m.add_face(a, c, b);
+            m.add_face(a, d, c);
+          }
+        }
+    }
 }
 
 Mesh generated_shape()
 {
   Mesh m;
-  add_box(m, Point(-1, -0.35, -0.35), Point(-0.3, 0.35, 0.35));
-  add_box(m, Point(0.3, -0.35, -0.35), Point(1, 0.35, 0.35));
-  add_box(m, Point(-0.3, -0.06, -0.06), Point(0.3, 0.06, 0.06));
+  add_box(m, Point(-1, -0.35, -0.35), Point(-0.3, 0.35, 0.35), 16);
+  add_box(m, Point(0.3, -0.35, -0.35), Point(1, 0.35, 0.35), 16);
+  add_box(m, Point(-0.3, -0.06, -0.06), Point(0.3, 0.06, 0.06), 8);
   return m;
 }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Part_decomposition/internal/prior_parallel.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
+#include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -44,8 +45,10 @@ std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size
   typedef CGAL::Search_traits_3<SC> Base_traits;
   typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
   typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Knn;
-  typedef typename Knn::Tree Tree;
+  typedef CGAL::Sliding_midpoint<Traits> Splitter;
+  // The points cache keeps the coordinates in the tree's own order: no indirection per distance.
+  typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true> Tree;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> Knn;
 
   const std::size_t nf = mesh.faces.size();
   std::vector<double> phi(nf, 0.);
@@ -75,7 +78,7 @@ std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size
   if(keys.empty()) return phi;
 
   const Point_map pmap(centroid.data());
-  Tree tree(keys.begin(), keys.end(), typename Tree::Splitter(), Traits(pmap));
+  Tree tree(keys.begin(), keys.end(), Splitter(), Traits(pmap));
   tree.build(); // before the concurrent queries
   const Distance distance(pmap);
   const double to_right_angles = 2. / std::acos(-1.);
