@@ -1,0 +1,183 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDED_LEAST_SQUARES_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDED_LEAST_SQUARES_H
+
+#include <Eigen/Core>
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Projected Levenberg-Marquardt with active-set freezing for
+//   min 1/2 |f(x)|^2  subject to  lb <= x <= ub,   x in R^N, f in R^m.
+//
+// Each iteration solves (A_FF + mu D_FF) d_F = -g_F on the free set F (a bound variable is frozen
+// while the gradient pushes it outward), with A = J^T J, g = J^T f and the Marquardt scaling
+// D = diag(A) / scale^2: a variable of scale s moves s times as far as one of scale 1 for the same
+// damping, which is how the caller shrinks the trust region along chosen directions (scipy's
+// x_scale). The step is projected on the box and judged by the gain ratio of the projected step;
+// the damping follows Nielsen's rule. Rejected trials evaluate residuals only.
+//
+// Problem interface:
+//   std::size_t number_of_residuals() const;
+//   double residuals(const Vector& x, double* f);                  // returns 1/2 |f|^2
+//   double residuals_and_jacobian(const Vector& x, double* f, double* J);  // J row-major m x N
+//   void accept(Vector& x);  // after an accepted step; may re-parametrize x at the same point
+template <int N>
+class Bounded_least_squares
+{
+public:
+  typedef Eigen::Matrix<double, N, 1> Vector;
+  typedef Eigen::Matrix<double, N, N> Matrix;
+
+  struct Options
+  {
+    int maximum_evaluations = 50;  // residual evaluations, with or without Jacobian
+    double ftol = 1e-8;            // stop when the accepted decrease is below ftol * cost
+    double xtol = 1e-8;            // stop when |step| < xtol (xtol + |x|)
+    double gtol = 1e-10;           // stop when the projected gradient is below gtol
+    double initial_damping = 1e-3; // mu0, relative to diag(A)
+    Vector scale = Vector::Ones(); // x_scale
+  };
+
+  struct Report
+  {
+    int evaluations = 0;
+    int jacobian_evaluations = 0;
+    int accepted_steps = 0;
+    double initial_cost = 0.;
+    double final_cost = 0.;
+    bool finite = true; // false if the cost at x0 is not finite (x left at x0)
+  };
+
+  template <typename Problem>
+  Report solve(Problem& problem, Vector& x, const Vector& lb, const Vector& ub, const Options& options)
+  {
+    Report report;
+    const std::size_t m = problem.number_of_residuals();
+    m_f.resize(m);
+    m_f_trial.resize(m);
+    m_J.resize(m * std::size_t(N));
+    for(int i = 0; i < N; ++i) x[i] = (std::min)(ub[i], (std::max)(lb[i], x[i]));
+
+    double F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
+    ++report.evaluations;
+    ++report.jacobian_evaluations;
+    report.initial_cost = report.final_cost = F;
+    if(!std::isfinite(F))
+    {
+      report.finite = false;
+      return report;
+    }
+    if(m == 0) return report;
+    Matrix A;
+    Vector g;
+    normal_equations(m, A, g);
+
+    double mu = options.initial_damping, nu = 2.;
+    while(report.evaluations < options.maximum_evaluations)
+    {
+      bool frozen[N];
+      double pg = 0.;
+      for(int i = 0; i < N; ++i)
+      {
+        frozen[i] = (x[i] <= lb[i] && g[i] > 0.) || (x[i] >= ub[i] && g[i] < 0.);
+        if(!frozen[i]) pg = (std::max)(pg, std::abs(g[i]));
+      }
+      if(pg < options.gtol) break;
+
+      Matrix M = A;
+      Vector rhs = -g;
+      for(int i = 0; i < N; ++i)
+      {
+        const double s = options.scale[i];
+        M(i, i) += mu * (std::max)(A(i, i), 1e-12) / (s * s);
+      }
+      for(int i = 0; i < N; ++i)
+        if(frozen[i])
+        {
+          M.row(i).setZero();
+          M.col(i).setZero();
+          M(i, i) = 1.;
+          rhs[i] = 0.;
+        }
+      Eigen::LDLT<Matrix> ldlt(M);
+      Vector step = ldlt.solve(rhs);
+      if(ldlt.info() != Eigen::Success || !step.allFinite())
+      {
+        mu *= nu;
+        nu *= 2.;
+        if(mu > 1e20) break;
+        continue;
+      }
+      Vector x_trial = x + step;
+      for(int i = 0; i < N; ++i) x_trial[i] = (std::min)(ub[i], (std::max)(lb[i], x_trial[i]));
+      const Vector s = x_trial - x;
+      if(s.squaredNorm() == 0.) break;
+      const double predicted = -(g.dot(s) + 0.5 * s.dot(A * s));
+
+      const double F_trial = problem.residuals(x_trial, m_f_trial.data());
+      ++report.evaluations;
+      const double actual = F - F_trial;
+      if(std::isfinite(F_trial) && predicted > 0. && actual > 0.)
+      {
+        const double gain = actual / predicted;
+        x = x_trial;
+        problem.accept(x);
+        ++report.accepted_steps;
+        const bool small_decrease = actual < options.ftol * F;
+        const bool small_step = s.norm() < options.xtol * (options.xtol + x.norm());
+        mu *= (std::max)(1. / 3., 1. - std::pow(2. * gain - 1., 3));
+        nu = 2.;
+        F = F_trial;
+        report.final_cost = F;
+        if(small_decrease || small_step || report.evaluations >= options.maximum_evaluations) break;
+        F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
+        ++report.evaluations;
+        ++report.jacobian_evaluations;
+        report.final_cost = F;
+        normal_equations(m, A, g);
+      }
+      else
+      {
+        mu *= nu;
+        nu *= 2.;
+        if(mu > 1e20) break;
+      }
+    }
+    return report;
+  }
+
+private:
+  void normal_equations(std::size_t m, Matrix& A, Vector& g) const
+  {
+    typedef Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> Jacobian;
+    Eigen::Map<const Jacobian> J(m_J.data(), Eigen::Index(m), N);
+    Eigen::Map<const Eigen::VectorXd> f(m_f.data(), Eigen::Index(m));
+    A.setZero();
+    A.template selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+    A = A.template selfadjointView<Eigen::Lower>();
+    g.noalias() = J.transpose() * f;
+  }
+
+  std::vector<double> m_f, m_f_trial, m_J;
+};
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDED_LEAST_SQUARES_H

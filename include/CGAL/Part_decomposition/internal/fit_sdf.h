@@ -1,0 +1,347 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
+
+#include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
+#include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+template <typename ConcurrencyTag>
+constexpr bool sq_is_parallel()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#else
+  return false;
+#endif
+}
+
+// Calls f(block, begin, end) on fixed blocks of [0, n): the blocks never depend on the number of
+// threads, so per-block results merged in block order are bit-identical for any thread count.
+template <typename ConcurrencyTag, typename F>
+void sq_for_each_block(std::size_t n, std::size_t block_size, const F& f)
+{
+  const std::size_t blocks = (n + block_size - 1) / block_size;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(sq_is_parallel<ConcurrencyTag>() && blocks > 1)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for(std::size_t b = range.begin(); b != range.end(); ++b)
+                          f(b, b * block_size, (std::min)(n, (b + 1) * block_size));
+                      });
+    return;
+  }
+#endif
+  for(std::size_t b = 0; b < blocks; ++b) f(b, b * block_size, (std::min)(n, (b + 1) * block_size));
+}
+
+// The samples of one fit (structure of arrays): positions in the normalized cube and d_M.
+struct Fit_samples
+{
+  std::vector<double> x, y, z, d;
+  std::size_t size() const { return d.size(); }
+  void clear()
+  {
+    x.clear();
+    y.clear();
+    z.clear();
+    d.clear();
+  }
+  void push_back(double px, double py, double pz, double pd)
+  {
+    x.push_back(px);
+    y.push_back(py);
+    z.push_back(pz);
+    d.push_back(pd);
+  }
+};
+
+struct Fit_sdf_settings
+{
+  double truncation = 0.125;          // tau
+  double exterior_penalty = 5.;       // mu_ext
+  double near_surface_fraction = 0.3; // near-surface band and clip: 0.3 tau
+  double active_multiplier = 3.;      // active set |d~(theta0)| < 3 tau
+  double outlier_probability = 0.99;  // w_o of the MPS Gaussian inlier weight
+  bool reestimate_variance = true;    // MPS rule: sigma^2 = sum w r^2 / sum w after each outer pass
+  int maximum_outer_iterations = 4;   // outer passes of the MPS rule
+  int maximum_evaluations = 40;       // per solve (one solve per outer pass)
+  double relative_cost_tolerance = 1e-3; // stop the outer passes when the cost changes less
+  double semi_axis_scale = 1.;        // eta: x_scale of the semi-axes
+};
+
+struct Fit_sdf_result
+{
+  Superquadric_data theta;
+  double cost = 0.;                // sum w r^2 / |P_a| at theta
+  std::size_t active = 0;          // |P_a|
+  int evaluations = 0;             // residual evaluations (with or without Jacobian)
+  int solves = 0;                  // least-squares solves (outer passes)
+  bool valid = false;              // false: too few active samples or a non-finite cost
+};
+
+// Parameter vector x = (ax, ay, az, e1, e2, d0, d1, d2, cx, cy, cz); d is a rotation increment
+// around the problem's current rotation, folded into it after every accepted step.
+typedef Bounded_least_squares<superquadric_number_of_parameters> Superquadric_solver;
+typedef Superquadric_solver::Vector Superquadric_vector;
+
+inline Superquadric_vector to_vector(const Superquadric_data& q)
+{
+  Superquadric_vector x;
+  x << q.a[0], q.a[1], q.a[2], q.e1, q.e2, 0., 0., 0., q.c[0], q.c[1], q.c[2];
+  return x;
+}
+
+// The weighted, two-stage clipped TSDF residuals of Alg. A.3 over the active samples.
+template <typename ConcurrencyTag>
+class Fit_sdf_problem
+{
+public:
+  Fit_sdf_problem(const std::vector<double>& px, const std::vector<double>& py, const std::vector<double>& pz,
+                  const std::vector<double>& d, const std::vector<double>& sqrt_w,
+                  const std::vector<double>& clip, std::vector<double>& block_sums, const double R[9])
+    : m_px(px), m_py(py), m_pz(pz), m_d(d), m_sw(sqrt_w), m_clip(clip), m_block_sums(block_sums)
+  {
+    std::copy(R, R + 9, m_R);
+  }
+
+  std::size_t number_of_residuals() const { return m_d.size(); }
+
+  Superquadric_data shape(const Superquadric_vector& x) const
+  {
+    Superquadric_data q;
+    for(int i = 0; i < 3; ++i) q.a[i] = x[i];
+    q.e1 = x[3];
+    q.e2 = x[4];
+    std::copy(m_R, m_R + 9, q.R);
+    const double d[3] = {x[5], x[6], x[7]};
+    if(d[0] != 0. || d[1] != 0. || d[2] != 0.) apply_rotation_increment(q.R, d);
+    for(int i = 0; i < 3; ++i) q.c[i] = x[8 + i];
+    return q;
+  }
+
+  double residuals(const Superquadric_vector& x, double* f) { return evaluate(x, f, nullptr); }
+  double residuals_and_jacobian(const Superquadric_vector& x, double* f, double* J) { return evaluate(x, f, J); }
+
+  void accept(Superquadric_vector& x)
+  {
+    const double d[3] = {x[5], x[6], x[7]};
+    if(d[0] != 0. || d[1] != 0. || d[2] != 0.) apply_rotation_increment(m_R, d);
+    x[5] = x[6] = x[7] = 0.;
+  }
+
+  const double* rotation() const { return m_R; }
+
+private:
+  static constexpr std::size_t block_size = 512;
+
+  double evaluate(const Superquadric_vector& x, double* f, double* J)
+  {
+    const Superquadric_data q = shape(x);
+    const std::size_t m = m_d.size();
+    const std::size_t blocks = (m + block_size - 1) / block_size;
+    m_block_sums.assign(blocks, 0.);
+    auto run = [&](std::size_t b, std::size_t begin, std::size_t end) {
+      double sum = 0.;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const double p[3] = {m_px[i], m_py[i], m_pz[i]};
+        double row[11];
+        const double dt = J ? superquadric_radial_distance_and_gradient(q, p, row)
+                            : superquadric_radial_distance(q, p);
+        const double r = dt - m_d[i];
+        const double b = m_clip[i];
+        double fi;
+        if(std::abs(r) < b)
+        {
+          fi = m_sw[i] * r;
+          if(J)
+            for(int k = 0; k < 11; ++k) J[11 * i + k] = m_sw[i] * row[k];
+        }
+        else
+        {
+          // the clipped residual is constant: zero row
+          fi = m_sw[i] * (r > 0. ? b : -b);
+          if(J)
+            for(int k = 0; k < 11; ++k) J[11 * i + k] = 0.;
+        }
+        f[i] = fi;
+        sum += fi * fi;
+      }
+      m_block_sums[b] = sum;
+    };
+    sq_for_each_block<ConcurrencyTag>(m, block_size, run);
+    double total = 0.;
+    for(double s : m_block_sums) total += s;
+    return 0.5 * total;
+  }
+
+  const std::vector<double>& m_px;
+  const std::vector<double>& m_py;
+  const std::vector<double>& m_pz;
+  const std::vector<double>& m_d;
+  const std::vector<double>& m_sw;
+  const std::vector<double>& m_clip;
+  std::vector<double>& m_block_sums;
+  double m_R[9];
+};
+
+// Buffers reused across fits (one per thread when fits run concurrently).
+struct Fit_sdf_workspace
+{
+  std::vector<double> px, py, pz, d, sqrt_w, clip, d0, block_sums;
+  std::vector<unsigned char> interior; // interior regime: Gaussian weight
+  Superquadric_solver solver;
+};
+
+// FitSDF (paper Alg. A.3): active set at theta0, the three weight regimes, two-stage residual
+// clipping, bounded least squares with x_scale(a) = eta.
+//
+// The paper does not say how the variance of the interior Gaussian weight is set. With
+// reestimate_variance, the MPS rule: sigma^2 is re-estimated as sum w r^2 / sum w over P_a after
+// each outer pass and the interior weights are recomputed at the current parameters. Otherwise
+// (one shot) sigma^2 and all weights are computed once at theta0 and a single solve runs. In both
+// modes the first sigma^2 is the mean squared clipped residual at theta0 (MPS starts from e^{2T},
+// a units accident that makes the first interior weights vanish).
+template <typename ConcurrencyTag>
+Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
+                       const Superquadric_vector& lb, const Superquadric_vector& ub,
+                       const Fit_sdf_settings& settings, Fit_sdf_workspace& ws)
+{
+  Fit_sdf_result result;
+  result.theta = theta0;
+  const double tau = settings.truncation;
+  const double near_band = settings.near_surface_fraction * tau;
+
+  // Active set and the fixed parts of the weights, at theta0.
+  ws.px.clear(); ws.py.clear(); ws.pz.clear(); ws.d.clear();
+  ws.sqrt_w.clear(); ws.clip.clear(); ws.d0.clear(); ws.interior.clear();
+  for(std::size_t i = 0; i < P.size(); ++i)
+  {
+    const double p[3] = {P.x[i], P.y[i], P.z[i]};
+    const double dt = superquadric_radial_distance(theta0, p);
+    if(!(std::abs(dt) < settings.active_multiplier * tau)) continue;
+    const double dm = P.d[i];
+    double w = 1.;
+    bool interior = false;
+    if(dm > 0.)
+      w = 1. + settings.exterior_penalty * (std::max)(0., -dt) / tau;
+    else if(std::abs(dm) < near_band)
+      w = 1.;
+    else
+      interior = true;
+    ws.px.push_back(p[0]); ws.py.push_back(p[1]); ws.pz.push_back(p[2]); ws.d.push_back(dm);
+    ws.sqrt_w.push_back(std::sqrt(w));
+    ws.clip.push_back(std::abs(dm) < near_band ? near_band : tau);
+    ws.d0.push_back(dt);
+    ws.interior.push_back(interior ? 1 : 0);
+  }
+  const std::size_t m = ws.d.size();
+  result.active = m;
+  if(m < std::size_t(superquadric_number_of_parameters)) return result;
+
+  auto clipped_residual = [&](std::size_t i, double dt) {
+    const double r = dt - ws.d[i];
+    return (std::max)(-ws.clip[i], (std::min)(ws.clip[i], r));
+  };
+
+  // sigma^2 at theta0: mean squared clipped residual, floored at a tiny fraction of tau^2.
+  double sigma2 = 0.;
+  for(std::size_t i = 0; i < m; ++i)
+  {
+    const double r = clipped_residual(i, ws.d0[i]);
+    sigma2 += r * r;
+  }
+  sigma2 = (std::max)(sigma2 / double(m), 1e-6 * tau * tau);
+
+  const double wo = settings.outlier_probability;
+  auto set_interior_weights = [&](const std::vector<double>& dt, double s2) {
+    const double C = wo * std::sqrt(2. * CGAL_PI * s2) / ((1. - wo) * tau);
+    for(std::size_t i = 0; i < m; ++i)
+      if(ws.interior[i])
+      {
+        const double e = clipped_residual(i, dt[i]);
+        const double p = std::exp(-e * e / (2. * s2));
+        ws.sqrt_w[i] = std::sqrt(p / (C + p));
+      }
+  };
+  set_interior_weights(ws.d0, sigma2);
+
+  Fit_sdf_problem<ConcurrencyTag> problem(ws.px, ws.py, ws.pz, ws.d, ws.sqrt_w, ws.clip, ws.block_sums,
+                                          theta0.R);
+  Superquadric_vector x = to_vector(theta0);
+  Superquadric_solver::Options options;
+  options.maximum_evaluations = settings.maximum_evaluations;
+  for(int i = 0; i < 3; ++i) options.scale[i] = settings.semi_axis_scale;
+
+  const int passes = settings.reestimate_variance ? (std::max)(1, settings.maximum_outer_iterations) : 1;
+  double previous_cost = -1.;
+  std::vector<double>& dt = ws.d0; // reused: d~ at the current parameters
+  for(int pass = 0; pass < passes; ++pass)
+  {
+    const auto report = ws.solver.solve(problem, x, lb, ub, options);
+    result.evaluations += report.evaluations;
+    ++result.solves;
+    if(!report.finite) return result;
+    if(pass + 1 == passes) break;
+    // MPS: sigma^2 = sum w r^2 / sum w at the new parameters, then new interior weights.
+    const Superquadric_data q = problem.shape(x);
+    double swr = 0., sw = 0.;
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
+      dt[i] = superquadric_radial_distance(q, p);
+      const double r = clipped_residual(i, dt[i]);
+      const double w = ws.sqrt_w[i] * ws.sqrt_w[i];
+      swr += w * r * r;
+      sw += w;
+    }
+    const double cost = swr / double(m);
+    if(previous_cost >= 0. && std::abs(previous_cost - cost) <= settings.relative_cost_tolerance * cost) break;
+    previous_cost = cost;
+    sigma2 = (std::max)(swr / (std::max)(sw, 1e-300), 1e-6 * tau * tau);
+    set_interior_weights(dt, sigma2);
+  }
+
+  result.theta = problem.shape(x);
+  double cost = 0.;
+  for(std::size_t i = 0; i < m; ++i)
+  {
+    const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
+    const double r = clipped_residual(i, superquadric_radial_distance(result.theta, p));
+    cost += ws.sqrt_w[i] * ws.sqrt_w[i] * r * r;
+  }
+  result.cost = cost / double(m);
+  result.valid = std::isfinite(result.cost);
+  return result;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H

@@ -1,0 +1,531 @@
+// Tests of the superquadric type, its stable distance and Jacobian, the bounded least-squares
+// solver, FitSDF (Alg. A.3) and SDFSQFit (Alg. A.2).
+#include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
+#include <CGAL/Part_decomposition/internal/fit_sdf.h>
+#include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+namespace PDI = CGAL::Part_decomposition::internal;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef PD::Superquadric<K> SQ;
+
+namespace {
+
+std::array<double, 9> rotation_matrix(std::array<double, 3> axis, double angle)
+{
+  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for(double& v : axis) v /= n;
+  const double c = std::cos(angle), s = std::sin(angle), x = axis[0], y = axis[1], z = axis[2];
+  return {{c + x * x * (1 - c), x * y * (1 - c) - z * s, x * z * (1 - c) + y * s,
+           y * x * (1 - c) + z * s, c + y * y * (1 - c), y * z * (1 - c) - x * s,
+           z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)}};
+}
+
+std::array<double, 9> random_rotation(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1., 1.), ang(0., 3.1);
+  return rotation_matrix({{u(rng), u(rng), u(rng)}}, ang(rng));
+}
+
+PDI::Superquadric_data make_data(std::array<double, 3> a, double e1, double e2, const std::array<double, 9>& R,
+                                 std::array<double, 3> c)
+{
+  PDI::Superquadric_data q;
+  for(int i = 0; i < 3; ++i) q.a[i] = a[i], q.c[i] = c[i];
+  q.e1 = e1;
+  q.e2 = e2;
+  std::copy(R.begin(), R.end(), q.R);
+  return q;
+}
+
+struct Reference_case
+{
+  std::array<double, 3> a;
+  double e1, e2;
+  std::array<double, 9> R;
+  std::array<double, 3> c, p;
+  double d; // 60-digit mpmath value of r (1 - F^(-e1/2)), rounded
+};
+
+// Hard points (tiny exponents, points within 1e-12 .. 1e-8 of the centre, exponent 2), reference
+// values computed once with mpmath at 60 digits from the naive formula on the same doubles.
+const Reference_case reference_cases[] = {
+  {{0.2, 0.1, 0.05}, 0.003, 0.003, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.15, 0.08, 0.03}, -0.04315669125408017832076837},
+  {{0.2, 0.1, 0.05}, 0.003, 0.003, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.25, 0.05, 0.01}, 0.05102940328869228365769071},
+  {{0.2, 0.1, 0.05}, 0.001, 0.001, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.199, 0.0999, 0.0499}, -0.0002139311384009973602022762},
+  {{0.2, 0.1, 0.05}, 0.001, 0.001, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.3, 0.2, 0.1}, 0.1871476960861354775497554},
+  {{0.3, 0.2, 0.1}, 1.9, 0.05, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {3e-10, 5e-10, 8e-10}, -0.09687319991987370211627651},
+  {{0.3, 0.2, 0.1}, 0.5, 0.5, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {1e-12, -2e-12, 3e-12}, -0.1243352321095192219436355},
+  {{0.3, 0.2, 0.1}, 0.001, 0.001, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {1e-10, 1e-10, 1e-10}, -0.1732050805836826582106703},
+  {{0.3, 0.2, 0.1}, 2.0, 2.0, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.1, 0.05, 0.02}, -0.03141523765761853215490692},
+  {{0.3, 0.2, 0.1}, 2.0, 2.0, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.4, -0.3, 0.2}, 0.4270992778072192963272858},
+  {{0.3, 0.2, 0.1}, 0.001, 2.0, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.2, 0.1, 0.05}, 0.03273268353539886938996612},
+  {{0.3, 0.2, 0.1}, 2.0, 0.001, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {-0.2, 0.15, 0.05}, 0.05099019513592783817571408},
+  {{0.05, 0.05, 1.0}, 0.01, 1.0, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.04, 0.01, 0.9}, -0.1001048831426845581693332},
+  {{0.5, 0.025, 0.5}, 0.1, 0.1, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.3, 0.03, -0.2}, 0.06030018943141678270073971},
+  {{0.2, 0.2, 0.2}, 1.0, 1.0, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.001, 0.002, 0.35}, 0.1500071427842580138983356},
+  {{0.2, 0.1, 0.05}, 0.002, 1.5, {1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0}, {0, 0, 0}, {0.0, 0.0, 0.07}, 0.02000000000000000388578059},
+  {{0.3, 0.05, 0.15}, 1.95, 0.001, {0.9806349312562712, -0.06939746096306937, -0.18313689964583216, 0.0858622509212019, 0.9927972177053997, 0.08355452341532206, 0.17601933265057249, -0.09766103075585626, 0.9795302535424574}, {0.16388162525724093, -0.11412072766573532, -0.16562110652433135}, {0.1147849160796966, -0.2697229275895203, -0.13499275424949989}, 0.1147455402255302697997289},
+  {{0.3, 0.05, 0.15}, 0.001, 0.01, {0.3255279271485625, -0.7674464981818618, -0.5523200531166308, 0.5770871130039641, -0.3014626859477006, 0.7590063985144975, -0.749000689352894, -0.5658145645081927, 0.3447489607515797}, {-0.1813669277528975, 0.14338738361947184, -0.0841562854673295}, {-0.18136693486779584, 0.14338737597531662, -0.08415628929769302}, -0.05599695329282657249701728},
+  {{0.1, 0.05, 0.01}, 1.95, 0.001, {0.30265750942489184, -0.816237607123617, -0.49209206527420624, -0.4800253640215, 0.3154991149184971, -0.8185572419700846, 0.8233918155317965, 0.4839591689417168, -0.29632657814056224}, {0.04760383726942155, -0.0014342019546032814, 0.012688098632074263}, {0.21394110225790572, -0.022073082450798892, 0.26675292881539114}, 0.2859679197885518674124616},
+  {{0.02, 0.2, 0.15}, 0.05, 1.99, {-0.5196318528185169, 0.8542711826399543, -0.014264783465909592, -0.2160970827103068, -0.11525681419704747, 0.9695452117489117, 0.8266104211661562, 0.5068891528648855, 0.24449662232314928}, {-0.0848248940439254, 0.19206993899703284, -0.15277368869801516}, {-0.08482489568146896, 0.19206994413985143, -0.15277369565832447}, -0.02686740829401968043007886},
+  {{0.3, 0.2, 0.15}, 2.0, 0.5, {-0.6607336162362238, -0.2219848773500851, -0.7170451886759092, 0.29218521326786207, 0.803864635273193, -0.518101775044933, 0.6914180280575685, -0.5518372607798101, -0.46627968869769515}, {0.03774795084200738, 0.03195808171299688, -0.01751786747943479}, {0.24172861914953225, 0.2987667387777594, -0.0330588650276481}, 0.2134208146422313820551607},
+  {{0.3, 0.2, 0.15}, 2.0, 1.99, {-0.22129461691879432, -0.7449608892425919, -0.6293345422123682, -0.009082677350130186, 0.6468807607808884, -0.7625370720848219, 0.9751647027527799, -0.16302930666118293, -0.1499174695446014}, {0.15481611689523672, -0.061197897724619754, 0.17625942665843752}, {0.15481611400451892, -0.06119789550622889, 0.17625942653229743}, -0.1765700657147263587799608},
+};
+
+} // namespace
+
+TEST_CASE("stable radial distance matches high-precision references", "[superquadric]")
+{
+  for(const Reference_case& rc : reference_cases)
+  {
+    const PDI::Superquadric_data q = make_data(rc.a, rc.e1, rc.e2, rc.R, rc.c);
+    const double p[3] = {rc.p[0], rc.p[1], rc.p[2]};
+    const double d = PDI::superquadric_radial_distance(q, p);
+    INFO("eps " << rc.e1 << " " << rc.e2 << " expected " << rc.d << " got " << d);
+    CHECK(std::abs(d - rc.d) <= 1e-12 * std::abs(rc.d) + 1e-15);
+    double J[11];
+    const double d2 = PDI::superquadric_radial_distance_and_gradient(q, p, J);
+    CHECK(d2 == Approx(d).epsilon(1e-14));
+    for(double v : J) CHECK(std::isfinite(v));
+  }
+}
+
+TEST_CASE("radial distance identities", "[superquadric]")
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.4, 0.4);
+  const double eps[] = {1e-3, 0.01, 0.1, 0.5, 1., 1.5, 1.9, 2.};
+  // sphere: d = |p - c| - a
+  for(int t = 0; t < 200; ++t)
+  {
+    const auto R = random_rotation(rng);
+    const PDI::Superquadric_data q = make_data({{0.2, 0.2, 0.2}}, 1., 1., R, {{0.05, -0.1, 0.02}});
+    const double p[3] = {u(rng), u(rng), u(rng)};
+    const double r = std::sqrt((p[0] - 0.05) * (p[0] - 0.05) + (p[1] + 0.1) * (p[1] + 0.1) + (p[2] - 0.02) * (p[2] - 0.02));
+    CHECK(PDI::superquadric_radial_distance(q, p) == Approx(r - 0.2).margin(1e-14));
+  }
+  // on a local axis: d = |x_i| - a_i for every exponent
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for(double e1 : eps)
+    for(double e2 : eps)
+      for(int axis = 0; axis < 3; ++axis)
+        for(double t : {-0.37, -0.05, 0.01, 0.2, 0.3})
+        {
+          const PDI::Superquadric_data q = make_data({{0.3, 0.05, 0.15}}, e1, e2, I, {{0., 0., 0.}});
+          double p[3] = {0., 0., 0.};
+          p[axis] = t;
+          CHECK(PDI::superquadric_radial_distance(q, p) == Approx(std::abs(t) - q.a[axis]).margin(1e-15));
+        }
+  // swapping ax and ay together with a quarter turn about the local z axis changes nothing
+  for(int t = 0; t < 200; ++t)
+  {
+    const auto R = random_rotation(rng);
+    const double e1 = eps[t % 8], e2 = eps[(t / 8) % 8];
+    const PDI::Superquadric_data q = make_data({{0.3, 0.1, 0.2}}, e1, e2, R, {{0.01, 0.02, 0.03}});
+    PDI::Superquadric_data q2 = q;
+    std::swap(q2.a[0], q2.a[1]);
+    // new local x = old local y, new local y = -old local x
+    for(int i = 0; i < 3; ++i)
+    {
+      q2.R[3 * i] = q.R[3 * i + 1];
+      q2.R[3 * i + 1] = -q.R[3 * i];
+    }
+    const double p[3] = {u(rng), u(rng), u(rng)};
+    CHECK(PDI::superquadric_radial_distance(q2, p) ==
+          Approx(PDI::superquadric_radial_distance(q, p)).margin(1e-13));
+  }
+}
+
+TEST_CASE("analytic Jacobian matches central finite differences", "[superquadric]")
+{
+  std::mt19937 rng(5);
+  std::normal_distribution<double> gauss(0., 0.15);
+  const double eps[] = {1e-3, 0.01, 0.1, 0.5, 1., 1.5, 1.9, 1.99, 2.};
+  const std::array<double, 3> axes[] = {{{0.2, 0.2, 0.2}}, {{0.3, 0.1, 0.05}}, {{0.02, 0.4, 0.1}},
+                                        {{0.4, 0.02, 0.4}}, {{0.01, 0.01, 0.2}}};
+  std::size_t checked = 0;
+  double worst = 0.;
+  for(double e1 : eps)
+    for(double e2 : eps)
+      for(const auto& a : axes)
+        for(int t = 0; t < 6; ++t)
+        {
+          const auto R = random_rotation(rng);
+          const std::array<double, 3> c = {{gauss(rng) * 0.3, gauss(rng) * 0.3, gauss(rng) * 0.3}};
+          const PDI::Superquadric_data q = make_data(a, e1, e2, R, c);
+          double p[3];
+          if(t < 4)
+            for(int i = 0; i < 3; ++i) p[i] = c[i] + gauss(rng);
+          else
+          {
+            // near a local plane (t = 4) or a local axis (t = 5)
+            double x[3] = {gauss(rng), gauss(rng), gauss(rng)};
+            x[t % 3] = 1e-2 * a[t % 3];
+            if(t == 5) x[(t + 1) % 3] = -2e-2 * a[(t + 1) % 3];
+            q.to_world(x, p);
+          }
+          double x[3];
+          q.to_local(p, x);
+          const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+          // exclusions: d~ is not differentiable at the centre, nor (for eps near 2) on local planes
+          if(r < 1e-3 * std::min({a[0], a[1], a[2]})) continue;
+          bool kink = false;
+          for(int i = 0; i < 3; ++i)
+            if(std::abs(x[i]) < 1e-3 * a[i] && (e1 > 1.8 || e2 > 1.8)) kink = true;
+          if(kink) continue;
+
+          double J[11];
+          PDI::superquadric_radial_distance_and_gradient(q, p, J);
+          for(int k = 0; k < 11; ++k)
+          {
+            // steps scaled to the thinnest axis: the local curvature of d~ grows like 1/min(a)
+            const double amin = std::min({a[0], a[1], a[2]});
+            double h;
+            if(k < 3) h = 1e-5 * a[k];
+            else if(k < 5) h = std::min(1e-6, 1e-3 * (k == 3 ? e1 : e2));
+            else if(k < 8) h = 1e-5 * amin / std::max(r, amin);
+            else h = 1e-5 * amin;
+            auto eval = [&](double s) {
+              PDI::Superquadric_data qq = q;
+              if(k < 3) qq.a[k] += s;
+              else if(k == 3) qq.e1 += s;
+              else if(k == 4) qq.e2 += s;
+              else if(k < 8)
+              {
+                double dlt[3] = {0., 0., 0.};
+                dlt[k - 5] = s;
+                PDI::apply_rotation_increment(qq.R, dlt);
+              }
+              else qq.c[k - 8] += s;
+              return PDI::superquadric_radial_distance(qq, p);
+            };
+            // one-sided at the upper exponent bound
+            double fd;
+            if((k == 3 && e1 + 2. * h > 2.) || (k == 4 && e2 + 2. * h > 2.))
+              fd = (eval(0.) - eval(-h)) / h;
+            else // fourth-order central difference
+              fd = (8. * (eval(h) - eval(-h)) - (eval(2. * h) - eval(-2. * h))) / (12. * h);
+            const bool one_sided = (k == 3 && e1 + 2. * h > 2.) || (k == 4 && e2 + 2. * h > 2.);
+            const double err = std::abs(J[k] - fd) / (1. + std::abs(fd));
+            const double tol = one_sided ? 1e-4 : 1e-6;
+            worst = std::max(worst, one_sided ? 0. : err);
+            INFO("param " << k << " eps " << e1 << " " << e2 << " a " << a[0] << " " << a[1] << " " << a[2]
+                          << " J " << J[k] << " fd " << fd);
+            CHECK(err < tol);
+            ++checked;
+          }
+        }
+  INFO("worst relative error " << worst << " over " << checked << " derivatives");
+  CHECK(checked > 20000);
+}
+
+TEST_CASE("Superquadric queries, rasterization, sampling and meshing", "[superquadric]")
+{
+  std::mt19937 rng(3);
+  const auto R = rotation_matrix({{1., 2., 0.5}}, 0.7);
+  for(double e1 : {0.1, 1., 1.8})
+    for(double e2 : {0.1, 1., 2.})
+    {
+      const SQ sq({{0.3, 0.12, 0.2}}, e1, e2, R, Point(0.05, -0.02, 0.01));
+      INFO("eps " << e1 << " " << e2);
+      // inside-outside and distance agree on the side
+      std::uniform_real_distribution<double> u(-0.45, 0.45);
+      for(int t = 0; t < 500; ++t)
+      {
+        const Point p(u(rng), u(rng), u(rng));
+        CHECK((sq.inside_outside(p) <= 1.) == (sq.signed_distance(p) <= 0.));
+        CHECK((sq.inside_outside(p) <= 1.) == sq.has_on_bounded_side_or_boundary(p));
+      }
+      // the fast rasterization visits exactly the voxel centres found by brute force
+      const int r = 40;
+      std::vector<std::size_t> fast, brute;
+      sq.for_each_covered_voxel(r, [&](int, int, int, std::size_t idx) { fast.push_back(idx); });
+      std::vector<std::size_t> fast_margin, brute_margin;
+      sq.for_each_covered_voxel(r, [&](int, int, int, std::size_t idx) { fast_margin.push_back(idx); }, 0.04);
+      PD::Voxel_grid<std::uint8_t> grid(r, 0);
+      for(std::size_t idx = 0; idx < grid.size(); ++idx)
+      {
+        const auto c = grid.center(idx);
+        const Point p(c[0], c[1], c[2]);
+        if(sq.inside_outside(p) <= 1.) brute.push_back(idx);
+        if(sq.signed_distance(p) <= 0.04) brute_margin.push_back(idx);
+      }
+      CHECK(fast == brute);
+      CHECK(fast_margin == brute_margin);
+      CHECK(sq.rasterize(grid, std::uint8_t(1)) == brute.size());
+      // voxel volume approaches the analytic volume
+      const double h = 1. / 128.;
+      std::size_t n128 = 0;
+      sq.for_each_covered_voxel(128, [&](int, int, int, std::size_t) { ++n128; });
+      CHECK(double(n128) * h * h * h == Approx(sq.volume()).epsilon(0.03));
+      // the box contains the solid
+      const CGAL::Bbox_3 box = sq.bbox();
+      std::vector<Point> samples;
+      sq.sample_surface(0.01, std::back_inserter(samples));
+      CHECK(samples.size() > 1000);
+      for(const Point& p : samples)
+      {
+        CHECK(std::abs(sq.signed_distance(p)) < 1e-12);
+        CHECK(p.x() >= box.xmin() - 1e-12);
+        CHECK(p.x() <= box.xmax() + 1e-12);
+        CHECK(p.z() >= box.zmin() - 1e-12);
+        CHECK(p.z() <= box.zmax() + 1e-12);
+      }
+      // a closed, outward-oriented triangle mesh of about the right volume
+      CGAL::Surface_mesh<Point> mesh;
+      sq.to_triangle_mesh(mesh, 48);
+      CHECK(CGAL::is_valid_polygon_mesh(mesh));
+      CHECK(CGAL::is_closed(mesh));
+      CHECK(CGAL::is_triangle_mesh(mesh));
+      CHECK(CGAL::Polygon_mesh_processing::volume(mesh) == Approx(sq.volume()).epsilon(0.03));
+      for(auto v : vertices(mesh)) CHECK(std::abs(sq.signed_distance(mesh.point(v))) < 1e-12);
+    }
+  // analytic volumes: ball and box limit
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  CHECK(SQ({{0.1, 0.2, 0.3}}, 1., 1., I, Point(0, 0, 0)).volume() == Approx(4. / 3. * CGAL_PI * 0.006));
+  CHECK(SQ({{0.1, 0.2, 0.3}}, 0., 0., I, Point(0, 0, 0)).volume() == Approx(8. * 0.006).epsilon(0.01));
+}
+
+TEST_CASE("Superquadric in input coordinates", "[superquadric]")
+{
+  const PD::Normalization n({{10., -5., 2.}}, 0.25);
+  const auto R = rotation_matrix({{0.3, -1., 0.2}}, 1.1);
+  const SQ unit({{0.2, 0.05, 0.1}}, 0.3, 1.4, R, Point(0.1, 0.05, -0.2));
+  const SQ input = unit.in_input_coordinates(n);
+  CHECK(input.scales()[0] == Approx(0.8));
+  const auto c = n.from_unit({{0.1, 0.05, -0.2}});
+  CHECK(input.center().x() == Approx(c[0]));
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(-0.4, 0.4);
+  for(int t = 0; t < 100; ++t)
+  {
+    const std::array<double, 3> pu = {{u(rng), u(rng), u(rng)}};
+    const auto pi = n.from_unit(pu);
+    // lengths scale by 1 / scale
+    CHECK(input.signed_distance(Point(pi[0], pi[1], pi[2])) ==
+          Approx(unit.signed_distance(Point(pu[0], pu[1], pu[2])) / 0.25).margin(1e-12));
+  }
+  const SQ back = input.in_normalized_coordinates(n);
+  CHECK(back.scales()[1] == Approx(0.05));
+  CHECK(back.center().z() == Approx(-0.2));
+}
+
+namespace {
+
+// min 1/2 sum (x_i - t_i)^2 + 1/2 sum_i (x_i x_{i+1} - s_i)^2, recording every evaluated x.
+struct Recording_problem
+{
+  typedef PDI::Bounded_least_squares<4>::Vector Vector;
+  Vector t;
+  std::vector<Vector> evaluated;
+  std::size_t number_of_residuals() const { return 7; }
+  double residuals(const Vector& x, double* f)
+  {
+    evaluated.push_back(x);
+    for(int i = 0; i < 4; ++i) f[i] = x[i] - t[i];
+    for(int i = 0; i < 3; ++i) f[4 + i] = x[i] * x[i + 1] - 0.5 * (i + 1);
+    double s = 0.;
+    for(int i = 0; i < 7; ++i) s += f[i] * f[i];
+    return 0.5 * s;
+  }
+  double residuals_and_jacobian(const Vector& x, double* f, double* J)
+  {
+    const double F = residuals(x, f);
+    std::fill(J, J + 28, 0.);
+    for(int i = 0; i < 4; ++i) J[4 * i + i] = 1.;
+    for(int i = 0; i < 3; ++i)
+    {
+      J[4 * (4 + i) + i] = x[i + 1];
+      J[4 * (4 + i) + i + 1] = x[i];
+    }
+    return F;
+  }
+  void accept(Vector&) {}
+};
+
+} // namespace
+
+TEST_CASE("bounded least squares never leaves its bounds and finds the constrained minimum", "[solver]")
+{
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-3., 3.);
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    Recording_problem pb;
+    PDI::Bounded_least_squares<4>::Vector lb, ub, x;
+    for(int i = 0; i < 4; ++i)
+    {
+      pb.t[i] = u(rng);
+      const double a = u(rng), b = u(rng);
+      lb[i] = std::min(a, b) - 0.1;
+      ub[i] = std::max(a, b) + 0.1;
+      x[i] = u(rng) * 2.; // may start outside: the solver clips it
+    }
+    PDI::Bounded_least_squares<4> solver;
+    PDI::Bounded_least_squares<4>::Options opt;
+    opt.maximum_evaluations = 200;
+    opt.ftol = 1e-14;
+    opt.xtol = 1e-14;
+    opt.scale[0] = 0.25;
+    const auto report = solver.solve(pb, x, lb, ub, opt);
+    for(const auto& y : pb.evaluated)
+      for(int i = 0; i < 4; ++i)
+      {
+        CHECK(y[i] >= lb[i]);
+        CHECK(y[i] <= ub[i]);
+      }
+    CHECK(report.final_cost <= report.initial_cost);
+    // first-order optimality of the bound-constrained problem (KKT), checked numerically
+    double f[7];
+    double J[28];
+    pb.residuals_and_jacobian(x, f, J);
+    for(int i = 0; i < 4; ++i)
+    {
+      double g = 0.;
+      for(int k = 0; k < 7; ++k) g += J[4 * k + i] * f[k];
+      if(x[i] > lb[i] + 1e-9 && x[i] < ub[i] - 1e-9) CHECK(std::abs(g) < 1e-5);
+      else if(x[i] <= lb[i] + 1e-9) CHECK(g > -1e-5);
+      else CHECK(g < 1e-5);
+    }
+  }
+}
+
+namespace {
+
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> AABB_primitive;
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, AABB_primitive> > AABB_tree;
+
+// The truncated Euclidean signed distance field of a superquadric on the r-grid: unsigned
+// distance to a fine triangulation of its surface, signed by the inside test, clipped to +-tau.
+PD::Voxel_grid<double> superquadric_tsdf(const std::vector<SQ>& shapes, int r, double tau)
+{
+  Mesh mesh;
+  CGAL::Bbox_3 box;
+  for(const SQ& s : shapes)
+  {
+    s.to_triangle_mesh(mesh, 64);
+    box += s.bbox();
+  }
+  AABB_tree tree(faces(mesh).first, faces(mesh).second, mesh);
+  tree.accelerate_distance_queries();
+  PD::Voxel_grid<double> d(r, tau);
+  for(std::size_t idx = 0; idx < d.size(); ++idx)
+  {
+    const auto c = d.center(idx);
+    // beyond tau from the bounding box every distance is clipped anyway
+    if(c[0] < box.xmin() - tau || c[0] > box.xmax() + tau || c[1] < box.ymin() - tau ||
+       c[1] > box.ymax() + tau || c[2] < box.zmin() - tau || c[2] > box.zmax() + tau)
+      continue;
+    const Point p(c[0], c[1], c[2]);
+    bool inside = false;
+    for(const SQ& s : shapes) inside = inside || s.has_on_bounded_side_or_boundary(p);
+    const double u = std::sqrt(tree.squared_distance(p));
+    d[idx] = std::max(-tau, std::min(tau, inside ? -u : u));
+  }
+  return d;
+}
+
+double angle_degrees(const K::Vector_3& u, const K::Vector_3& v)
+{
+  const double c = std::abs(u * v) / std::sqrt(u.squared_length() * v.squared_length());
+  return std::acos(std::min(1., c)) * 180. / CGAL_PI;
+}
+
+// One FitSDF run as SDFSQFit would start it from a seed: samples = voxel centres of the ball of
+// radius rho around the seed with d_M < 1.5 voxels; ball of radius 1/32, axis-aligned, eps = 1.
+PDI::Fit_sdf_result fit_from_seed(const PD::Voxel_grid<double>& tsdf, const std::array<double, 3>& seed,
+                                  double tau, bool reestimate, double eta = 1.)
+{
+  const int r = tsdf.resolution();
+  const double h = 1. / r, rho = 0.25;
+  PDI::Fit_samples P;
+  for(std::size_t idx = 0; idx < tsdf.size(); ++idx)
+  {
+    const auto c = tsdf.center(idx);
+    const double d2 = (c[0] - seed[0]) * (c[0] - seed[0]) + (c[1] - seed[1]) * (c[1] - seed[1]) +
+                      (c[2] - seed[2]) * (c[2] - seed[2]);
+    if(d2 <= rho * rho && tsdf[idx] < 1.5 * h) P.push_back(c[0], c[1], c[2], tsdf[idx]);
+  }
+  PDI::Superquadric_data q0;
+  for(int i = 0; i < 3; ++i) q0.a[i] = 1. / 32., q0.c[i] = seed[i];
+  PDI::Superquadric_vector lb, ub;
+  lb << 1. / 128, 1. / 128, 1. / 128, 1e-3, 1e-3, -1e300, -1e300, -1e300, seed[0] - rho / 2, seed[1] - rho / 2,
+      seed[2] - rho / 2;
+  ub << rho, rho, rho, 2., 2., 1e300, 1e300, 1e300, seed[0] + rho / 2, seed[1] + rho / 2, seed[2] + rho / 2;
+  PDI::Fit_sdf_settings settings;
+  settings.truncation = tau;
+  settings.reestimate_variance = reestimate;
+  settings.semi_axis_scale = eta;
+  PDI::Fit_sdf_workspace ws;
+  return PDI::fit_sdf<CGAL::Sequential_tag>(P, q0, lb, ub, settings, ws);
+}
+
+} // namespace
+
+TEST_CASE("FitSDF recovers a single superquadric from its own TSDF", "[fit_sdf]")
+{
+  const int r = 64;
+  const double h = 1. / r, tau = 8. * h;
+  struct Case { const char* name; std::array<double, 3> a; double e1, e2; std::array<double, 9> R; };
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  const Case cases[] = {
+    {"sphere", {{0.15, 0.15, 0.15}}, 1., 1., I},
+    {"ellipsoid", {{0.2, 0.12, 0.08}}, 1., 1., rotation_matrix({{1., 0.5, 0.2}}, 0.35)},
+    {"box-like", {{0.2, 0.12, 0.08}}, 0.1, 0.1, I},
+    {"rotated box-like", {{0.2, 0.12, 0.08}}, 0.1, 0.1, rotation_matrix({{0.2, 1., 0.4}}, 0.45)},
+    {"cylinder-like", {{0.1, 0.1, 0.2}}, 0.1, 1., rotation_matrix({{1., 0., 0.3}}, 0.3)},
+  };
+  for(bool reestimate : {true, false})
+    for(const Case& cs : cases)
+    {
+      const Point center(0.013, -0.021, 0.008);
+      const SQ truth(cs.a, cs.e1, cs.e2, cs.R, center);
+      const PD::Voxel_grid<double> tsdf = superquadric_tsdf({truth}, r, tau);
+      // seed: the voxel centre nearest to the true centre
+      const auto ijk = tsdf.locate(center.x(), center.y(), center.z());
+      const auto seed = tsdf.center(ijk[0], ijk[1], ijk[2]);
+      const PDI::Fit_sdf_result fit = fit_from_seed(tsdf, seed, tau, reestimate);
+      REQUIRE(fit.valid);
+      const SQ sq(fit.theta);
+      INFO(cs.name << (reestimate ? " (MPS variance)" : " (one-shot variance)") << ": a = " << sq.scales()[0]
+                   << " " << sq.scales()[1] << " " << sq.scales()[2] << " eps " << sq.epsilon1() << " "
+                   << sq.epsilon2() << " c " << sq.center() << " evaluations " << fit.evaluations);
+      CHECK(std::sqrt(CGAL::squared_distance(sq.center(), center)) < h);
+      // match every true axis with the fitted axis most parallel to it
+      for(int i = 0; i < 3; ++i)
+      {
+        int best = 0;
+        double best_angle = 180.;
+        for(int j = 0; j < 3; ++j)
+        {
+          const double ang = angle_degrees(truth.axis(i), sq.axis(j));
+          if(ang < best_angle) best_angle = ang, best = j;
+        }
+        CHECK(std::abs(sq.scales()[best] - cs.a[i]) < h);
+        // orientation only means something for distinct axes
+        const bool distinct = std::abs(cs.a[i] - cs.a[(i + 1) % 3]) > 0.02 && std::abs(cs.a[i] - cs.a[(i + 2) % 3]) > 0.02;
+        if(distinct) CHECK(best_angle < 4.);
+      }
+    }
+}
