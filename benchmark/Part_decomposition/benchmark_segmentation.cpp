@@ -1,0 +1,862 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+// Scores this package and CGAL's SDF segmentation against human segmentations, shape by shape,
+// in one run (see README.md next to this file).
+//
+//   benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours] [--shapes a,b]
+//                          [--threads N] [--ablations] [--variants v1,v2] [--samples N] [--seed S]
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/version.h>
+
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/decompose.h>
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/segmentation_metrics.h>
+
+#include "sdf_peer.h"
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/version.h>
+#endif
+
+#include <sys/utsname.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+namespace fs = std::filesystem;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Face_index Face;
+
+namespace {
+
+const double NaN = std::numeric_limits<double>::quiet_NaN();
+
+// ------------------------------------------------------------------------------------------
+// Command line
+
+struct Options
+{
+  std::string dataset;
+  std::string out = "benchmark_out";
+  std::vector<std::string> methods = {"sdf", "ours"};
+  std::vector<std::string> shapes;
+  std::vector<std::string> variants; // ablation variants; empty with --ablations = all
+  bool ablations = false;
+  int threads = 0; // 0: all hardware threads
+  std::size_t samples = 10000;
+  unsigned seed = 0;
+  std::string command_line;
+};
+
+std::vector<std::string> split(const std::string& s, char sep)
+{
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(s);
+  while(std::getline(in, item, sep))
+    if(!item.empty()) out.push_back(item);
+  return out;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& x)
+{
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+void usage()
+{
+  std::cerr << "usage: benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours] [--shapes a,b]\n"
+               "                              [--threads N] [--ablations] [--variants v1,v2]\n"
+               "                              [--samples N] [--seed S]\n"
+               "DATASET_DIR holds manifest.tsv (columns shape, category, ...), NAME.off|obj|ply|stl and\n"
+               "NAME_k.seg (one label per face, file order). --variants implies --ablations.\n";
+}
+
+bool parse(int argc, char** argv, Options& o)
+{
+  for(int i = 0; i < argc; ++i) o.command_line += (i ? " " : "") + std::string(argv[i]);
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&](std::string& v) {
+      if(i + 1 >= argc) return false;
+      v = argv[++i];
+      return true;
+    };
+    std::string v;
+    if(a == "--out") { if(!value(o.out)) return false; }
+    else if(a == "--methods") { if(!value(v)) return false; o.methods = split(v, ','); }
+    else if(a == "--shapes") { if(!value(v)) return false; o.shapes = split(v, ','); }
+    else if(a == "--variants") { if(!value(v)) return false; o.variants = split(v, ','); o.ablations = true; }
+    else if(a == "--threads") { if(!value(v)) return false; o.threads = std::atoi(v.c_str()); }
+    else if(a == "--samples") { if(!value(v)) return false; o.samples = std::strtoull(v.c_str(), nullptr, 10); }
+    else if(a == "--seed") { if(!value(v)) return false; o.seed = unsigned(std::strtoul(v.c_str(), nullptr, 10)); }
+    else if(a == "--ablations") o.ablations = true;
+    else if(a == "-h" || a == "--help") return false;
+    else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return false; }
+    else if(o.dataset.empty()) o.dataset = a;
+    else return false;
+  }
+  for(const std::string& m : o.methods)
+    if(m != "sdf" && m != "ours") { std::cerr << "unknown method " << m << "\n"; return false; }
+  return !o.dataset.empty() && o.samples > 0;
+}
+
+// ------------------------------------------------------------------------------------------
+// Dataset
+
+struct Shape_entry
+{
+  std::string name, category;
+  long manifest_faces = -1;
+  fs::path mesh;
+  std::vector<fs::path> ground_truths; // NAME_k.seg in k order (or NAME.seg)
+};
+
+std::vector<Shape_entry> read_dataset(const Options& o, std::string& error)
+{
+  std::vector<Shape_entry> shapes;
+  const fs::path dir(o.dataset);
+  std::ifstream in(dir / "manifest.tsv");
+  if(!in) { error = "cannot open " + (dir / "manifest.tsv").string(); return shapes; }
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line, '\t');
+  auto column = [&](const std::string& name) {
+    return int(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const int c_shape = column("shape"), c_category = column("category"), c_faces = column("faces");
+  if(c_shape >= int(header.size())) { error = "manifest.tsv has no 'shape' column"; return shapes; }
+
+  // NAME_k.seg, or NAME.seg alone
+  std::map<std::string, std::map<long, fs::path> > seg;
+  for(const fs::directory_entry& e : fs::directory_iterator(dir))
+  {
+    if(e.path().extension() != ".seg") continue;
+    const std::string stem = e.path().stem().string();
+    seg[stem][-1] = e.path();
+    const std::size_t u = stem.rfind('_');
+    if(u == std::string::npos || u + 1 == stem.size()) continue;
+    const std::string k = stem.substr(u + 1);
+    if(std::all_of(k.begin(), k.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      seg[stem.substr(0, u)][std::atol(k.c_str())] = e.path();
+  }
+
+  while(std::getline(in, line))
+  {
+    if(!line.empty() && line.back() == '\r') line.pop_back();
+    if(line.empty()) continue;
+    std::vector<std::string> f;
+    std::string item;
+    std::istringstream ls(line);
+    while(std::getline(ls, item, '\t')) f.push_back(item);
+    if(c_shape >= int(f.size())) continue;
+    Shape_entry s;
+    s.name = f[c_shape];
+    if(!o.shapes.empty() && !contains(o.shapes, s.name)) continue;
+    s.category = c_category < int(f.size()) ? f[c_category] : "-";
+    if(c_faces < int(f.size())) s.manifest_faces = std::atol(f[c_faces].c_str());
+    for(const char* ext : {".off", ".obj", ".ply", ".stl"})
+      if(fs::exists(dir / (s.name + ext))) { s.mesh = dir / (s.name + ext); break; }
+    auto it = seg.find(s.name);
+    if(it != seg.end())
+    {
+      for(const auto& kp : it->second)
+        if(kp.first >= 0) s.ground_truths.push_back(kp.second);
+      if(s.ground_truths.empty()) s.ground_truths.push_back(it->second.begin()->second);
+    }
+    shapes.push_back(s);
+  }
+  return shapes;
+}
+
+bool read_labels(const fs::path& p, std::vector<long>& labels)
+{
+  labels.clear();
+  std::ifstream in(p);
+  if(!in) return false;
+  long v;
+  while(in >> v) labels.push_back(v);
+  return in.eof();
+}
+
+// ------------------------------------------------------------------------------------------
+// Measurements
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// VmHWM (peak resident set) or VmRSS of this process, in MB.
+double status_mb(const std::string& key)
+{
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while(std::getline(in, line))
+    if(line.compare(0, key.size(), key) == 0)
+      return std::atof(line.c_str() + key.size()) / 1024.;
+  return NaN;
+}
+
+// Writing "5" to clear_refs resets VmHWM to the current RSS (Linux >= 4.0).
+bool reset_peak_memory()
+{
+  std::ofstream f("/proc/self/clear_refs");
+  if(!f) return false;
+  f << "5";
+  f.flush();
+  return bool(f);
+}
+
+// A writable map face -> part id into a vector indexed like faces(mesh) (no garbage).
+struct Face_part_map
+{
+  typedef Face key_type;
+  typedef std::size_t value_type;
+  typedef std::size_t& reference;
+  typedef boost::read_write_property_map_tag category;
+  std::vector<std::size_t>* parts;
+  friend void put(const Face_part_map& m, Face f, std::size_t v) { (*m.parts)[std::size_t(f)] = v; }
+  friend std::size_t get(const Face_part_map& m, Face f) { return (*m.parts)[std::size_t(f)]; }
+};
+
+// ------------------------------------------------------------------------------------------
+// Ablation variants (paper Tables 3 and 4); every one passes all its settings explicitly.
+
+struct Variant
+{
+  std::string id;
+  std::vector<int> resolutions = {16, 32, 64};
+  double alpha = 0.15;
+  std::array<double, 4> weights = {{1., 1., 1., 1.}};
+  bool freeze = true, tsdf = true, body = true;
+  bool available = true; // false: our API has no switch for it
+};
+
+std::vector<Variant> all_variants()
+{
+  std::vector<Variant> v;
+  auto add = [&](const std::string& id) { v.push_back(Variant()); v.back().id = id; return &v.back(); };
+  add("full");
+  add("no_body")->body = false;
+  add("no_freeze")->freeze = false;
+  add("alpha05")->alpha = 0.05;
+  add("alpha25")->alpha = 0.25;
+  add("no_curvature")->weights = {{0., 0., 0., 1.}};
+  add("no_normal")->weights = {{1., 1., 1., 0.}};
+  add("no_density")->available = false; // the sqrt(n) factor of Eq. 3 has no switch yet
+  add("no_tsdf")->tsdf = false;
+  for(int r : {16, 32, 64})
+  {
+    const std::string s = std::to_string(r);
+    add("r" + s)->resolutions = {r};
+    Variant* a = add("r" + s + "_no_freeze");
+    a->resolutions = {r};
+    a->freeze = false;
+    Variant* b = add("r" + s + "_no_tsdf");
+    b->resolutions = {r};
+    b->tsdf = false;
+  }
+  return v;
+}
+
+// ------------------------------------------------------------------------------------------
+// One row of results.tsv
+
+struct Row
+{
+  std::string shape, category, method;
+  std::size_t faces = 0, n_gt = 0, parts = 0;
+  bool ok = false;
+  std::string error, note;
+  double miou = NaN, ri = NaN, voi = NaN, sc = NaN, gt_parts = NaN;
+  double t_read = NaN, t_prior = NaN, t_tsdf = NaN, t_fitting = NaN, t_overseg = NaN, t_assign = NaN;
+  double t_sdf = NaN, t_sdf_segmentation = NaN, t_method = NaN;
+  double peak_mb = NaN, rss_before_mb = NaN;
+};
+
+std::string clean(std::string s)
+{
+  for(char& c : s)
+    if(c == '\t' || c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string num(double x, int digits = 4)
+{
+  if(std::isnan(x)) return "nan";
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << x;
+  return o.str();
+}
+
+void write_tsv_header(std::ostream& out)
+{
+  out << "dataset\tshape\tcategory\tfaces\tmethod\tstatus\tmIoU\tRI\tVoI\tSC\tparts\tgt_parts\tn_gt"
+         "\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign\tt_sdf_values\tt_sdf_segmentation"
+         "\tt_method\tpeak_mb\trss_before_mb\terror\tnote\n";
+}
+
+void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
+{
+  out << dataset << '\t' << r.shape << '\t' << r.category << '\t' << r.faces << '\t' << r.method << '\t'
+      << (r.ok ? "ok" : "error") << '\t' << num(r.miou) << '\t' << num(r.ri) << '\t' << num(r.voi) << '\t'
+      << num(r.sc) << '\t' << r.parts << '\t' << num(r.gt_parts, 2) << '\t' << r.n_gt << '\t'
+      << num(r.t_read) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t' << num(r.t_fitting) << '\t'
+      << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_sdf) << '\t'
+      << num(r.t_sdf_segmentation) << '\t' << num(r.t_method) << '\t' << num(r.peak_mb, 1) << '\t'
+      << num(r.rss_before_mb, 1) << '\t' << clean(r.error) << '\t' << clean(r.note) << '\n';
+  out.flush();
+}
+
+// Scores face labels against every ground truth (sample labels precomputed) and averages.
+void score(const std::vector<std::size_t>& face_labels, const std::vector<std::size_t>& samples,
+           const std::vector<std::vector<long> >& gt_samples, Row& r)
+{
+  if(gt_samples.empty()) return;
+  std::vector<std::size_t> predicted;
+  predicted.reserve(samples.size());
+  for(std::size_t f : samples) predicted.push_back(face_labels[f]);
+  double m = 0., ri = 0., voi = 0., sc = 0.;
+  for(const std::vector<long>& g : gt_samples)
+  {
+    const PD::Segmentation_scores s = PD::compare_segmentations(g, predicted);
+    m += s.mean_iou;
+    ri += s.rand_index;
+    voi += s.variation_of_information;
+    sc += s.segmentation_covering;
+  }
+  const double k = double(gt_samples.size());
+  r.miou = m / k;
+  r.ri = ri / k;
+  r.voi = voi / k;
+  r.sc = sc / k;
+}
+
+template <typename NP>
+std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const NP& np)
+{
+  labels.assign(num_faces(mesh), std::size_t(-1));
+  const std::size_t k = PD::decompose<CGAL::Parallel_if_available_tag>(mesh, Face_part_map{&labels}, np);
+  for(std::size_t l : labels)
+    if(l >= k) throw std::runtime_error("decompose left a face without a part id in [0, K)");
+  return k;
+}
+
+// ------------------------------------------------------------------------------------------
+// Summaries
+
+double median(std::vector<double> v)
+{
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }), v.end());
+  if(v.empty()) return NaN;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double mean(const std::vector<double>& v)
+{
+  double s = 0.;
+  std::size_t n = 0;
+  for(double x : v)
+    if(!std::isnan(x)) { s += x; ++n; }
+  return n ? s / double(n) : NaN;
+}
+
+template <typename F>
+std::vector<double> field(const std::vector<const Row*>& rows, F f)
+{
+  std::vector<double> v;
+  for(const Row* r : rows) v.push_back(f(*r));
+  return v;
+}
+
+struct Aggregate
+{
+  std::size_t n_ok = 0, n_all = 0;
+  double miou = NaN, ri = NaN, voi = NaN, sc = NaN, parts = NaN, gt_parts = NaN;
+  double t_median = NaN, t_mean = NaN, peak_median = NaN;
+};
+
+Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, const std::string& category = "")
+{
+  std::vector<const Row*> ok;
+  Aggregate a;
+  for(const Row& r : rows)
+  {
+    if(r.method != method || (!category.empty() && r.category != category)) continue;
+    ++a.n_all;
+    if(r.ok) ok.push_back(&r);
+  }
+  a.n_ok = ok.size();
+  a.miou = mean(field(ok, [](const Row& r) { return r.miou; }));
+  a.ri = mean(field(ok, [](const Row& r) { return r.ri; }));
+  a.voi = mean(field(ok, [](const Row& r) { return r.voi; }));
+  a.sc = mean(field(ok, [](const Row& r) { return r.sc; }));
+  a.parts = mean(field(ok, [](const Row& r) { return double(r.parts); }));
+  a.gt_parts = mean(field(ok, [](const Row& r) { return r.gt_parts; }));
+  a.t_median = median(field(ok, [](const Row& r) { return r.t_method; }));
+  a.t_mean = mean(field(ok, [](const Row& r) { return r.t_method; }));
+  a.peak_median = median(field(ok, [](const Row& r) { return r.peak_mb; }));
+  return a;
+}
+
+std::string method_label(const std::string& m)
+{
+  if(m == "sdf") return "CGAL SDF (defaults)";
+  if(m == "ours") return "Hi-TOPS (ours)";
+  return m;
+}
+
+std::string read_first(const std::string& file, const std::string& key)
+{
+  std::ifstream in(file);
+  std::string line;
+  while(std::getline(in, line))
+    if(line.compare(0, key.size(), key) == 0)
+    {
+      std::size_t c = line.find(':');
+      std::string v = c == std::string::npos ? line : line.substr(c + 1);
+      v.erase(0, v.find_first_not_of(" \t"));
+      return v;
+    }
+  return "?";
+}
+
+std::string machine_description(int threads)
+{
+  std::ostringstream o;
+  struct utsname u;
+  const bool has_uname = uname(&u) == 0;
+  o << "- CPU: " << read_first("/proc/cpuinfo", "model name") << ", "
+    << std::thread::hardware_concurrency() << " hardware threads; " << threads << " thread(s) used\n"
+    << "- Memory: " << num(std::atof(read_first("/proc/meminfo", "MemTotal").c_str()) / 1048576., 1) << " GiB\n"
+    << "- OS: " << (has_uname ? std::string(u.sysname) + " " + u.release + " " + u.machine : "?") << "\n"
+    << "- Compiler: "
+#if defined(__clang__)
+    << "clang "
+#elif defined(__GNUC__)
+    << "GCC "
+#endif
+    << __VERSION__ << ", CGAL " << CGAL_VERSION_STR
+#ifdef CGAL_LINKED_WITH_TBB
+    << ", oneTBB " << TBB_VERSION_MAJOR << "." << TBB_VERSION_MINOR
+#else
+    << ", no TBB"
+#endif
+#ifdef NDEBUG
+    << ", NDEBUG (Release)"
+#else
+    << ", assertions on (not Release)"
+#endif
+    << "\n";
+  return o.str();
+}
+
+void write_summary(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
+                   const std::vector<std::string>& categories, int threads)
+{
+  std::ofstream out(fs::path(o.out) / "summary.md");
+  out << "# Segmentation benchmark: " << dataset << "\n\n"
+      << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
+      << "Protocol (paper, Appendix A): " << o.samples << " points per shape drawn on the surface with "
+      << "probability proportional to area (seed " << o.seed << "), each labelled by its face; "
+      << "class-agnostic mIoU (many-to-one best match per ground-truth part), Rand index, variation "
+      << "of information (natural log, nats) and segmentation covering, averaged over every human "
+      << "segmentation of a shape, then over shapes. Seconds exclude reading the mesh; peak memory is "
+      << "the process's VmHWM during the method.\n\n";
+
+  std::vector<std::string> methods;
+  for(const std::string& m : {"sdf", "ours"})
+    for(const Row& r : rows)
+      if(r.method == m) { methods.push_back(m); break; }
+
+  out << "## Overall\n\n"
+      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s | mean s | median peak MB |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for(const std::string& m : methods)
+  {
+    const Aggregate a = aggregate(rows, m);
+    out << "| " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | " << num(a.miou, 3) << " | "
+        << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3) << " | " << num(a.parts, 1)
+        << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " | " << num(a.t_mean, 3) << " | "
+        << num(a.peak_median, 0) << " |\n";
+  }
+
+  out << "\n## Per category\n\n"
+      << "| Category | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for(const std::string& c : categories)
+    for(const std::string& m : methods)
+    {
+      const Aggregate a = aggregate(rows, m, c);
+      if(a.n_all == 0) continue;
+      out << "| " << c << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
+          << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3)
+          << " | " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " |\n";
+    }
+
+  // Pair by pair: the ratio of each shape's times, then their median.
+  std::map<std::string, const Row*> sdf, ours;
+  for(const Row& r : rows)
+    if(r.ok && r.method == "sdf") sdf[r.shape] = &r;
+    else if(r.ok && r.method == "ours") ours[r.shape] = &r;
+  std::vector<double> ratios;
+  std::ostringstream table;
+  for(const Row& r : rows)
+  {
+    if(r.method != "ours" || !r.ok || !sdf.count(r.shape)) continue;
+    const Row& s = *sdf[r.shape];
+    const double ratio = r.t_method / s.t_method;
+    ratios.push_back(ratio);
+    table << "| " << r.shape << " | " << num(r.t_method, 3) << " | " << num(s.t_method, 3) << " | "
+          << num(ratio, 3) << " | " << num(r.miou, 3) << " | " << num(s.miou, 3) << " |\n";
+  }
+  out << "\n## Time ratio ours / SDF, shape by shape\n\n";
+  if(ratios.empty())
+    out << "No shape where both methods succeeded.\n";
+  else
+  {
+    double log_sum = 0.;
+    for(double x : ratios) log_sum += std::log(x);
+    out << "Median ratio " << num(median(ratios), 3) << ", geometric mean "
+        << num(std::exp(log_sum / double(ratios.size())), 3) << ", over " << ratios.size() << " shapes.\n\n"
+        << "| Shape | ours s | SDF s | ours/SDF | ours mIoU | SDF mIoU |\n|---|---|---|---|---|---|\n"
+        << table.str();
+  }
+
+  if(!ours.empty())
+  {
+    std::vector<const Row*> ok;
+    for(const auto& e : ours) ok.push_back(e.second);
+    out << "\n## Our stages, median seconds\n\n"
+        << "| read | prior | TSDF | fitting | over-segmentation | assignment | total |\n"
+        << "|---|---|---|---|---|---|---|\n| "
+        << num(median(field(ok, [](const Row& r) { return r.t_read; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_prior; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_tsdf; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_fitting; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_overseg; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_assign; })), 3) << " | "
+        << num(median(field(ok, [](const Row& r) { return r.t_method; })), 3) << " |\n";
+  }
+  if(!sdf.empty())
+  {
+    std::vector<const Row*> ok;
+    for(const auto& e : sdf) ok.push_back(e.second);
+    out << "\nSDF peer, median seconds: sdf_values " << num(median(field(ok, [](const Row& r) { return r.t_sdf; })), 3)
+        << ", segmentation_from_sdf_values "
+        << num(median(field(ok, [](const Row& r) { return r.t_sdf_segmentation; })), 3) << ".\n";
+  }
+
+  out << "\n## Errors and guards\n\n";
+  bool any = false;
+  for(const Row& r : rows)
+  {
+    if(r.method != "sdf" && r.method != "ours") continue;
+    if(!r.ok) { out << "- " << r.shape << " / " << r.method << ": error: " << clean(r.error) << "\n"; any = true; }
+    if(!r.note.empty()) { out << "- " << r.shape << " / " << r.method << ": " << clean(r.note) << "\n"; any = true; }
+  }
+  if(!any) out << "None: no error, no guard fired.\n";
+}
+
+void write_ablations(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
+                     const std::vector<Variant>& variants, int threads)
+{
+  std::ofstream out(fs::path(o.out) / "ablations.md");
+  out << "# Ablations on " << dataset << " (shape of the paper's Tables 3 and 4)\n\n"
+      << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
+      << "Metrics as in summary.md (mIoU as a fraction, VoI in nats), means over the shapes where "
+      << "the variant ran; \"shapes\" counts them. Every variant passes all its settings explicitly; "
+      << "the unnamed ones keep the paper's defaults (R = {16,32,64}, alpha = 0.15, lambda = "
+      << "(1,1,1,1), Freeze, TSDF guidance and body seeds on). Unlike the paper's Table 3, whose "
+      << "variants use a single-scale diagnostic branch, every Table 3 variant here changes one "
+      << "setting of the full pipeline.\n\n";
+
+  auto find = [&](const std::string& id) -> const Variant* {
+    for(const Variant& v : variants)
+      if(v.id == id) return &v;
+    return nullptr;
+  };
+  auto metrics = [&](const std::string& id, bool with_time) {
+    const Variant* v = find(id);
+    std::ostringstream s;
+    if(v == nullptr) { s << "| not run |  |  |  |  |" << (with_time ? "  |  |" : ""); return s.str(); }
+    if(!v->available)
+    {
+      s << "| n/a | n/a | n/a | n/a | no API switch |" << (with_time ? " n/a | n/a |" : "");
+      return s.str();
+    }
+    const Aggregate a = aggregate(rows, "ours:" + id);
+    s << "| " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3) << " | " << num(a.miou, 3)
+      << " | " << a.n_ok << "/" << a.n_all << " |";
+    if(with_time) s << " " << num(a.t_mean, 3) << " | " << num(a.t_median, 3) << " |";
+    return s.str();
+  };
+
+  out << "## Table 3: components\n\n| Category | Variant | RI ↑ | VoI ↓ | SC ↑ | mIoU ↑ | shapes |\n"
+      << "|---|---|---|---|---|---|---|\n"
+      << "| Reference | Full, {16,32,64} " << metrics("full", false) << "\n"
+      << "| SQ Comp. | w/o Body " << metrics("no_body", false) << "\n"
+      << "| SQ Comp. | w/o Freeze " << metrics("no_freeze", false) << "\n"
+      << "| Flow-Freeze Threshold | Top 5% " << metrics("alpha05", false) << "\n"
+      << "| Flow-Freeze Threshold | Top 25% " << metrics("alpha25", false) << "\n"
+      << "| Geometric Cues | w/o Curvature (lambda1..3 = 0) " << metrics("no_curvature", false) << "\n"
+      << "| Geometric Cues | w/o Normal (lambda4 = 0) " << metrics("no_normal", false) << "\n"
+      << "| Geometric Cues | w/o Density (no sqrt(n)) " << metrics("no_density", false) << "\n"
+      << "| w/o TSDF | {16,32,64} " << metrics("no_tsdf", false) << "\n";
+
+  out << "\n## Table 4: TSDF guidance, Freeze constraints, resolutions\n\n"
+      << "| Setting | Resolution | RI ↑ | VoI ↓ | SC ↑ | mIoU ↑ | shapes | mean s ↓ | median s |\n"
+      << "|---|---|---|---|---|---|---|---|---|\n";
+  for(int r : {16, 32, 64})
+    out << "| Single scale, w TSDF, w/o Freeze | " << r << " " << metrics("r" + std::to_string(r) + "_no_freeze", true) << "\n";
+  for(int r : {16, 32, 64})
+    out << "| Single scale, w/o TSDF, w Freeze | " << r << " " << metrics("r" + std::to_string(r) + "_no_tsdf", true) << "\n";
+  for(int r : {16, 32, 64})
+    out << "| Single scale, w TSDF, w Freeze | " << r << " " << metrics("r" + std::to_string(r), true) << "\n";
+  out << "| w/o TSDF | {16,32,64} " << metrics("no_tsdf", true) << "\n"
+      << "| Ours, hierarchical, w TSDF | {16,32,64} " << metrics("full", true) << "\n";
+
+  out << "\n## Errors\n\n";
+  bool any = false;
+  for(const Row& r : rows)
+    if(r.method.compare(0, 5, "ours:") == 0 && !r.ok)
+    {
+      out << "- " << r.shape << " / " << r.method << ": " << clean(r.error) << "\n";
+      any = true;
+    }
+  if(!any) out << "None.\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options o;
+  if(!parse(argc, argv, o)) { usage(); return 2; }
+
+  const int threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
+
+  std::string error;
+  const std::vector<Shape_entry> shapes = read_dataset(o, error);
+  if(!error.empty()) { std::cerr << error << "\n"; return 1; }
+  if(shapes.empty()) { std::cerr << "no shape selected\n"; return 1; }
+
+  std::vector<Variant> variants;
+  if(o.ablations)
+  {
+    for(const Variant& v : all_variants())
+      if(o.variants.empty() || contains(o.variants, v.id)) variants.push_back(v);
+    for(const std::string& id : o.variants)
+    {
+      bool known = false;
+      for(const Variant& v : variants) known = known || v.id == id;
+      if(!known) { std::cerr << "unknown variant " << id << "\n"; return 2; }
+    }
+  }
+
+  fs::create_directories(o.out);
+  const std::string dataset = fs::path(o.dataset).lexically_normal().filename().string().empty()
+                                ? fs::path(o.dataset).lexically_normal().parent_path().filename().string()
+                                : fs::path(o.dataset).lexically_normal().filename().string();
+  std::ofstream tsv(fs::path(o.out) / "results.tsv");
+  write_tsv_header(tsv);
+  const bool peak_ok = reset_peak_memory();
+  if(!peak_ok) std::cerr << "warning: cannot reset the peak memory (/proc/self/clear_refs): peak_mb is the process peak\n";
+
+  std::vector<Row> rows;
+  std::vector<std::string> categories;
+  for(std::size_t si = 0; si < shapes.size(); ++si)
+  {
+    const Shape_entry& e = shapes[si];
+    if(!contains(categories, e.category)) categories.push_back(e.category);
+    Row base;
+    base.shape = e.name;
+    base.category = e.category;
+    base.n_gt = e.ground_truths.size();
+
+    // Read once; the same mesh, samples and ground truths serve every method.
+    Mesh mesh;
+    PD::IO::Mesh_file_info info;
+    std::string shape_error;
+    auto t0 = std::chrono::steady_clock::now();
+    try
+    {
+      if(e.mesh.empty()) throw std::runtime_error("no mesh file " + e.name + ".{off,obj,ply,stl}");
+      info = PD::IO::read_triangle_mesh(e.mesh.string(), mesh);
+    }
+    catch(const std::exception& ex) { shape_error = std::string("read: ") + ex.what(); }
+    base.t_read = seconds_since(t0);
+    base.faces = num_faces(mesh);
+    if(shape_error.empty() && e.manifest_faces >= 0 && std::size_t(e.manifest_faces) != info.number_of_input_faces)
+      shape_error = "manifest says " + std::to_string(e.manifest_faces) + " faces, the file has " +
+                    std::to_string(info.number_of_input_faces);
+
+    std::vector<std::size_t> samples;
+    std::vector<std::vector<long> > gt_samples;
+    std::string shape_note;
+    if(shape_error.empty())
+    {
+      samples = PD::sample_faces_by_area(
+        mesh, CGAL::parameters::number_of_points_on_faces(o.samples).random_seed(o.seed));
+      double gt_parts = 0.;
+      for(const fs::path& p : e.ground_truths)
+      {
+        std::vector<long> file_labels;
+        if(!read_labels(p, file_labels) || file_labels.size() != info.number_of_input_faces)
+        {
+          shape_note += (shape_note.empty() ? "" : "; ") + p.filename().string() + " skipped (" +
+                        std::to_string(file_labels.size()) + " labels for " +
+                        std::to_string(info.number_of_input_faces) + " faces)";
+          continue;
+        }
+        std::vector<long> g;
+        g.reserve(samples.size());
+        for(std::size_t f : samples) g.push_back(file_labels[info.face_to_input[f]]);
+        std::vector<long> sorted(file_labels);
+        std::sort(sorted.begin(), sorted.end());
+        gt_parts += double(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+        gt_samples.push_back(std::move(g));
+      }
+      if(gt_samples.empty()) shape_note += (shape_note.empty() ? "" : "; ") + std::string("no usable ground truth");
+      else base.gt_parts = gt_parts / double(gt_samples.size());
+      base.n_gt = gt_samples.size();
+      if(info.number_of_reversed_components > 0)
+        shape_note += (shape_note.empty() ? "" : "; ") + std::string("reader reoriented ") +
+                      std::to_string(info.number_of_reversed_components) + " inward component(s)";
+    }
+
+    auto finish = [&](Row& r) {
+      r.peak_mb = status_mb("VmHWM:");
+      if(!shape_note.empty()) r.note = r.note.empty() ? shape_note : shape_note + "; " + r.note;
+      write_tsv_row(tsv, dataset, r);
+      std::cout << "[" << (si + 1) << "/" << shapes.size() << "] " << std::left << std::setw(14) << r.shape
+                << " " << std::setw(22) << r.method << std::right
+                << (r.ok ? " ok   " : " ERROR ") << " " << num(r.t_method, 3) << " s  mIoU " << num(r.miou, 3)
+                << " RI " << num(r.ri, 3) << " VoI " << num(r.voi, 3) << " SC " << num(r.sc, 3)
+                << " parts " << r.parts << (r.ok ? "" : "  " + r.error)
+                << (r.note.empty() ? "" : "  [" + r.note + "]") << std::endl;
+      rows.push_back(r);
+    };
+    auto begin_method = [&](Row& r) {
+#ifdef __GLIBC__
+      malloc_trim(0); // give freed heap pages back, so that the peak counts what the method needs
+#endif
+      r.rss_before_mb = status_mb("VmRSS:");
+      reset_peak_memory();
+    };
+
+    std::vector<std::pair<std::string, const Variant*> > runs;
+    for(const std::string& m : o.methods) runs.emplace_back(m, nullptr);
+    if(contains(o.methods, "ours") || o.ablations)
+      for(const Variant& v : variants) runs.emplace_back("ours:" + v.id, &v);
+
+    for(const auto& run : runs)
+    {
+      Row r = base;
+      r.method = run.first;
+      if(!shape_error.empty()) { r.error = shape_error; finish(r); continue; }
+      if(run.second != nullptr && !run.second->available)
+      {
+        r.error = "not available: no named parameter switches this off";
+        finish(r);
+        continue;
+      }
+      std::vector<std::size_t> labels;
+      begin_method(r);
+      t0 = std::chrono::steady_clock::now();
+      try
+      {
+        if(run.first == "sdf")
+        {
+          pd_benchmark::Sdf_peer_result p = pd_benchmark::segment_with_sdf(mesh);
+          r.t_method = seconds_since(t0);
+          r.t_sdf = p.sdf_seconds;
+          r.t_sdf_segmentation = p.segmentation_seconds;
+          r.parts = p.number_of_segments;
+          r.note = p.note;
+          labels = std::move(p.labels);
+        }
+        else
+        {
+          PD::Stage_timings st;
+          if(run.second == nullptr)
+            r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st));
+          else
+          {
+            const Variant& v = *run.second;
+            r.parts = run_ours(mesh, labels,
+                               PD::parameters::combine(PD::parameters::stage_timings(&st),
+                                                       PD::parameters::voxel_resolutions(v.resolutions),
+                                                       PD::parameters::freeze_ratio(v.alpha),
+                                                       PD::parameters::cue_weights(v.weights),
+                                                       PD::parameters::use_freeze_zone(v.freeze),
+                                                       PD::parameters::use_tsdf_guidance(v.tsdf),
+                                                       PD::parameters::use_body_seeds(v.body)));
+          }
+          r.t_method = seconds_since(t0);
+          r.t_prior = st.prior;
+          r.t_tsdf = st.tsdf;
+          r.t_fitting = st.fitting;
+          r.t_overseg = st.over_segmentation;
+          r.t_assign = st.assignment;
+        }
+        score(labels, samples, gt_samples, r);
+        r.ok = true;
+      }
+      catch(const std::exception& ex)
+      {
+        r.t_method = seconds_since(t0);
+        r.error = ex.what();
+      }
+      catch(...)
+      {
+        r.t_method = seconds_since(t0);
+        r.error = "unknown exception";
+      }
+      finish(r);
+    }
+  }
+
+  write_summary(o, dataset, rows, categories, threads);
+  if(o.ablations) write_ablations(o, dataset, rows, variants, threads);
+  std::cout << "wrote " << (fs::path(o.out) / "results.tsv").string() << ", "
+            << (fs::path(o.out) / "summary.md").string()
+            << (o.ablations ? ", " + (fs::path(o.out) / "ablations.md").string() : std::string()) << "\n";
+  return 0;
+}
