@@ -454,6 +454,14 @@ std::string read_first(const std::string& file, const std::string& key)
   return "?";
 }
 
+std::string load_average()
+{
+  std::ifstream in("/proc/loadavg");
+  double a = NaN, b = NaN, c = NaN;
+  in >> a >> b >> c;
+  return num(a, 2) + " " + num(b, 2) + " " + num(c, 2);
+}
+
 std::string machine_description(int threads)
 {
   std::ostringstream o;
@@ -462,6 +470,8 @@ std::string machine_description(int threads)
   o << "- CPU: " << read_first("/proc/cpuinfo", "model name") << ", "
     << std::thread::hardware_concurrency() << " hardware threads; " << threads << " thread(s) used\n"
     << "- Memory: " << num(std::atof(read_first("/proc/meminfo", "MemTotal").c_str()) / 1048576., 1) << " GiB\n"
+    << "- Load average (1, 5, 15 min) when this file was written: " << load_average()
+    << " (other processes share the cores: seconds are only comparable within one run)\n"
     << "- OS: " << (has_uname ? std::string(u.sysname) + " " + u.release + " " + u.machine : "?") << "\n"
     << "- Compiler: "
 #if defined(__clang__)
@@ -498,7 +508,7 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
       << "the process's VmHWM during the method.\n\n";
 
   std::vector<std::string> methods;
-  for(const std::string& m : {"sdf", "ours"})
+  for(const std::string m : {"sdf", "ours"})
     for(const Row& r : rows)
       if(r.method == m) { methods.push_back(m); break; }
 
@@ -784,19 +794,14 @@ int main(int argc, char** argv)
     std::vector<std::pair<std::string, const Variant*> > runs;
     for(const std::string& m : o.methods) runs.emplace_back(m, nullptr);
     if(contains(o.methods, "ours") || o.ablations)
-      for(const Variant& v : variants) runs.emplace_back("ours:" + v.id, &v);
+      for(const Variant& v : variants)
+        if(v.available) runs.emplace_back("ours:" + v.id, &v); // the others are n/a in the tables
 
     for(const auto& run : runs)
     {
       Row r = base;
       r.method = run.first;
       if(!shape_error.empty()) { r.error = shape_error; finish(r); continue; }
-      if(run.second != nullptr && !run.second->available)
-      {
-        r.error = "not available: no named parameter switches this off";
-        finish(r);
-        continue;
-      }
       std::vector<std::size_t> labels;
       begin_method(r);
       t0 = std::chrono::steady_clock::now();
