@@ -1,6 +1,7 @@
 // Tests of the superquadric type, its stable distance and Jacobian, the bounded least-squares
 // solver, FitSDF (Alg. A.3) and SDFSQFit (Alg. A.2).
 #include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
 #include <CGAL/Part_decomposition/internal/fit_sdf.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
@@ -527,5 +528,148 @@ TEST_CASE("FitSDF recovers a single superquadric from its own TSDF", "[fit_sdf]"
         const bool distinct = std::abs(cs.a[i] - cs.a[(i + 1) % 3]) > 0.02 && std::abs(cs.a[i] - cs.a[(i + 2) % 3]) > 0.02;
         if(distinct) CHECK(best_angle < 4.);
       }
+    }
+}
+
+namespace {
+
+// The truncated signed distance of a union of superquadrics: min of the shapes' fields (exact
+// outside, the usual CSG approximation inside).
+PD::Voxel_grid<double> union_tsdf(const std::vector<SQ>& shapes, int r, double tau)
+{
+  PD::Voxel_grid<double> d(r, tau);
+  for(const SQ& s : shapes)
+  {
+    const PD::Voxel_grid<double> ds = superquadric_tsdf({s}, r, tau);
+    for(std::size_t i = 0; i < d.size(); ++i) d[i] = std::min(d[i], ds[i]);
+  }
+  return d;
+}
+
+// A hand-made prior on the 64-grid: carrier = voxels whose centre is within half a diagonal of the
+// surface; carrier voxels for which `is_freeze(centre)` holds are Freeze leaves of resolution 64,
+// the others Flow leaves of resolution 16; interior voxels have R_map = 0.
+template <typename F>
+PD::Hierarchical_prior synthetic_prior(const PD::Voxel_grid<double>& tsdf, const F& is_freeze)
+{
+  const int r = tsdf.resolution();
+  PD::Hierarchical_prior prior;
+  prior.resolutions = {16, 32, 64};
+  prior.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
+  prior.leaf_resolution = PD::Voxel_grid<std::uint16_t>(r, 0);
+  for(std::size_t i = 0; i < tsdf.size(); ++i)
+    if(std::abs(tsdf[i]) <= 0.87 / r)
+    {
+      const bool fr = is_freeze(tsdf.center(i));
+      prior.classes[i] = fr ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
+      prior.leaf_resolution[i] = fr ? 64 : 16;
+    }
+  return prior;
+}
+
+// The zones of App. E.2 (A.1) from the classes, built with the package's grid operations.
+PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior, bool use_freeze = true)
+{
+  const int R = prior.classes.resolution();
+  PD::Fitting_zones z;
+  z.occupied = PD::Voxel_grid<std::uint8_t>(R, 0);
+  for(std::size_t i = 0; i < z.occupied.size(); ++i) z.occupied[i] = prior.classes[i] != PD::Voxel_class::EMPTY;
+  z.exterior = PDI::complement(PDI::fill_holes(z.occupied));
+  z.freeze_zone = z.exterior;
+  if(use_freeze)
+    for(std::size_t i = 0; i < z.occupied.size(); ++i)
+      if(prior.classes[i] == PD::Voxel_class::FREEZE) z.freeze_zone[i] = 1;
+  for(int rf : {16, 32})
+  {
+    const PD::Voxel_grid<std::uint8_t> flow = PDI::dilate(PDI::complement(z.exterior), 2. * R / rf);
+    const PD::Voxel_grid<double> d2 = PDI::squared_distance_transform(PDI::complement(flow), true);
+    PD::Voxel_grid<double> d(R, 0.);
+    for(std::size_t i = 0; i < d.size(); ++i) d[i] = flow[i] ? std::sqrt(d2[i]) / R : 0.;
+    z.flow_zone[rf] = flow;
+    z.flow_zone_distance[rf] = d;
+  }
+  return z;
+}
+
+PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d,
+                                              double tau, PD::Interior_weight_mode mode = PD::Interior_weight_mode::ONE_SHOT,
+                                              bool verbose = false)
+{
+  PD::Truncated_signed_distance_field tsdf;
+  tsdf.values = d;
+  tsdf.truncation = tau;
+  const PD::Fitting_zones zones = synthetic_zones(prior);
+  return PDI::fit_superquadrics_in_zones<CGAL::Sequential_tag, K>(
+    prior, tsdf, zones, {16, 32, 64}, {16, 32, 32}, {1., 0.5, 0.25}, 1.5, 5., 3., 5., 0.95, 8., mode, 256, true, true,
+    true, verbose);
+}
+
+} // namespace
+
+TEST_CASE("SDFSQFit: one primitive per lobe, none across a Freeze wall", "[sdfsqfit]")
+{
+  const int r = 64;
+  const double h = 1. / r, tau = 8. * h;
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  const auto z_to_x = rotation_matrix({{0., 1., 0.}}, CGAL_PI / 2.); // local z along world x
+  const auto z_to_y = rotation_matrix({{1., 0., 0.}}, -CGAL_PI / 2.); // local z along world y
+  struct Lobe { SQ shape; };
+  // lobes along x, joined by thin necks of radius two voxels; Freeze on the carrier at the necks
+  const SQ left({{0.15, 0.12, 0.12}}, 1., 1., I, Point(-0.22, 0., 0.));
+  const SQ right({{0.13, 0.11, 0.12}}, 0.2, 0.2, I, Point(0.2, 0., 0.));
+  const SQ neck({{0.03, 0.03, 0.08}}, 0.1, 1., z_to_x, Point(-0.01, 0., 0.));
+  const SQ top({{0.09, 0.09, 0.08}}, 0.5, 1., z_to_y, Point(0.2, 0.27, 0.));
+  const SQ neck2({{0.03, 0.03, 0.06}}, 0.1, 1., z_to_y, Point(0.2, 0.13, 0.));
+
+  for(int lobes : {2, 3})
+    for(auto mode : {PD::Interior_weight_mode::ONE_SHOT, PD::Interior_weight_mode::MPS_REESTIMATED})
+    {
+      std::vector<SQ> parts = {left, right, neck};
+      if(lobes == 3)
+      {
+        parts.push_back(top);
+        parts.push_back(neck2);
+      }
+      const PD::Voxel_grid<double> d = union_tsdf(parts, r, tau);
+      // walls: carrier voxels around the necks
+      auto is_freeze = [&](const std::array<double, 3>& c) {
+        const bool wall1 = c[0] > -0.09 && c[0] < 0.075 && std::abs(c[1]) < 0.06 && std::abs(c[2]) < 0.06;
+        const bool wall2 = lobes == 3 && c[1] > 0.1 && c[1] < 0.19 && std::abs(c[0] - 0.2) < 0.06 && std::abs(c[2]) < 0.06;
+        return wall1 || wall2;
+      };
+      const PD::Hierarchical_prior prior = synthetic_prior(d, is_freeze);
+      const auto res = run_fitter(prior, d, tau, mode);
+      std::vector<SQ> lobe_shapes = {left, right};
+      if(lobes == 3) lobe_shapes.push_back(top);
+      INFO(lobes << " lobes, mode " << int(mode) << ": " << res.primitives.size() << " primitives, "
+                 << res.number_of_seeds << " seeds, " << res.number_of_solves << " solves");
+      // each lobe: most of its voxels belong to one primitive centred in it
+      std::size_t big = 0;
+      for(std::size_t k = 0; k < res.primitives.size(); ++k)
+      {
+        std::size_t in_lobe[3] = {0, 0, 0};
+        for(std::size_t v : res.claimed_voxels[k])
+        {
+          const auto c = res.labels.center(v);
+          for(std::size_t l = 0; l < lobe_shapes.size(); ++l)
+            if(lobe_shapes[l].has_on_bounded_side_or_boundary(Point(c[0], c[1], c[2]))) ++in_lobe[l];
+        }
+        // no primitive claims voxels in two lobes (every path between lobes crosses a wall)
+        int lobes_touched = 0;
+        for(std::size_t l = 0; l < lobe_shapes.size(); ++l) lobes_touched += in_lobe[l] > 0 ? 1 : 0;
+        CHECK(lobes_touched <= 1);
+        for(std::size_t l = 0; l < lobe_shapes.size(); ++l)
+          if(double(in_lobe[l]) > 0.5 * lobe_shapes[l].volume() * r * r * r)
+          {
+            ++big;
+            CHECK(lobe_shapes[l].has_on_bounded_side_or_boundary(res.primitives[k].center()));
+          }
+      }
+      CHECK(big == lobe_shapes.size());
+      // labels never sit on Freeze or exterior voxels
+      const PD::Fitting_zones zones = synthetic_zones(prior);
+      for(std::size_t v = 0; v < res.labels.size(); ++v)
+        if(res.labels[v] >= 0) CHECK(zones.freeze_zone[v] == 0);
+      CHECK(res.number_of_solves > 0);
     }
 }
