@@ -21,63 +21,46 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// What one triangle (a,b,c) gives to each of its corners: the cotangent Laplacian terms
-// sum_j (cot opposite angle)(x_i - x_j) over its two edges at the corner, and the corner's
-// mixed Voronoi area (Meyer et al. 2003). A degenerate triangle gives nothing (returns false):
-// its cotangents are unbounded and its area is zero.
-struct Corner_terms
-{
-  std::array<Vec3, 3> laplacian;
-  std::array<double, 3> area;
-  Vec3 normal; // twice the area times the unit normal
-};
-
-inline bool triangle_corner_terms(const Vec3& a, const Vec3& b, const Vec3& c, Corner_terms& t)
+// What triangle (a,b,c) gives to its corner a: the cotangent Laplacian terms
+// cot(c)(a-b) + cot(b)(a-c) over its two edges at a, the mixed Voronoi area of a (Meyer et al.
+// 2003: Voronoi area if no angle is obtuse, else half the area at an obtuse a, a quarter
+// otherwise), and twice the area times the unit normal. A degenerate triangle gives nothing
+// (returns false): its cotangents are unbounded and its area is zero.
+inline bool corner_terms(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& laplacian, double& area, Vec3& normal)
 {
   double twice_area;
   if(is_degenerate_triangle(a, b, c, twice_area))
   {
-    t.laplacian[0] = t.laplacian[1] = t.laplacian[2] = Vec3{{0., 0., 0.}};
-    t.area = {{0., 0., 0.}};
-    t.normal = Vec3{{0., 0., 0.}};
+    laplacian = normal = Vec3{{0., 0., 0.}};
+    area = 0.;
     return false;
   }
   const Vec3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
-  t.normal = cross(ab, ac);
+  normal = cross(ab, ac);
   const double dot_a = dot(ab, ac);  // angle at a
   const double dot_b = -dot(ab, bc); // angle at b: (a-b).(c-b)
   const double dot_c = dot(ac, bc);  // angle at c: (a-c).(b-c)
-  const double cot_a = dot_a / twice_area, cot_b = dot_b / twice_area, cot_c = dot_c / twice_area;
-  for(int i = 0; i < 3; ++i)
-  {
-    // corner a: cot_c (a-b) + cot_b (a-c); corner b: cot_a (b-c) + cot_c (b-a);
-    // corner c: cot_b (c-a) + cot_a (c-b)
-    t.laplacian[0][i] = -cot_c * ab[i] - cot_b * ac[i];
-    t.laplacian[1][i] = -cot_a * bc[i] + cot_c * ab[i];
-    t.laplacian[2][i] = cot_b * ac[i] + cot_a * bc[i];
-  }
+  const double cot_b = dot_b / twice_area, cot_c = dot_c / twice_area;
+  for(int i = 0; i < 3; ++i) laplacian[i] = -cot_c * ab[i] - cot_b * ac[i];
   const double T = 0.5 * twice_area;
   if(dot_a < 0.)
-    t.area = {{T / 2, T / 4, T / 4}};
-  else if(dot_b < 0.)
-    t.area = {{T / 4, T / 2, T / 4}};
-  else if(dot_c < 0.)
-    t.area = {{T / 4, T / 4, T / 2}};
+    area = T / 2;
+  else if(dot_b < 0. || dot_c < 0.)
+    area = T / 4;
   else
-  {
-    const double lab = dot(ab, ab), lac = dot(ac, ac), lbc = dot(bc, bc);
-    t.area = {{(lac * cot_b + lab * cot_c) / 8, (lab * cot_c + lbc * cot_a) / 8,
-               (lbc * cot_a + lac * cot_b) / 8}};
-  }
+    area = (dot(ac, ac) * cot_b + dot(ab, ab) * cot_c) / 8;
   return true;
 }
 
 // Meyer's mixed Voronoi areas of the corners a, b, c of a triangle; they sum to its area.
 inline std::array<double, 3> mixed_voronoi_areas(const Vec3& a, const Vec3& b, const Vec3& c)
 {
-  Corner_terms t;
-  triangle_corner_terms(a, b, c, t);
-  return t.area;
+  std::array<double, 3> area;
+  Vec3 lap, n;
+  corner_terms(a, b, c, lap, area[0], n);
+  corner_terms(b, c, a, lap, area[1], n);
+  corner_terms(c, a, b, lap, area[2], n);
+  return area;
 }
 
 // The face corners incident to each vertex, in increasing face order (fixed summation order).
@@ -110,17 +93,11 @@ inline Vertex_corners make_vertex_corners(const Triangle_arrays& mesh)
 template <typename ConcurrencyTag>
 std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Vertex_corners& vc)
 {
-  const std::size_t nf = mesh.faces.size(), nv = mesh.points.size();
-  std::vector<Corner_terms> terms(nf);
-  for_each_block<ConcurrencyTag>(nf, 4096, [&](std::size_t begin, std::size_t end) {
-    for(std::size_t f = begin; f < end; ++f)
-    {
-      const auto& c = mesh.faces[f];
-      triangle_corner_terms(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], terms[f]);
-    }
-  });
+  const std::size_t nv = mesh.points.size();
   std::vector<double> kappa(nv, 0.);
-  for_each_block<ConcurrencyTag>(nv, 4096, [&](std::size_t begin, std::size_t end) {
+  // Each corner is computed where it is summed, from the points: a per-face table would be
+  // read in random face order and cost more in cache misses than the arithmetic.
+  for_each_block<ConcurrencyTag>(nv, 2048, [&](std::size_t begin, std::size_t end) {
     std::vector<std::uint32_t> ring;     // the neighbours seen, with
     std::vector<std::uint32_t> ring_use; // the number of incident faces holding that edge
     for(std::size_t v = begin; v < end; ++v)
@@ -131,18 +108,20 @@ std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Ve
       ring_use.clear();
       for(std::uint32_t i = vc.offsets[v]; i < vc.offsets[v + 1]; ++i)
       {
-        const std::uint32_t f = vc.corners[i] / 3;
+        const auto& face = mesh.faces[vc.corners[i] / 3];
         const int c = int(vc.corners[i] % 3);
-        const Corner_terms& t = terms[f];
+        const std::uint32_t w1 = face[(c + 1) % 3], w2 = face[(c + 2) % 3];
+        Vec3 l, n;
+        double a;
+        corner_terms(mesh.points[v], mesh.points[w1], mesh.points[w2], l, a, n);
         for(int d = 0; d < 3; ++d)
         {
-          lap[d] += t.laplacian[c][d];
-          normal[d] += t.normal[d];
+          lap[d] += l[d];
+          normal[d] += n[d];
         }
-        area += t.area[c];
-        for(int e = 1; e < 3; ++e)
+        area += a;
+        for(std::uint32_t w : {w1, w2})
         {
-          const std::uint32_t w = mesh.faces[f][(c + e) % 3];
           std::size_t s = 0;
           while(s < ring.size() && ring[s] != w) ++s;
           if(s == ring.size())
