@@ -128,9 +128,13 @@ int main(int argc, char** argv)
     for(std::size_t l = 0; l < prior.fields.size(); ++l)
       same = same && sequential.fields[l].score == prior.fields[l].score &&
              sequential.fields[l].threshold == prior.fields[l].threshold;
+    // Fusion never lets a Flow leaf cover a finest-level Freeze voxel.
+    const auto& finest = prior.fields.back().classes;
+    for(std::size_t v = 0; v < finest.size(); ++v)
+      same = same && (finest[v] != PD::Voxel_class::FREEZE || prior.classes[v] == PD::Voxel_class::FREEZE);
     if(!same)
     {
-      std::cerr << file << ": the parallel prior differs from the sequential one" << std::endl;
+      std::cerr << file << ": the parallel prior differs from the sequential one, or a finest Freeze voxel was lost" << std::endl;
       return EXIT_FAILURE;
     }
     std::string name = file.substr(file.find_last_of('/') + 1);

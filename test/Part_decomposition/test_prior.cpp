@@ -636,6 +636,7 @@ TEST_CASE("the prior of two boxes joined by a thin bar freezes the junctions", "
     CHECK((prior.leaf_resolution[v] != 0) == support);
     flow += prior.classes[v] == VC::FLOW;
     freeze += prior.classes[v] == VC::FREEZE;
+    if(prior.fields[2].classes[v] == VC::FREEZE) CHECK(prior.classes[v] == VC::FREEZE);
   }
   CHECK(flow > freeze);
   // Near each junction (where the bar meets a box: x = +-0.3, y = z = 0) a finest voxel is Freeze;

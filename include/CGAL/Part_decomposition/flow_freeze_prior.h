@@ -122,7 +122,9 @@ from fine to coarse: a parent that stays a leaf while one of its children splits
 split. A leaf carries the class it has at its own level, except a child of a forced parent,
 which carries the class its parent would have had as a leaf; at every level, a leaf that is
 empty at its own level carries nothing. A single level means no fusion: every non-empty voxel is
-a leaf.
+a leaf. The rules never let a Flow leaf cover a Freeze voxel of a finer level (a Flow parent with
+a Freeze child splits, and so does every ancestor of a split node): Freeze voxels of the finest
+grid stay Freeze; coarse Freeze leaves may turn finer Flow voxels into Freeze.
 
 These decisions drive one `CGAL::Octree` over \f$[-0.5,0.5]^3\f$ whose depth is that of the
 finest grid (the cells of depth \f$d\f$ are the voxels of the \f$2^d\f$ grid; above the
