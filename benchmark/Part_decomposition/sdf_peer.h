@@ -113,7 +113,7 @@ std::size_t orient_closed_components_outward(CGAL::Surface_mesh<Point>& mesh, st
 //   all (CGAL then crashes in the clustering): they are reoriented first. Our reader already
 //   orients closed components outward, so on its meshes this guard should never fire.
 // - k-means++ in CGAL 5.5.1 loops or reads out of bounds when the faces carry fewer distinct
-//   (log-normalized) SDF values than clusters (a tetrahedron, a cuboid): the cluster count is
+//   (log-normalized) SDF values than clusters (a tetrahedron, a regular octahedron): the cluster count is
 //   lowered to that number, and a mesh with a single value is one segment.
 template <typename Point>
 Sdf_peer_result segment_with_sdf(const CGAL::Surface_mesh<Point>& input)

@@ -313,6 +313,25 @@ TEST_CASE("the SDF peer survives the inputs on which CGAL 5.5.1 fails", "[sdf_pe
     CHECK(r.number_of_segments >= 1);
     CHECK((r.note.find("cluster") != std::string::npos || r.note.find("single segment") != std::string::npos));
   }
+  SECTION("an octahedron: eight faces but three distinct SDF values")
+  {
+    // Unguarded, CGAL 5.5.1 loops forever in k-means++ (Release) or fails an assertion.
+    test_shapes::Soup soup;
+    const Point px(1, 0, 0), nx(-1, 0, 0), py(0, 1, 0), ny(0, -1, 0), pz(0, 0, 1), nz(0, 0, -1);
+    soup.triangle(px, py, pz);
+    soup.triangle(py, nx, pz);
+    soup.triangle(nx, ny, pz);
+    soup.triangle(ny, px, pz);
+    soup.triangle(py, px, nz);
+    soup.triangle(nx, py, nz);
+    soup.triangle(ny, nx, nz);
+    soup.triangle(px, ny, nz);
+    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(soup.mesh());
+    CHECK(r.labels.size() == 8);
+    CHECK(r.distinct_sdf_values < 5);
+    CHECK(r.number_of_clusters == std::max<std::size_t>(1, r.distinct_sdf_values));
+    CHECK((r.note.find("clusters 5->") != std::string::npos || r.note.find("single segment") != std::string::npos));
+  }
   SECTION("a closed sphere whose faces point inward")
   {
     Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 2);
