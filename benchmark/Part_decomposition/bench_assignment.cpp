@@ -1,17 +1,27 @@
-// Patch counts and timings of the over-segmentation on a set of meshes.
-// Usage: bench_over_segmentation [--min-size F] [--max-size F] [--quantile Q] [--smoothing N] [--threads] mesh.off...
+// Over-segmentation and SQ-to-mesh assignment on a set of meshes: patch counts, timings (median
+// of 7 runs) and the purity of the patches against a ground truth, if one is found.
+//
+// Usage: bench_assignment [--min-size F] [--max-size F] [--quantile Q] [--smoothing N] [--threads]
+//                         mesh.off...
+// The ground truth of NAME.off is NAME_0.seg (Princeton benchmark) or NAME.seg. Purity is the
+// accuracy of the best labelling that is constant on each patch: an upper bound for the
+// assignment. The assignment is timed on a synthetic claimed grid (r = 64): the voxels whose
+// centre is inside the mesh, claimed by 8 primitives, one per octant around the centre.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
+#include <CGAL/Part_decomposition/primitive_assignment.h>
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
-#include <map>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,29 +29,98 @@ namespace PD = CGAL::Part_decomposition;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
-template <typename Tag>
-double run(const Mesh& m, std::vector<std::size_t>& label, double min_size, double max_size, double q, int smoothing,
-           PD::internal::Over_segmentation_statistics& st, std::size_t& count)
+namespace {
+
+template <typename F>
+double median_ms(const F& f)
 {
-  const auto fim = get(CGAL::face_index, m);
-  const auto np = PD::parameters::combine(PD::parameters::minimum_patch_size(min_size),
-                                          PD::parameters::maximum_patch_size(max_size),
-                                          PD::parameters::dihedral_quantile(q),
-                                          PD::parameters::smoothing_iterations(smoothing));
   std::vector<double> times;
-  for(int run = 0; run < 5; ++run)
+  for(int run = 0; run < 7; ++run)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    count = PD::internal::over_segment_labels<Tag>(m, fim, label, np, &st);
+    f();
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
 }
 
+PD::Voxel_grid<std::int32_t> synthetic_claims(const Mesh& m, const PD::Normalization& n)
+{
+  const int r = 64;
+  PD::Voxel_grid<std::int32_t> claimed(r, -1);
+  CGAL::Side_of_triangle_mesh<Mesh, K> inside(m);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  {
+    const auto u = claimed.center(idx);
+    const auto p = n.from_unit(u);
+    if(inside(K::Point_3(p[0], p[1], p[2])) != CGAL::ON_BOUNDED_SIDE) continue;
+    claimed[idx] = (u[0] > 0 ? 1 : 0) + (u[1] > 0 ? 2 : 0) + (u[2] > 0 ? 4 : 0);
+  }
+  return claimed;
+}
+
+double purity(const std::string& file, const std::vector<std::size_t>& label, std::size_t count)
+{
+  std::ifstream in(file.substr(0, file.size() - 4) + "_0.seg");
+  if(!in) in.open(file.substr(0, file.size() - 4) + ".seg");
+  std::vector<int> truth;
+  int v;
+  while(in >> v) truth.push_back(v);
+  if(truth.size() != label.size()) return -1.;
+  std::vector<std::map<int, std::size_t> > hist(count);
+  for(std::size_t i = 0; i < label.size(); ++i) ++hist[label[i]][truth[i]];
+  std::size_t good = 0;
+  for(const auto& h : hist)
+  {
+    std::size_t best = 0;
+    for(const auto& e : h) best = (std::max)(best, e.second);
+    good += best;
+  }
+  return double(good) / double(label.size());
+}
+
+template <typename Tag>
+void run(const std::string& file, double min_size, double max_size, double q, int smoothing,
+         std::vector<double>& counts, std::vector<double>& purities)
+{
+  Mesh m;
+  PD::IO::read_triangle_mesh(file, m);
+  const auto fim = get(CGAL::face_index, m);
+  const auto np = PD::parameters::combine(PD::parameters::minimum_patch_size(min_size),
+                                          PD::parameters::maximum_patch_size(max_size),
+                                          PD::parameters::dihedral_quantile(q),
+                                          PD::parameters::smoothing_iterations(smoothing));
+  std::vector<std::size_t> label;
+  PD::internal::Over_segmentation_statistics st;
+  std::size_t count = 0;
+  const double ms_over = median_ms([&] { count = PD::internal::over_segment_labels<Tag>(m, fim, label, np, &st); });
+
+  const PD::Normalization n = PD::compute_normalization(m);
+  const PD::Voxel_grid<std::int32_t> claimed = synthetic_claims(m, n);
+  auto patch = m.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  auto part = m.add_property_map<Mesh::Face_index, std::size_t>("f:part", 0).first;
+  for(auto f : faces(m)) patch[f] = label[std::size_t(f)];
+  std::size_t parts = 0;
+  const double ms_assign = median_ms([&] { parts = PD::assign_parts<Tag>(m, patch, claimed, n, part).size(); });
+  std::size_t claimed_count = 0;
+  for(std::int32_t l : claimed.values()) claimed_count += l >= 0;
+
+  const double p = purity(file, label, count);
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  std::cout << name << ' ' << num_faces(m) << ' ' << st.threshold << ' ' << st.number_of_cut_edges << ' '
+            << st.number_of_components << ' ' << st.number_of_split_patches << ' '
+            << st.number_of_merged_patches << ' ' << st.number_of_smoothed_faces << ' ' << count << ' ' << p
+            << ' ' << ms_over << ' ' << claimed_count << ' ' << parts << ' ' << ms_assign << '\n';
+  counts.push_back(double(count));
+  if(p >= 0.) purities.push_back(p);
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
-  double min_size = 0.001, max_size = 0.0025, q = 90.;
+  double min_size = 0.001, max_size = 0.003, q = 90.;
   int smoothing = 1;
   bool parallel = false;
   std::vector<std::string> files;
@@ -55,62 +134,30 @@ int main(int argc, char** argv)
     else if(a == "--threads") parallel = true;
     else files.push_back(a);
   }
-  std::cout << "mesh faces threshold_deg cut_edges components after_split after_cleanup smoothed A median_ms\n";
-  std::vector<double> counts, purity;
+  std::cout << "mesh faces threshold_deg cut_edges components after_split after_cleanup smoothed A purity"
+               " over_segment_ms claimed_voxels parts assign_ms\n";
+  std::vector<double> counts, purities;
   for(const std::string& file : files)
   {
-    Mesh m;
-    PD::IO::read_triangle_mesh(file, m);
-    std::vector<std::size_t> label;
-    PD::internal::Over_segmentation_statistics st;
-    std::size_t count = 0;
-    double ms = 0.;
 #ifdef CGAL_LINKED_WITH_TBB
-    if(parallel) ms = run<CGAL::Parallel_tag>(m, label, min_size, max_size, q, smoothing, st, count);
+    if(parallel)
+      run<CGAL::Parallel_tag>(file, min_size, max_size, q, smoothing, counts, purities);
     else
 #endif
-      ms = run<CGAL::Sequential_tag>(m, label, min_size, max_size, q, smoothing, st, count);
-    const std::string name = file.substr(file.find_last_of('/') + 1);
-    std::cout << name << ' ' << num_faces(m) << ' ' << st.threshold << ' ' << st.number_of_cut_edges << ' '
-              << st.number_of_components << ' ' << st.number_of_split_patches << ' ' << st.number_of_merged_patches << ' '
-              << st.number_of_smoothed_faces << ' ' << count << ' ' << ms << '\n';
-    counts.push_back(double(count));
-    // Purity against the first human segmentation, if any: the accuracy of the best labelling
-    // that is constant on each patch (an upper bound for the assignment).
-    const std::string seg = file.substr(0, file.size() - 4) + "_0.seg";
-    std::ifstream in(seg);
-    if(in)
-    {
-      std::vector<int> truth;
-      int v;
-      while(in >> v) truth.push_back(v);
-      if(truth.size() == label.size())
-      {
-        std::vector<std::map<int, std::size_t> > hist(count);
-        for(std::size_t i = 0; i < label.size(); ++i) ++hist[label[i]][truth[i]];
-        std::size_t good = 0;
-        for(const auto& h : hist)
-        {
-          std::size_t best = 0;
-          for(const auto& e : h) best = (std::max)(best, e.second);
-          good += best;
-        }
-        purity.push_back(double(good) / double(label.size()));
-      }
-    }
+      run<CGAL::Sequential_tag>(file, min_size, max_size, q, smoothing, counts, purities);
   }
   if(!counts.empty())
   {
     std::sort(counts.begin(), counts.end());
     std::cout << "A: min " << counts.front() << " median " << counts[counts.size() / 2] << " max "
               << counts.back() << '\n';
-  if(!purity.empty())
+  }
+  if(!purities.empty())
   {
     double sum = 0.;
-    for(double p : purity) sum += p;
-    std::sort(purity.begin(), purity.end());
-    std::cout << "purity vs _0.seg: mean " << sum / double(purity.size()) << " min " << purity.front() << '\n';
-  }
+    for(double p : purities) sum += p;
+    std::sort(purities.begin(), purities.end());
+    std::cout << "purity: mean " << sum / double(purities.size()) << " min " << purities.front() << '\n';
   }
   return EXIT_SUCCESS;
 }

@@ -32,6 +32,9 @@ namespace internal {
 
 // Edges whose dihedral angle is at most this many degrees are flat and never cut.
 constexpr double flat_dihedral_angle = 0.05;
+// The squared radius of gyration of a piece built by the size cap is at most this fraction of
+// the cap area (a disk of the cap area has 1/(2 pi) = 0.16): pieces stay compact.
+constexpr double patch_gyration_ratio = 0.2;
 // Angles this close (degrees) to the quantile count as equal to it: rounding must not decide
 // whether a crease of a rotated cube is cut.
 constexpr double dihedral_tie_tolerance = 1e-6;
@@ -113,7 +116,7 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
   const double min_size =
       choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), 0.001);
   const double max_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), 0.0025);
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), 0.003);
   const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), 1);
   if(!(q >= 0. && q <= 100.))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_quantile must be in [0, 100]");
@@ -156,8 +159,8 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
   double total_area = 0.;
   for(double a : adj.area) total_area += a;
   std::size_t patches = components;
-  if(max_size < 1.) patches = split_large_patches(adj, cut, label, components, max_size * total_area,
-                                                   flat_dihedral_angle);
+  if(max_size < 1.) patches = split_large_patches<ConcurrencyTag>(adj, cut, label, components, max_size * total_area,
+                                                   patch_gyration_ratio, flat_dihedral_angle);
   const std::size_t split = patches;
   merge_small_patches(adj, label, patches, min_size * total_area);
   std::size_t merged = 0;
@@ -213,10 +216,12 @@ The steps are:
 5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
    flood fill alone leaves one patch over most of an organic shape (measured: 1 to 55 patches on
    the Princeton benchmark shapes, where the paper reports 200 to 500). A component larger than
-   `maximum_patch_size` times the area of the mesh is split by an ordered flood fill: its uncut
-   edges are crossed by increasing dihedral angle, joining the two sides unless the joined area
-   would exceed the cap, so that pieces meet along the locally sharpest edges. Flat edges
-   ($s \le 0.05$ degree) are always crossed: a planar region is never split.
+   `maximum_patch_size` (\f$a_{max}\f$) times the area of the mesh is split by an ordered flood
+   fill: its uncut edges are crossed by increasing dihedral angle, joining the two sides unless
+   the joined piece would have an area above \f$a_{max}\f$ or a squared radius of gyration (of
+   its face centroids, area-weighted) above \f$0.2\,a_{max}\f$, so that compact pieces meet
+   along the locally sharpest edges. Flat edges (\f$s \le 0.05\f$ degree) are always crossed: a
+   planar region is never split.
 6. <b>Fragment clean-up.</b> A patch whose area is below `minimum_patch_size` times the area of the
    mesh is merged into the neighbouring patch across its weakest shared edge (the one of smallest
    dihedral angle; on a tie, the neighbour of smallest area, then of smallest id), the smallest
@@ -230,7 +235,7 @@ The steps are:
 The result does not depend on the number of threads.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the dihedral
-        angles and the smoothing run in parallel.
+        angles, the sort of the size cap and the smoothing run in parallel.
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam FacePatchMap a model of `WritablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as
@@ -277,7 +282,7 @@ The result does not depend on the number of threads.
     \cgalParamDescription{the largest patch area the size cap lets the ordered flood fill build,
                           as a fraction of the area of the mesh; `1` disables the cap}
     \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.0025` (about 400 patches on organic shapes)}
+    \cgalParamDefault{`0.003` (about 400 to 500 patches on organic shapes)}
   \cgalParamNEnd
   \cgalParamNBegin{smoothing_iterations}
     \cgalParamDescription{the number of boundary-smoothing passes}

@@ -12,38 +12,34 @@
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
-#include <boost/iterator/counting_iterator.hpp>
-
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// Nearest claimed voxel centre (label >= 0) of a point of the normalized cube, exact.
-// A point inside a claimed voxel is nearest to that voxel's centre (the Voronoi cells of the
-// centres are the voxels). Otherwise the nearest claimed centre has a face neighbour that is not
-// claimed (or lies on the grid border): from an interior claimed voxel, the face neighbour
-// towards the point is strictly nearer. So the kd-tree holds only those boundary voxels.
+// Nearest claimed voxel centre (label >= 0) of a point, exact up to ties. Most points are
+// answered from the 27 voxels around them. The others go to a kd-tree that holds only the
+// claimed voxels with a face neighbour that is not claimed (or on the grid border): for a point
+// outside a claimed voxel, the face neighbour of an interior claimed voxel towards the point is
+// strictly nearer, so an interior voxel is never the nearest.
 class Claimed_voxel_search
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef K::Point_3 Point;
-  typedef CGAL::Search_traits_3<K> Base_traits;
-  typedef CGAL::Pointer_property_map<Point>::const_type Point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
-  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Search;
+  typedef CGAL::Search_traits_3<K> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
   typedef Search::Tree Tree;
 
 public:
@@ -60,7 +56,6 @@ public:
     m_any = false;
     const int r = claimed.resolution();
     m_points.clear();
-    m_labels.clear();
     for(std::size_t idx = 0; idx < claimed.size(); ++idx)
     {
       if(claimed[idx] < 0) continue;
@@ -77,14 +72,10 @@ public:
       if(!boundary) continue;
       const std::array<double, 3> p = claimed.center(idx);
       m_points.push_back(Point(p[0], p[1], p[2]));
-      m_labels.push_back(claimed[idx]);
     }
     m_tree.reset();
     if(m_points.empty()) return;
-    const Point_map pmap(m_points.data());
-    m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
-                          boost::counting_iterator<std::size_t>(m_points.size()),
-                          typename Tree::Splitter(), Traits(pmap)));
+    m_tree.reset(new Tree(m_points.begin(), m_points.end()));
     // Built before the concurrent queries (a lazy build is not thread-safe).
     m_tree->template build<ConcurrencyTag>();
   }
@@ -96,25 +87,58 @@ public:
   Result nearest(const std::array<double, 3>& u) const
   {
     Result out;
-    const double lo = -0.5, hi = 0.5;
-    if(u[0] >= lo && u[0] <= hi && u[1] >= lo && u[1] <= hi && u[2] >= lo && u[2] <= hi)
+    const Voxel_grid<std::int32_t>& g = *m_grid;
+    if(u[0] >= -0.5 && u[0] <= 0.5 && u[1] >= -0.5 && u[1] <= 0.5 && u[2] >= -0.5 && u[2] <= 0.5)
     {
-      const std::array<int, 3> v = m_grid->locate(u[0], u[1], u[2]);
-      const std::int32_t l = (*m_grid)(v[0], v[1], v[2]);
-      if(l >= 0)
+      const int r = g.resolution();
+      const double h = g.voxel_size();
+      const std::int32_t* values = g.values().data();
+      const std::array<int, 3> v = g.locate(u[0], u[1], u[2]);
+      auto offset = [&](int a, int i) { return u[a] - (-0.5 + (double(i) + 0.5) * h); };
+      // The voxel of u, if claimed, holds the nearest centre (the voxels are the Voronoi cells).
+      const std::int32_t own = values[std::size_t(v[0]) + std::size_t(r) * (std::size_t(v[1]) + std::size_t(r) * std::size_t(v[2]))];
+      if(own >= 0)
       {
-        const std::array<double, 3> c = m_grid->center(v[0], v[1], v[2]);
-        out.label = l;
-        out.distance = std::sqrt((u[0] - c[0]) * (u[0] - c[0]) + (u[1] - c[1]) * (u[1] - c[1]) +
-                                 (u[2] - c[2]) * (u[2] - c[2]));
+        const double dx = offset(0, v[0]), dy = offset(1, v[1]), dz = offset(2, v[2]);
+        out.label = own;
+        out.distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+        return out;
+      }
+      // Else the 26 voxels around it: a centre beyond them is at least 1.5 voxels away, so a
+      // claimed centre found within 1.5 voxels is the nearest (the first one on a tie).
+      double best = std::numeric_limits<double>::infinity();
+      std::int32_t label = -1;
+      const int i0 = (std::max)(v[0] - 1, 0), i1 = (std::min)(v[0] + 1, r - 1);
+      const int j0 = (std::max)(v[1] - 1, 0), j1 = (std::min)(v[1] + 1, r - 1);
+      const int k0 = (std::max)(v[2] - 1, 0), k1 = (std::min)(v[2] + 1, r - 1);
+      for(int k = k0; k <= k1; ++k)
+      {
+        const double dz = offset(2, k);
+        for(int j = j0; j <= j1; ++j)
+        {
+          const double dy = offset(1, j);
+          const std::int32_t* row = values + std::size_t(r) * (std::size_t(j) + std::size_t(r) * std::size_t(k));
+          for(int i = i0; i <= i1; ++i)
+          {
+            if(row[i] < 0) continue;
+            const double dx = offset(0, i);
+            const double d = dx * dx + dy * dy + dz * dz;
+            if(d < best) best = d, label = row[i];
+          }
+        }
+      }
+      if(label >= 0 && best <= 2.25 * h * h)
+      {
+        out.label = label;
+        out.distance = std::sqrt(best);
         return out;
       }
     }
-    const Point_map pmap(m_points.data());
-    Search search(*m_tree, Point(u[0], u[1], u[2]), 1, 0, true, Distance(pmap));
-    const auto it = search.begin();
-    out.label = m_labels[it->first];
-    out.distance = std::sqrt(it->second);
+    Search search(*m_tree, Point(u[0], u[1], u[2]), 1);
+    const std::pair<Point, double> nn = *search.begin(); // a copy: the iterator yields temporaries
+    const std::array<int, 3> v = g.locate(nn.first.x(), nn.first.y(), nn.first.z()); // its voxel
+    out.label = g(v[0], v[1], v[2]);
+    out.distance = std::sqrt(nn.second);
     return out;
   }
 
@@ -125,7 +149,6 @@ private:
   const Voxel_grid<std::int32_t>* m_grid = nullptr;
   bool m_any = false;
   std::vector<Point> m_points;
-  std::vector<std::int32_t> m_labels;
   std::unique_ptr<Tree> m_tree;
 };
 

@@ -59,6 +59,7 @@ struct Face_adjacency
   std::vector<std::size_t> neighbor; // face across each slot, no_face on a border
   std::vector<double> angle;         // dihedral angle (degrees) across each slot, 0 on a border
   std::vector<double> area;          // per face
+  std::vector<double> centroid;      // 3 per face, relative to a vertex of the mesh
   std::vector<std::uint8_t> degenerate; // per face: zero or non-finite normal
 };
 
@@ -93,9 +94,19 @@ Face_adjacency build_face_adjacency(
   adj.neighbor.assign(3 * nf, Face_adjacency::no_face);
   adj.angle.assign(3 * nf, 0.);
   adj.area.assign(nf, 0.);
+  adj.centroid.assign(3 * nf, 0.);
   adj.degenerate.assign(nf, 0);
   std::vector<double> normal(3 * nf, 0.);
 
+  // Centroids relative to a vertex of the mesh: moments of far-off meshes stay accurate.
+  double origin[3] = {0., 0., 0.};
+  if(nf > 0)
+  {
+    const auto& p = get(vpm, target(halfedge(face_of[0], tm), tm));
+    origin[0] = CGAL::to_double(p.x());
+    origin[1] = CGAL::to_double(p.y());
+    origin[2] = CGAL::to_double(p.z());
+  }
   const auto vector_3 = gt.construct_vector_3_object();
   const auto cross = gt.construct_cross_product_vector_3_object();
   chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
@@ -107,6 +118,9 @@ Face_adjacency build_face_adjacency(
       const auto& p0 = get(vpm, source(h, tm));
       const auto& p1 = get(vpm, target(h, tm));
       const auto& p2 = get(vpm, target(next(h, tm), tm));
+      adj.centroid[3 * i + 0] = (CGAL::to_double(p0.x()) + CGAL::to_double(p1.x()) + CGAL::to_double(p2.x())) / 3. - origin[0];
+      adj.centroid[3 * i + 1] = (CGAL::to_double(p0.y()) + CGAL::to_double(p1.y()) + CGAL::to_double(p2.y())) / 3. - origin[1];
+      adj.centroid[3 * i + 2] = (CGAL::to_double(p0.z()) + CGAL::to_double(p1.z()) + CGAL::to_double(p2.z())) / 3. - origin[2];
       const auto n = cross(vector_3(p0, p1), vector_3(p0, p2));
       const double c[3] = {CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())};
       const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);

@@ -10,6 +10,10 @@
 
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -17,6 +21,7 @@
 #include <cstring>
 #include <functional>
 #include <queue>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -74,13 +79,16 @@ inline std::size_t renumber_by_first_face(std::vector<std::size_t>& label)
 
 // Splits every patch of area above `max_area` by an ordered flood fill: its uncut edges are
 // crossed by increasing dihedral angle (ties: slot order), joining the two sides unless the
-// joined area would exceed `max_area` (Kruskal with a size cap), so that pieces meet along the
-// locally sharpest edges. Flat edges (angle <= `flat_angle`) are always crossed: a planar region
-// is never split. Patches not above `max_area` are unchanged. On output the labels are
-// renumbered by first face; returns their number.
-inline std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std::uint8_t>& cut,
+// joined piece would have an area above `max_area` or a squared radius of gyration (area-weighted,
+// of the face centroids) above `gyration_ratio * max_area` (Kruskal with a size and shape cap),
+// so that compact pieces meet along the locally sharpest edges. Without the shape cap, pieces
+// follow the directions of least curvature and grow into long strips. Flat edges (angle <=
+// `flat_angle`) are always crossed: a planar region is never split. Patches not above `max_area`
+// are unchanged. On output the labels are renumbered by first face; returns their number.
+template <typename ConcurrencyTag>
+std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std::uint8_t>& cut,
                                        std::vector<std::size_t>& label, std::size_t number_of_patches,
-                                       double max_area, double flat_angle)
+                                       double max_area, double gyration_ratio, double flat_angle)
 {
   const std::size_t nf = adj.number_of_faces;
   std::vector<double> patch_area(number_of_patches, 0.);
@@ -111,7 +119,13 @@ inline std::size_t split_large_patches(const Face_adjacency& adj, const std::vec
       }
     }
   }
-  std::sort(edges.begin(), edges.end());
+  // Keys are unique: any sort gives the same order.
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    tbb::parallel_sort(edges.begin(), edges.end());
+  else
+#endif
+    std::sort(edges.begin(), edges.end());
 
   std::vector<std::size_t> parent(nf);
   std::vector<double> area(adj.area);
@@ -122,14 +136,37 @@ inline std::size_t split_large_patches(const Face_adjacency& adj, const std::vec
     while(parent[p] != r) { const std::size_t n = parent[p]; parent[p] = r; p = n; }
     return r;
   };
+  // Area-weighted first and second moments of the face centroids of each piece.
+  std::vector<double> moment(4 * nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    const double* c = &adj.centroid[3 * i];
+    const double a = adj.area[i];
+    moment[4 * i + 0] = a * c[0];
+    moment[4 * i + 1] = a * c[1];
+    moment[4 * i + 2] = a * c[2];
+    moment[4 * i + 3] = a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  }
+  const double max_gyration = gyration_ratio * max_area;
   for(const std::uint64_t key : edges)
   {
     const std::size_t slot = std::size_t(key & 0xffffffffu);
     const std::size_t a = find(slot / 3), b = find(adj.neighbor[slot]);
-    if(a == b || (area[a] + area[b] > max_area && adj.angle[slot] > flat_angle)) continue;
+    if(a == b) continue;
+    const bool flat = adj.angle[slot] <= flat_angle;
+    const double sum = area[a] + area[b];
+    if(!flat && sum > max_area) continue;
+    double m[4];
+    for(int c = 0; c < 4; ++c) m[c] = moment[4 * a + c] + moment[4 * b + c];
+    if(!flat && sum > 0.)
+    {
+      const double g = m[3] / sum - (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / (sum * sum);
+      if(g > max_gyration) continue;
+    }
     const std::size_t r = (std::min)(a, b), s = (std::max)(a, b);
     parent[s] = r;
-    area[r] += area[s];
+    area[r] = sum;
+    for(int c = 0; c < 4; ++c) moment[4 * r + c] = m[c];
   }
   // Pieces of split patches get ids after the unchanged ones; renumbering orders them all.
   for(std::size_t i = 0; i < nf; ++i)
