@@ -65,8 +65,9 @@ std::vector<std::size_t> morton_order(const std::vector<Point>& points)
 //
 // The search runs on the centroids of the non-degenerate faces only (a zero-area face has no
 // normal, so it is nobody's neighbour). k+1 neighbours are asked for and f itself is removed;
-// if f is not among them (another face has the same centroid), the farthest one (larger index
-// among equal distances) is dropped, so a duplicated face counts its twin as a neighbour. Ties at the k-th distance are
+// if f is not among them (another face has the same centroid), the farthest one (the later in
+// Morton order among equal distances) is dropped, so a duplicated face counts its twin as a
+// neighbour. Ties at the k-th distance are
 // broken by the kd-tree's traversal order: deterministic for a given mesh, and independent of the
 // number of threads since queries do not interact. A degenerate face takes the mean phi of its k
 // nearest non-degenerate faces (0 if the mesh has none).
@@ -88,26 +89,39 @@ std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size
   std::vector<double> phi(nf, 0.);
   if(nf == 0) return phi;
 
-  std::vector<Point> centroid(nf);
-  std::vector<Vec3> normal(nf, Vec3{{0., 0., 0.}});
-  std::vector<std::uint8_t> degenerate(nf, 0);
-  std::vector<std::size_t> keys;
-  keys.reserve(nf);
+  std::vector<Point> face_centroid(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
     const Vec3& a = mesh.points[mesh.faces[f][0]];
     const Vec3& b = mesh.points[mesh.faces[f][1]];
     const Vec3& c = mesh.points[mesh.faces[f][2]];
-    centroid[f] = Point((a[0] + b[0] + c[0]) / 3., (a[1] + b[1] + c[1]) / 3., (a[2] + b[2] + c[2]) / 3.);
+    face_centroid[f] = Point((a[0] + b[0] + c[0]) / 3., (a[1] + b[1] + c[1]) / 3., (a[2] + b[2] + c[2]) / 3.);
+  }
+  // Everything below works on Morton ranks: the tree, the queries and the neighbours' normals
+  // then walk memory in space order (~35% faster than face order). Each face's result depends on
+  // that face alone, so the order changes no value.
+  const std::vector<std::size_t> order = morton_order(face_centroid);
+  std::vector<Point> centroid(nf);
+  std::vector<Vec3> normal(nf, Vec3{{0., 0., 0.}});
+  std::vector<std::uint8_t> degenerate(nf, 0);
+  std::vector<std::size_t> keys;
+  keys.reserve(nf);
+  for(std::size_t q = 0; q < nf; ++q)
+  {
+    const std::size_t f = order[q];
+    centroid[q] = face_centroid[f];
+    const Vec3& a = mesh.points[mesh.faces[f][0]];
+    const Vec3& b = mesh.points[mesh.faces[f][1]];
+    const Vec3& c = mesh.points[mesh.faces[f][2]];
     double twice_area;
     if(is_degenerate_triangle(a, b, c, twice_area))
     {
-      degenerate[f] = 1;
+      degenerate[q] = 1;
       continue;
     }
     const Vec3 n = cross(sub(b, a), sub(c, a));
-    normal[f] = {{n[0] / twice_area, n[1] / twice_area, n[2] / twice_area}};
-    keys.push_back(f);
+    normal[q] = {{n[0] / twice_area, n[1] / twice_area, n[2] / twice_area}};
+    keys.push_back(q);
   }
   if(keys.empty()) return phi;
 
@@ -118,28 +132,24 @@ std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size
   const Distance distance(pmap);
   const double to_right_angles = 2. / std::acos(-1.);
 
-  // Queries in Morton order: consecutive queries walk the same tree nodes (~35% faster). Each
-  // face's result depends on that face alone, so the order changes no value.
-  const std::vector<std::size_t> order = morton_order(centroid);
-
+  std::vector<double> phi_rank(nf, 0.);
   for_each_block<ConcurrencyTag>(nf, 1024, [&](std::size_t begin, std::size_t end) {
     std::vector<std::pair<std::size_t, double> > nb;
     nb.reserve(k + 1);
     for(std::size_t q = begin; q < end; ++q)
     {
-      const std::size_t f = order[q];
-      if(degenerate[f]) continue;
+      if(degenerate[q]) continue;
       nb.clear();
       // Unsorted: only the set matters, and the one to drop is found below.
-      Knn search(tree, centroid[f], static_cast<unsigned int>(k + 1), 0., true, distance, false);
+      Knn search(tree, centroid[q], static_cast<unsigned int>(k + 1), 0., true, distance, false);
       for(auto it = search.begin(); it != search.end(); ++it) nb.emplace_back(it->first, it->second);
       if(nb.empty()) continue;
       std::size_t drop = nb.size();
       for(std::size_t i = 0; i < nb.size(); ++i)
-        if(nb[i].first == f) drop = i;
+        if(nb[i].first == q) drop = i;
       if(drop == nb.size() && nb.size() > k)
       {
-        drop = 0; // the farthest, the larger index among equals
+        drop = 0; // the farthest, the larger rank among equals
         for(std::size_t i = 1; i < nb.size(); ++i)
           if(nb[i].second > nb[drop].second || (nb[i].second == nb[drop].second && nb[i].first > nb[drop].first))
             drop = i;
@@ -149,28 +159,29 @@ std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size
       for(std::size_t i = 0; i < nb.size(); ++i)
       {
         if(i == drop) continue;
-        const double d = (std::max)(-1., (std::min)(1., dot(normal[f], normal[nb[i].first])));
-        s += std::acos(d);
+        const double d = dot(normal[q], normal[nb[i].first]);
+        s += d < 1. ? std::acos((std::max)(-1., d)) : 0.;
         ++n;
       }
-      if(n > 0) phi[f] = to_right_angles * s / double(n);
+      if(n > 0) phi_rank[q] = to_right_angles * s / double(n);
     }
   });
 
   if(keys.size() < nf)
   {
     for_each_block<ConcurrencyTag>(nf, 1024, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t f = begin; f < end; ++f)
+      for(std::size_t q = begin; q < end; ++q)
       {
-        if(!degenerate[f]) continue;
-        Knn search(tree, centroid[f], static_cast<unsigned int>(k), 0., true, distance, false);
+        if(!degenerate[q]) continue;
+        Knn search(tree, centroid[q], static_cast<unsigned int>(k), 0., true, distance, false);
         double s = 0.;
         std::size_t n = 0;
-        for(auto it = search.begin(); it != search.end(); ++it, ++n) s += phi[it->first];
-        phi[f] = n ? s / double(n) : 0.;
+        for(auto it = search.begin(); it != search.end(); ++it, ++n) s += phi_rank[it->first];
+        phi_rank[q] = n ? s / double(n) : 0.;
       }
     });
   }
+  for(std::size_t q = 0; q < nf; ++q) phi[order[q]] = phi_rank[q];
   return phi;
 }
 
