@@ -459,6 +459,43 @@ TEST_CASE("without claimed voxels all faces form one part", "[assignment]")
                   PD::Invalid_input);
 }
 
+TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "[assignment][data]")
+{
+  // The dumbbell is the union of two balls (radius 0.3 at x = -0.7 and 0.7) and a bar (capsule of
+  // radius 0.1 between them); its .seg holds the true part of each face (0, 1, 2 from left).
+  Mesh m;
+  const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/dumbbell";
+  PD::IO::read_triangle_mesh(base + ".off", m);
+  std::ifstream in(base + ".seg");
+  std::vector<std::size_t> truth;
+  std::size_t l;
+  while(in >> l) truth.push_back(l);
+  REQUIRE(truth.size() == num_faces(m));
+
+  // Claimed voxels: the inside of each primitive (the balls win over the bar), at r = 64.
+  const PD::Normalization n = PD::compute_normalization(m);
+  PD::Voxel_grid<std::int32_t> claimed(64, -1);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  {
+    const auto p = n.from_unit(claimed.center(idx));
+    const double yz = p[1] * p[1] + p[2] * p[2];
+    if((p[0] + 0.7) * (p[0] + 0.7) + yz < 0.09) claimed[idx] = 10;
+    else if((p[0] - 0.7) * (p[0] - 0.7) + yz < 0.09) claimed[idx] = 30;
+    else if(std::abs(p[0]) < 0.7 && yz < 0.01) claimed[idx] = 20;
+  }
+  auto patch = m.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
+  auto part = m.add_property_map<face_descriptor, std::size_t>("f:part", 0).first;
+  const std::size_t count = PD::over_segment(m, patch);
+  check_patch_structure(m, std::vector<std::size_t>(patch.begin(), patch.end()), count);
+  CHECK(count >= 200);
+  CHECK(count <= 800);
+  const std::vector<std::size_t> prim = PD::assign_parts(m, patch, claimed, n, part);
+  CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
+  std::size_t correct = 0;
+  for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
+  CHECK(double(correct) / double(num_faces(m)) > 0.97);
+}
+
 TEST_CASE("the shipped example meshes load and carry one label per face", "[data]")
 {
   const std::map<std::string, std::pair<int, int> > expected = {
