@@ -99,9 +99,10 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
     if(patch_area[p] > max_area) large[p] = 1, any = true;
   if(!any) return renumber_by_first_face(label);
 
-  // Sort keys: the angle as a float (its bits order like the value for angles >= 0) above the
-  // slot, so that equal floats fall back to the slot order and every key is unique.
-  CGAL_precondition(3 * nf <= std::size_t(0xffffffffu));
+  // Sort keys: the angle as a float (its bits order like the value for angles >= 0), then the
+  // slot, then whether the edge is flat: every key is unique and equal floats fall back to the
+  // slot order.
+  CGAL_precondition(3 * nf < (std::size_t(1) << 31));
   std::vector<std::uint64_t> edges;
   edges.reserve(3 * nf / 2);
   for(std::size_t i = 0; i < nf; ++i)
@@ -112,10 +113,12 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j != Face_adjacency::no_face && j > i && !cut[3 * i + k])
       {
-        const float a = float(adj.angle[3 * i + k]);
+        const double angle = adj.angle[3 * i + k];
+        const float a = float(angle);
         std::uint32_t bits;
         std::memcpy(&bits, &a, sizeof bits);
-        edges.push_back((std::uint64_t(bits) << 32) | std::uint64_t(3 * i + k));
+        edges.push_back((std::uint64_t(bits) << 32) | (std::uint64_t(3 * i + k) << 1) |
+                        std::uint64_t(angle <= flat_angle ? 1 : 0));
       }
     }
   }
@@ -127,50 +130,50 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
 #endif
     std::sort(edges.begin(), edges.end());
 
-  std::vector<std::size_t> parent(nf);
-  std::vector<double> area(adj.area);
-  for(std::size_t i = 0; i < nf; ++i) parent[i] = i;
-  auto find = [&](std::size_t p) {
-    std::size_t r = p;
-    while(parent[r] != r) r = parent[r];
-    while(parent[p] != r) { const std::size_t n = parent[p]; parent[p] = r; p = n; }
-    return r;
-  };
-  // Area-weighted first and second moments of the face centroids of each piece.
-  std::vector<double> moment(4 * nf);
+  // Union-find over faces; each root holds the area and the area-weighted first and second
+  // moments of the face centroids of its piece (one record: one cache miss per root).
+  struct Piece { double area, mx, my, mz, m2; };
+  std::vector<std::uint32_t> parent(nf);
+  std::vector<Piece> piece(nf);
   for(std::size_t i = 0; i < nf; ++i)
   {
+    parent[i] = std::uint32_t(i);
     const double* c = &adj.centroid[3 * i];
     const double a = adj.area[i];
-    moment[4 * i + 0] = a * c[0];
-    moment[4 * i + 1] = a * c[1];
-    moment[4 * i + 2] = a * c[2];
-    moment[4 * i + 3] = a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    piece[i] = Piece{a, a * c[0], a * c[1], a * c[2], a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2])};
   }
+  auto find = [&](std::uint32_t p) {
+    std::uint32_t r = p;
+    while(parent[r] != r) r = parent[r];
+    while(parent[p] != r) { const std::uint32_t n = parent[p]; parent[p] = r; p = n; }
+    return r;
+  };
   const double max_gyration = gyration_ratio * max_area;
   for(const std::uint64_t key : edges)
   {
-    const std::size_t slot = std::size_t(key & 0xffffffffu);
-    const std::size_t a = find(slot / 3), b = find(adj.neighbor[slot]);
+    const std::size_t slot = std::size_t((key >> 1) & 0x7fffffffu);
+    const bool flat = (key & 1u) != 0;
+    const std::uint32_t a = find(std::uint32_t(slot / 3)), b = find(std::uint32_t(adj.neighbor[slot]));
     if(a == b) continue;
-    const bool flat = adj.angle[slot] <= flat_angle;
-    const double sum = area[a] + area[b];
-    if(!flat && sum > max_area) continue;
-    double m[4];
-    for(int c = 0; c < 4; ++c) m[c] = moment[4 * a + c] + moment[4 * b + c];
-    if(!flat && sum > 0.)
+    const Piece& pa = piece[a];
+    const Piece& pb = piece[b];
+    const Piece m{pa.area + pb.area, pa.mx + pb.mx, pa.my + pb.my, pa.mz + pb.mz, pa.m2 + pb.m2};
+    if(!flat)
     {
-      const double g = m[3] / sum - (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / (sum * sum);
-      if(g > max_gyration) continue;
+      if(m.area > max_area) continue;
+      if(m.area > 0.)
+      {
+        const double g = m.m2 / m.area - (m.mx * m.mx + m.my * m.my + m.mz * m.mz) / (m.area * m.area);
+        if(g > max_gyration) continue;
+      }
     }
-    const std::size_t r = (std::min)(a, b), s = (std::max)(a, b);
+    const std::uint32_t r = (std::min)(a, b), s = (std::max)(a, b);
     parent[s] = r;
-    area[r] = sum;
-    for(int c = 0; c < 4; ++c) moment[4 * r + c] = m[c];
+    piece[r] = m;
   }
   // Pieces of split patches get ids after the unchanged ones; renumbering orders them all.
   for(std::size_t i = 0; i < nf; ++i)
-    if(large[label[i]]) label[i] = number_of_patches + find(i);
+    if(large[label[i]]) label[i] = number_of_patches + find(std::uint32_t(i));
   return renumber_by_first_face(label);
 }
 
