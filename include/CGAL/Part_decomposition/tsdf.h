@@ -9,22 +9,63 @@
 #define CGAL_PART_DECOMPOSITION_TSDF_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
+#include <CGAL/Part_decomposition/internal/closest_triangle_tree.h>
+#include <CGAL/Part_decomposition/internal/winding_number.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-How the sign of the distance field is decided.
+How the sign of the distance field is decided, i.e.\ which voxel centres are inside the shape.
+
+The \em surface voxels below are the voxels whose (closed) box meets a triangle.
+
+- `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
+  number of times. Exact for closed meshes; meaningless for open ones, and a region covered
+  twice by self-intersecting parts counts as outside.
+- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al. 2013); a point is
+  inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
+  (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
+  integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
+  open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
+  the surface voxels and of their 6-neighbours, and the other voxels take, by a flood fill that
+  does not cross surface voxels, the sign of the nearest evaluated voxel: holes are bridged as
+  the winding number bridges them. Needs a consistent orientation of each connected part.
+- `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
+  outside, and so are the surface voxels whose centre is joined to an outside centre by a chain
+  of at most three segments between adjacent voxel centres that meet no triangle; all other
+  voxels are inside. Ignores orientation; seals holes smaller than a voxel but leaks through
+  larger ones; closed hollow shells become solid.
+- `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
+  no costly self-intersection test, and robust on open ones.
 */
 enum class Tsdf_sign_method
 {
-  AUTOMATIC,      ///< `INSIDE_TEST` for closed meshes without self-intersection, `WINDING_NUMBER` otherwise
-  INSIDE_TEST,    ///< exact inside test by ray parity (closed, consistently oriented meshes only)
-  WINDING_NUMBER, ///< generalized winding number near the surface, exterior flood fill elsewhere
-  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels only
+  AUTOMATIC,      ///< `WINDING_NUMBER`
+  INSIDE_TEST,    ///< ray parity (closed meshes only)
+  WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
+  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels
 };
 
 /*!
@@ -44,6 +85,352 @@ struct Truncated_signed_distance_field
   /// the sign method actually used (never `AUTOMATIC`).
   Tsdf_sign_method sign_method = Tsdf_sign_method::AUTOMATIC;
 };
+
+namespace internal {
+
+// Inside flags by the generalized winding number evaluated at the surface voxels and their
+// 6-neighbours (the "evaluated" voxels), then spread to the other voxels by a breadth-first flood
+// fill through non-surface voxels from the evaluated ones, in linear-index order.
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_points>& tris,
+                                                   const Surface_voxels& sv, int r)
+{
+  const std::size_t R = std::size_t(r), size = R * R * R;
+  const Voxel_grid<std::uint8_t>& S = sv.mask;
+  std::vector<std::uint8_t> inside(size, 0), known(size, 0);
+  std::vector<std::size_t> evaluated;
+  for(std::size_t idx = 0; idx < size; ++idx)
+  {
+    bool near = S[idx] != 0;
+    if(!near)
+    {
+      const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
+      near = (i > 0 && S[idx - 1]) || (i + 1 < R && S[idx + 1]) || (j > 0 && S[idx - R]) ||
+             (j + 1 < R && S[idx + R]) || (k > 0 && S[idx - R * R]) || (k + 1 < R && S[idx + R * R]);
+    }
+    if(near) evaluated.push_back(idx);
+  }
+  const Fast_winding_number wn(tris);
+  parallel_ranges<ConcurrencyTag>(evaluated.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t n = b; n < e; ++n)
+    {
+      const std::size_t idx = evaluated[n];
+      const std::array<double, 3> c = S.center(idx);
+      inside[idx] = std::abs(wn(c)) > 0.5 ? 1 : 0;
+      known[idx] = 1;
+    }
+  });
+  std::vector<std::size_t> queue;
+  queue.reserve(size / 2);
+  for(std::size_t idx : evaluated)
+    if(S[idx] == 0) queue.push_back(idx);
+  for(std::size_t head = 0; head < queue.size(); ++head)
+  {
+    const std::size_t idx = queue[head];
+    const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
+    auto visit = [&](std::size_t n) {
+      if(known[n] == 0 && S[n] == 0)
+      {
+        known[n] = 1;
+        inside[n] = inside[idx];
+        queue.push_back(n);
+      }
+    };
+    if(i > 0) visit(idx - 1);
+    if(i + 1 < R) visit(idx + 1);
+    if(j > 0) visit(idx - R);
+    if(j + 1 < R) visit(idx + R);
+    if(k > 0) visit(idx - R * R);
+    if(k + 1 < R) visit(idx + R * R);
+  }
+  return inside;
+}
+
+// Inside flags by flood fill: outside = the non-surface voxels connected to the border, plus the
+// surface voxels whose centre is joined to an outside centre by a chain of at most three segments
+// between 6-adjacent centres that meet no triangle. A segment between adjacent centres lies in the
+// two voxels, so only their triangles are tested. The short chains reach the centres lying outside
+// in the layers of surface voxels (a surface running along voxel faces marks two layers), while a
+// hole smaller than a voxel can only let the outside leak three voxels deep.
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points>& tris,
+                                               const Surface_voxels& sv, int r)
+{
+  const std::size_t R = std::size_t(r), size = R * R * R;
+  const Voxel_grid<std::uint8_t>& S = sv.mask;
+  const Voxel_grid<std::uint8_t> exterior = border_connected_complement(S);
+  std::vector<std::size_t> surface;
+  for(std::size_t idx = 0; idx < size; ++idx)
+    if(S[idx] != 0) surface.push_back(idx);
+  typedef CGAL::Epick::Point_3 P;
+  auto point = [](const Vec3& p) { return P(p[0], p[1], p[2]); };
+  auto meets_triangles_of = [&](const CGAL::Epick::Segment_3& seg, std::size_t voxel) {
+    for(std::size_t t = sv.offsets[voxel]; t < sv.offsets[voxel + 1]; ++t)
+    {
+      const Triangle_points& T = tris[sv.triangles[t]];
+      if(CGAL::do_intersect(seg, CGAL::Epick::Triangle_3(point(T[0]), point(T[1]), point(T[2])))) return true;
+    }
+    return false;
+  };
+  // reached[v] = the length of the shortest chain found from an exterior voxel (exterior: 0).
+  const std::uint8_t unreached = 255;
+  std::vector<std::uint8_t> reached(size, unreached);
+  for(std::size_t idx = 0; idx < size; ++idx)
+    if(exterior[idx] != 0) reached[idx] = 0;
+  for(std::uint8_t depth = 1; depth <= 3; ++depth)
+  {
+    std::vector<std::uint8_t> next = reached;
+    parallel_ranges<ConcurrencyTag>(surface.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t n = b; n < e; ++n)
+      {
+        const std::size_t idx = surface[n];
+        if(reached[idx] != unreached) continue;
+        const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
+        const std::size_t neighbours[6] = {i > 0 ? idx - 1 : size,     i + 1 < R ? idx + 1 : size,
+                                           j > 0 ? idx - R : size,     j + 1 < R ? idx + R : size,
+                                           k > 0 ? idx - R * R : size, k + 1 < R ? idx + R * R : size};
+        const P c = point(S.center(idx));
+        for(std::size_t nb : neighbours)
+        {
+          if(nb == size || reached[nb] != depth - 1) continue;
+          const CGAL::Epick::Segment_3 seg(c, point(S.center(nb)));
+          if(meets_triangles_of(seg, idx) || (S[nb] != 0 && meets_triangles_of(seg, nb))) continue;
+          next[idx] = depth;
+          break;
+        }
+      }
+    });
+    reached.swap(next);
+  }
+  std::vector<std::uint8_t> inside(size, 0);
+  for(std::size_t idx = 0; idx < size; ++idx) inside[idx] = reached[idx] == unreached ? 1 : 0;
+  return inside;
+}
+
+// Unsigned distances (normalized units, clipped to `tau`) at the voxel centres that can be closer
+// than `tau` to the surface, `tau` elsewhere. The distance from a centre to the surface is at least
+// its distance to the nearest surface-voxel centre minus half a voxel diagonal: beyond
+// tau + sqrt(3)/2 voxels nothing is queried. Each query is an exact closest-triangle search whose
+// initial bound is the distance to the closest triangle of the previous voxel of the row, or to the
+// triangles of the nearest surface voxel. Rows are processed whole by one thread, so the result
+// does not depend on the thread count.
+template <typename ConcurrencyTag>
+Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>& tris,
+                                             const Surface_voxels& sv, int r, double tau)
+{
+  const std::size_t R = std::size_t(r);
+  const double h = 1. / double(r);
+  Voxel_grid<std::size_t> nearest;
+  const Voxel_grid<double> d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest);
+  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
+  const double reach2 = reach * reach;
+  const Closest_triangle_tree tree(tris);
+
+  Voxel_grid<double> out(r, tau);
+  const double tau2 = tau * tau;
+  parallel_ranges<ConcurrencyTag>(R * R, [&](std::size_t b, std::size_t e) {
+    for(std::size_t row = b; row < e; ++row)
+    {
+      bool has_previous = false;
+      std::uint32_t previous = 0;
+      for(std::size_t i = 0; i < R; ++i)
+      {
+        const std::size_t idx = i + R * row;
+        if(!(d2[idx] < reach2))
+        {
+          has_previous = false;
+          continue;
+        }
+        const Vec3 c = out.center(idx);
+        double bound2 = std::numeric_limits<double>::infinity();
+        std::uint32_t bound_triangle = 0;
+        auto try_triangle = [&](std::uint32_t t) {
+          const double d = squared_distance_to_triangle(c, tris[t][0], tris[t][1], tris[t][2]);
+          if(d < bound2 || (d == bound2 && t < bound_triangle))
+          {
+            bound2 = d;
+            bound_triangle = t;
+          }
+        };
+        if(has_previous)
+          try_triangle(previous);
+        else
+        {
+          const std::size_t v = nearest[idx];
+          for(std::size_t k = sv.offsets[v]; k < sv.offsets[v + 1]; ++k) try_triangle(sv.triangles[k]);
+        }
+        // Nothing beyond tau matters: the search is cut there.
+        const bool capped = !(bound2 < tau2);
+        if(capped) bound2 = tau2;
+        const std::pair<std::uint32_t, double> best = tree.closest(c, bound2, bound_triangle);
+        has_previous = best.second < tau2 || !capped;
+        previous = best.first;
+        out[idx] = (std::min)(std::sqrt(best.second), tau);
+      }
+    }
+  });
+  return out;
+}
+
+// The `normalization` named parameter, computed only when absent.
+template <typename TriangleMesh, typename NamedParameters>
+Normalization normalization_or_default(const CGAL::internal_np::Param_not_found&, const TriangleMesh& tm,
+                                       const NamedParameters& np)
+{
+  return compute_normalization(tm, np);
+}
+template <typename TriangleMesh, typename NamedParameters>
+Normalization normalization_or_default(const Normalization& normalization, const TriangleMesh&,
+                                       const NamedParameters&)
+{
+  return normalization;
+}
+
+// Inside flags of the voxel centres by `method` (never AUTOMATIC).
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> inside_flags(const std::vector<Triangle_points>& tris, bool closed,
+                                       Tsdf_sign_method method, const Surface_voxels& sv, int r)
+{
+  switch(method)
+  {
+  case Tsdf_sign_method::INSIDE_TEST:
+    return inside_from_rows(row_crossings<ConcurrencyTag>(tris, r), r, true);
+  case Tsdf_sign_method::FLOOD_FILL:
+    return inside_by_flood_fill<ConcurrencyTag>(tris, sv, r);
+  default:
+    if(closed) return inside_from_rows(row_crossings<ConcurrencyTag>(tris, r), r, false);
+    return inside_by_winding_number<ConcurrencyTag>(tris, sv, r);
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the truncated signed distance field \f$d_\mathcal{M}\f$ of `tm` (paper App. E.2) at the
+voxel centres of the finest grid of the method, in the normalized cube: the Euclidean distance to
+the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$.
+
+Distances are exact (closest triangle in a bounding volume hierarchy) wherever they can be below
+\f$\tau\f$; elsewhere only the sign is computed and the value is \f$\pm\tau\f$. Every voxel
+carries its sign, deep interior voxels hold \f$-\tau\f$. How the sign is decided is described
+in `Tsdf_sign_method`. The computation is done in double precision on the normalized
+coordinates of the vertices.
+
+\tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
+        `CGAL::Sequential_tag`, `CGAL::Parallel_tag`, and `CGAL::Parallel_if_available_tag`.
+        The result does not depend on it nor on the number of threads.
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh; it may be open, non-manifold, self-intersecting, made of several
+          components, with components of any orientation
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class; only its point type is used
+                          (coordinates are read with `CGAL::to_double()`)}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization}
+    \cgalParamDescription{the map from input coordinates to the normalized cube
+                          \f$[-0.5,0.5]^3\f$ in which the grid lives}
+    \cgalParamType{`CGAL::Part_decomposition::Normalization`}
+    \cgalParamDefault{`compute_normalization(tm, np)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization_margin}
+    \cgalParamDescription{passed to `compute_normalization()` when no `normalization` is given}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`2.0/64`}
+  \cgalParamNEnd
+  \cgalParamNBegin{voxel_resolutions}
+    \cgalParamDescription{the resolutions of the method; the TSDF grid has the largest one}
+    \cgalParamType{a range of `int`, each in `[2, 1024]`}
+    \cgalParamDefault{`std::vector<int>{16, 32, 64}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tsdf_truncation}
+    \cgalParamDescription{\f$\tau\f$ in voxels of the TSDF grid (paper Table A.1: \f$8\Delta^{(64)}\f$)}
+    \cgalParamType{`double`, positive}
+    \cgalParamDefault{`8.0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tsdf_sign_method}
+    \cgalParamDescription{how the sign is decided}
+    \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
+    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `tm` lies inside the normalized cube once normalized (the default normalization ensures it).
+\pre `tm` has no garbage (`Surface_mesh` after removals: call `collect_garbage()`).
+
+\returns the field, its truncation in normalized units, the normalization and the sign method used.
+
+\throws Invalid_input (see `check_input()`) if `tm` has no face, a face that is not a triangle,
+        a non-finite coordinate or no extent, and with `Input_error::INVALID_PARAMETER` if a
+        resolution or the truncation is out of range.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Truncated_signed_distance_field compute_tsdf(const TriangleMesh& tm,
+                                             const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+
+  check_input(tm, np);
+
+  int r = 0;
+  {
+    // A copy: get_parameter() returns a temporary that choose_parameter() would refer to.
+    const auto resolutions = choose_parameter(get_parameter(np, internal_np::voxel_resolutions), std::vector<int>{16, 32, 64});
+    bool any = false;
+    for(const auto& v : resolutions)
+    {
+      if(!(int(v) >= 2 && int(v) <= 1024))
+        throw Invalid_input(Input_error::INVALID_PARAMETER, "voxel_resolutions must be in [2, 1024]");
+      r = (std::max)(r, int(v));
+      any = true;
+    }
+    if(!any) throw Invalid_input(Input_error::INVALID_PARAMETER, "voxel_resolutions must not be empty");
+  }
+  const double truncation_voxels = choose_parameter(get_parameter(np, internal_np::tsdf_truncation), 8.0);
+  if(!(truncation_voxels > 0. && truncation_voxels <= 4. * r))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "tsdf_truncation must be in (0, 4 * resolution]");
+  Tsdf_sign_method method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method),
+                                             Tsdf_sign_method::AUTOMATIC);
+  if(method == Tsdf_sign_method::AUTOMATIC) method = Tsdf_sign_method::WINDING_NUMBER;
+
+  Truncated_signed_distance_field out;
+  out.normalization = internal::normalization_or_default(get_parameter(np, internal_np::normalization), tm, np);
+  out.truncation = truncation_voxels / double(r);
+  out.sign_method = method;
+
+  const std::vector<internal::Triangle_points> tris = internal::normalized_triangles(tm, vpm, out.normalization);
+  const bool closed = internal::faces_form_closed_surface(tm);
+  const internal::Surface_voxels sv = internal::surface_voxels<ConcurrencyTag>(tris, r);
+  const std::vector<std::uint8_t> inside = internal::inside_flags<ConcurrencyTag>(tris, closed, method, sv, r);
+  out.values = internal::clipped_unsigned_distance<ConcurrencyTag>(tris, sv, r, out.truncation);
+  for(std::size_t i = 0; i < out.values.size(); ++i)
+    if(inside[i]) out.values[i] = -out.values[i];
+  return out;
+}
+
 
 } // namespace Part_decomposition
 } // namespace CGAL
