@@ -9,10 +9,18 @@
 #define CGAL_PART_DECOMPOSITION_FITTING_ZONES_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/grid_morphology.h>
 
+#include <CGAL/tags.h>
+
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -37,6 +45,100 @@ struct Fitting_zones
   /// Flow zone to the nearest voxel outside it; 0 outside the zone.
   std::map<int, Voxel_grid<double> > flow_zone_distance;
 };
+
+/*!
+\ingroup PkgPartDecompositionRef
+builds the volumetric zones of the superquadric fitter (paper App. E.2 (A.1), Alg. A.2 lines 1-4)
+from the fused Flow/Freeze classes on the finest grid, of resolution `r = classes.resolution()`:
+
+- `occupied` = `FLOW` or `FREEZE` voxels;
+- `exterior` (`ext_void`) = the complement of `fillholes(occupied)`: the voxels joined to the grid
+  border by a 6-connected path of unoccupied voxels;
+- `freeze_zone` = `FREEZE` voxels or `exterior` (`exterior` only if `use_freeze_zone` is `false`);
+- for each \f$r_{fit}\f$ of `fitting_resolutions`: `flow_zone[r_fit]` = the voxels whose centre is
+  within \f$t \cdot r / r_{fit}\f$ voxels (Euclidean, between voxel centres) of a non-exterior voxel,
+  \f$t\f$ being the Flow-zone tolerance in voxels of \f$r_{fit}\f$; and `flow_zone_distance[r_fit]`
+  = the Euclidean distance, in normalized units, from the centre of each voxel of the Flow zone to
+  the centre of the nearest voxel outside it (the layer just outside the grid counts as outside),
+  0 outside the zone.
+
+The morphology is exact (linear-time Euclidean distance transforms) and deterministic.
+
+\tparam ConcurrencyTag enables sequential versus parallel computation (`CGAL::Sequential_tag`,
+        `CGAL::Parallel_tag`, `CGAL::Parallel_if_available_tag`); the result does not depend on it.
+\tparam NamedParameters a sequence of named parameters
+
+\param classes the class of every voxel of the finest grid (the hierarchical prior projected on it)
+\param fitting_resolutions the fitting resolutions \f$r_{fit}\f$ (paper: \f$\min(r, 32)\f$ for
+       \f$r \in \{16, 32, 64\}\f$, i.e. 16 and 32)
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{flow_zone_tolerance}
+    \cgalParamDescription{the dilation of the Flow zone, in voxels of each fitting resolution
+                          (paper Table A.1: \f$2\Delta^{r_{fit}}\f$)}
+    \cgalParamType{`double`, non-negative}
+    \cgalParamDefault{`2.0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_freeze_zone}
+    \cgalParamDescription{whether `FREEZE` voxels belong to the Freeze zone; `false` leaves the
+                          exterior only (the paper's "w/o Freeze" ablation)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the zones; `flow_zone` and `flow_zone_distance` have one entry per distinct fitting
+          resolution.
+
+\throws Invalid_input with `Input_error::INVALID_PARAMETER` if a fitting resolution is not
+        positive or the tolerance is negative or not finite.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes,
+                                    const std::vector<int>& fitting_resolutions,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::flow_zone_tolerance), 2.0);
+  const bool use_freeze = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), true);
+  if(!(tolerance >= 0. && std::isfinite(tolerance)))
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "flow_zone_tolerance must be finite and non-negative");
+  for(int r_fit : fitting_resolutions)
+    if(r_fit <= 0) throw Invalid_input(Input_error::INVALID_PARAMETER, "fitting resolutions must be positive");
+
+  const int r = classes.resolution();
+  Fitting_zones zones;
+  zones.occupied = Voxel_grid<std::uint8_t>(r, 0);
+  for(std::size_t i = 0; i < classes.size(); ++i)
+    zones.occupied[i] = classes[i] != Voxel_class::EMPTY ? 1 : 0;
+  zones.exterior = internal::border_connected_complement(zones.occupied);
+  zones.freeze_zone = zones.exterior;
+  if(use_freeze)
+    for(std::size_t i = 0; i < classes.size(); ++i)
+      if(classes[i] == Voxel_class::FREEZE) zones.freeze_zone[i] = 1;
+
+  const Voxel_grid<std::uint8_t> hull = internal::complement(zones.exterior);
+  for(int r_fit : fitting_resolutions)
+  {
+    if(zones.flow_zone.count(r_fit) != 0) continue;
+    const double radius = tolerance * double(r) / double(r_fit);
+    Voxel_grid<std::uint8_t> flow = internal::dilate<ConcurrencyTag>(hull, radius);
+    const Voxel_grid<double> d2 = internal::squared_distance_transform<ConcurrencyTag>(internal::complement(flow), true);
+    Voxel_grid<double> distance(r, 0.);
+    for(std::size_t i = 0; i < distance.size(); ++i)
+      if(flow[i] != 0) distance[i] = std::sqrt(d2[i]) / double(r);
+    zones.flow_zone.emplace(r_fit, std::move(flow));
+    zones.flow_zone_distance.emplace(r_fit, std::move(distance));
+  }
+  return zones;
+}
 
 } // namespace Part_decomposition
 } // namespace CGAL
