@@ -567,28 +567,9 @@ PD::Hierarchical_prior synthetic_prior(const PD::Voxel_grid<double>& tsdf, const
   return prior;
 }
 
-// The zones of App. E.2 (A.1) from the classes, built with the package's grid operations.
-PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior, bool use_freeze = true)
+PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior)
 {
-  const int R = prior.classes.resolution();
-  PD::Fitting_zones z;
-  z.occupied = PD::Voxel_grid<std::uint8_t>(R, 0);
-  for(std::size_t i = 0; i < z.occupied.size(); ++i) z.occupied[i] = prior.classes[i] != PD::Voxel_class::EMPTY;
-  z.exterior = PDI::complement(PDI::fill_holes(z.occupied));
-  z.freeze_zone = z.exterior;
-  if(use_freeze)
-    for(std::size_t i = 0; i < z.occupied.size(); ++i)
-      if(prior.classes[i] == PD::Voxel_class::FREEZE) z.freeze_zone[i] = 1;
-  for(int rf : {16, 32})
-  {
-    const PD::Voxel_grid<std::uint8_t> flow = PDI::dilate(PDI::complement(z.exterior), 2. * R / rf);
-    const PD::Voxel_grid<double> d2 = PDI::squared_distance_transform(PDI::complement(flow), true);
-    PD::Voxel_grid<double> d(R, 0.);
-    for(std::size_t i = 0; i < d.size(); ++i) d[i] = flow[i] ? std::sqrt(d2[i]) / R : 0.;
-    z.flow_zone[rf] = flow;
-    z.flow_zone_distance[rf] = d;
-  }
-  return z;
+  return PD::compute_fitting_zones(prior.classes, {16, 32});
 }
 
 PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d,
@@ -672,4 +653,77 @@ TEST_CASE("SDFSQFit: one primitive per lobe, none across a Freeze wall", "[sdfsq
         if(res.labels[v] >= 0) CHECK(zones.freeze_zone[v] == 0);
       CHECK(res.number_of_solves > 0);
     }
+}
+
+TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism", "[sdfsqfit]")
+{
+  const int r = 64;
+  const double h = 1. / r, tau = 8. * h;
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  const auto z_to_x = rotation_matrix({{0., 1., 0.}}, CGAL_PI / 2.);
+  const std::vector<SQ> parts = {SQ({{0.15, 0.12, 0.12}}, 1., 1., I, Point(-0.22, 0., 0.)),
+                                 SQ({{0.13, 0.11, 0.12}}, 0.2, 0.2, I, Point(0.2, 0., 0.)),
+                                 SQ({{0.03, 0.03, 0.08}}, 0.1, 1., z_to_x, Point(-0.01, 0., 0.))};
+  const PD::Voxel_grid<double> d = union_tsdf(parts, r, tau);
+  PD::Hierarchical_prior prior = synthetic_prior(d, [](const std::array<double, 3>& c) {
+    return c[0] > -0.09 && c[0] < 0.075 && std::abs(c[1]) < 0.06 && std::abs(c[2]) < 0.06;
+  });
+  prior.normalization = PD::Normalization({{1., 2., 3.}}, 0.5);
+  PD::Truncated_signed_distance_field tsdf;
+  tsdf.values = d;
+  tsdf.truncation = tau;
+
+  const auto seq = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf);
+  REQUIRE(seq.primitives.size() >= 2);
+  CHECK(seq.primitives.size() == seq.input_primitives.size());
+  CHECK(seq.primitives.size() == seq.claimed_voxels.size());
+  CHECK(seq.stage_resolution.size() == seq.primitives.size());
+  CHECK(seq.number_of_solves >= seq.primitives.size());
+  CHECK(seq.stage_coverage.size() == 3);
+  for(std::size_t k = 0; k < seq.primitives.size(); ++k)
+  {
+    // input coordinates through the normalization
+    const auto c = prior.normalization.from_unit({{CGAL::to_double(seq.primitives[k].center().x()),
+                                                   CGAL::to_double(seq.primitives[k].center().y()),
+                                                   CGAL::to_double(seq.primitives[k].center().z())}});
+    CHECK(seq.input_primitives[k].center().x() == Approx(c[0]));
+    CHECK(seq.input_primitives[k].scales()[0] == Approx(seq.primitives[k].scales()[0] / 0.5));
+    for(std::size_t v : seq.claimed_voxels[k]) CHECK(seq.labels[v] == int(k));
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  // bit-identical with threads
+  const auto par = PD::fit_superquadrics<CGAL::Parallel_tag, K>(prior, tsdf);
+  CHECK(par.labels == seq.labels);
+  REQUIRE(par.primitives.size() == seq.primitives.size());
+  for(std::size_t k = 0; k < seq.primitives.size(); ++k)
+  {
+    CHECK(par.primitives[k].scales() == seq.primitives[k].scales());
+    CHECK(par.primitives[k].rotation() == seq.primitives[k].rotation());
+    CHECK(par.primitives[k].center() == seq.primitives[k].center());
+  }
+  CHECK(par.number_of_evaluations == seq.number_of_evaluations);
+#endif
+
+  namespace P = PD::parameters;
+  // ablations run and keep their guarantees
+  const auto no_body = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_body_seeds(false));
+  CHECK(no_body.number_of_body_seeds == 0);
+  CHECK(no_body.primitives.size() >= 1);
+  const auto no_tsdf = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_tsdf_guidance(false));
+  CHECK(no_tsdf.primitives.size() >= 1);
+  const auto no_freeze = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_freeze_zone(false));
+  CHECK(no_freeze.primitives.size() >= 1);
+  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, {16, 32});
+  for(const auto* res : {&no_body, &no_tsdf, &no_freeze})
+    for(std::size_t v = 0; v < res->labels.size(); ++v)
+      if(res->labels[v] >= 0) CHECK(zones.exterior[v] == 0);
+  // the cap holds
+  const auto capped = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::maximum_number_of_primitives(1));
+  CHECK(capped.primitives.size() == 1);
+  // bad parameters throw in every build type
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::trust_region_scales(std::vector<double>{})), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::coverage_target(1.5)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::roi_radius(0.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::maximum_number_of_primitives(std::size_t(0))), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::exterior_penalty(-1.)), PD::Invalid_input);
 }

@@ -116,8 +116,10 @@ struct Sdfsqfit_options
   bool exterior_band_samples = true; // exterior voxels of the 1.5-voxel band as non-claimable evidence
   bool connected_regions = true;     // ROI and claims restricted to the seed's side of Freeze walls
   std::size_t maximum_samples = 4096; // above this, samples are taken on a lattice of stride 2 or 4
-  double surface_test_spacing = 0.5; // Flow-zone test sample spacing, in finest voxels
+  double surface_test_spacing = 1.;  // Flow-zone test sample spacing, in finest voxels (the zone
+                                     // tolerance is >= 4 of them)
   int maximum_evaluations = 40;      // per least-squares solve
+  double function_tolerance = 1e-8;  // relative gain below which a solve stops
 };
 
 // Stamped marks: O(1) clearing between seeds.
@@ -196,6 +198,23 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     }
   }
 
+  // wall-clock breakdown, printed when verbose
+  double t_setup = 0., t_seed = 0., t_roi = 0., t_fit = 0., t_test = 0., t_claim = 0., t_merge = 0.;
+  auto clock = [] { return std::chrono::steady_clock::now(); };
+  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  std::vector<std::size_t> exterior_band_voxels;
+  for(std::size_t v = 0; v < N; ++v)
+    if(exterior_band[v]) exterior_band_voxels.push_back(v);
+  // 2 on the stride-4 lattice, 1 on the stride-2 lattice, else 0
+  std::vector<std::uint8_t> lattice_level(N, 0);
+  for(std::size_t v = 0; v < N; ++v)
+  {
+    const std::size_t i = v % RR, j = (v / RR) % RR, k = v / (RR * RR);
+    const std::size_t o = i | j | k;
+    lattice_level[v] = (o & 3) == 0 ? 2 : ((o & 1) == 0 ? 1 : 0);
+  }
   Fit_sdf_workspace workspace;
   Fit_samples samples;
   Stamp_set reach, claim_mark;
@@ -224,6 +243,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     const std::size_t vmin_body = std::size_t(std::ceil(body_volume * scale3 - 1e-9));
     const std::size_t vmin_surface = std::size_t(std::ceil(surface_volume * scale3 - 1e-9));
 
+    auto t0 = clock();
     // Omega_valid = {R_map <= r} \ Omega_freeze (R_map = 0 inside: valid from the first stage),
     // Omega_spec = {R_map > r}; Omega_Body = Omega_valid \ (claimed u freeze).
     std::size_t n_valid = 0, n_covered = 0;
@@ -243,6 +263,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     Voxel_grid<std::uint8_t> not_body(R, 0);
     for(std::size_t v = 0; v < N; ++v) not_body[v] = body[v] ? 0 : 1;
     Voxel_grid<double> body_sqd = squared_distance_transform<ConcurrencyTag>(not_body);
+    t_setup += seconds_since(t0);
 
     std::size_t seeds_this_stage = 0;
     const std::size_t seed_cap = 16 * (std::max<std::size_t>)(maximum_primitives, 16);
@@ -250,6 +271,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
           result.primitives.size() < maximum_primitives && seeds_this_stage < seed_cap)
     {
       // ---- BodyOrSurfaceSeed (A.2-A.4)
+      t0 = clock();
       std::size_t seed = N;
       double seed_sqd = 0.;
       {
@@ -290,6 +312,8 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
             if(d < best_d) best_d = d, seed = v;
           }
       }
+      t_seed += seconds_since(t0);
+      t0 = clock();
       ++seeds_this_stage;
       ++result.number_of_seeds;
       if(body_seed) ++result.number_of_body_seeds;
@@ -318,12 +342,11 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       // ---- ROI and samples (Alg. A.2 lines 10-11, B.1)
       const std::array<double, 3> s = prior.classes.center(seed);
       const std::array<int, 3> sijk = prior.classes.coordinates(seed);
-      const int ball = int(std::ceil(rho / delta));
-      auto in_ball = [&](std::size_t v) {
-        const std::array<int, 3> c = prior.classes.coordinates(v);
-        const double d2 = double((c[0] - sijk[0]) * (c[0] - sijk[0]) + (c[1] - sijk[1]) * (c[1] - sijk[1]) +
-                                 (c[2] - sijk[2]) * (c[2] - sijk[2]));
-        return d2 * delta * delta <= rho * rho;
+      const double ball_r2 = (rho / delta) * (rho / delta) * (1. + 1e-12);
+      auto in_ball = [&](int i, int j, int k) {
+        const double d2 = double((i - sijk[0]) * (i - sijk[0]) + (j - sijk[1]) * (j - sijk[1]) +
+                                 (k - sijk[2]) * (k - sijk[2]));
+        return d2 <= ball_r2;
       };
       roi_voxels.clear();
       reach.reset(N);
@@ -337,24 +360,31 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
         {
           const std::size_t v = queue[head];
           if(valid[v] && labels[v] < 0) roi_voxels.push_back(v);
-          for_each_neighbor(v, [&](std::size_t n) {
-            if(!reach.contains(n) && !freeze[n] && labels[n] < 0 && in_ball(n))
+          const int i = int(v % RR), j = int((v / RR) % RR), k = int(v / (RR * RR));
+          auto visit = [&](std::size_t n, int ni, int nj, int nk) {
+            if(!reach.contains(n) && !freeze[n] && labels[n] < 0 && in_ball(ni, nj, nk))
             {
               reach.insert(n);
               queue.push_back(n);
             }
-          });
+          };
+          if(i > 0) visit(v - 1, i - 1, j, k);
+          if(i + 1 < R) visit(v + 1, i + 1, j, k);
+          if(j > 0) visit(v - RR, i, j - 1, k);
+          if(j + 1 < R) visit(v + RR, i, j + 1, k);
+          if(k > 0) visit(v - RR * RR, i, j, k - 1);
+          if(k + 1 < R) visit(v + RR * RR, i, j, k + 1);
         }
-        std::sort(roi_voxels.begin(), roi_voxels.end());
       }
       else
       {
+        const int ball = int(std::ceil(rho / delta));
         for(int k = (std::max)(0, sijk[2] - ball); k <= (std::min)(R - 1, sijk[2] + ball); ++k)
           for(int j = (std::max)(0, sijk[1] - ball); j <= (std::min)(R - 1, sijk[1] + ball); ++j)
             for(int i = (std::max)(0, sijk[0] - ball); i <= (std::min)(R - 1, sijk[0] + ball); ++i)
             {
               const std::size_t v = prior.classes.index(i, j, k);
-              if(valid[v] && labels[v] < 0 && in_ball(v))
+              if(valid[v] && labels[v] < 0 && in_ball(i, j, k))
               {
                 roi_voxels.push_back(v);
                 reach.insert(v);
@@ -366,37 +396,27 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       cand.clear();
       for(std::size_t v : roi_voxels)
         if(dM[v] < 1.5 * delta) cand.push_back(v);
-      if(options.exterior_band_samples)
+      for(std::size_t v : exterior_band_voxels)
       {
-        for(int k = (std::max)(0, sijk[2] - ball); k <= (std::min)(R - 1, sijk[2] + ball); ++k)
-          for(int j = (std::max)(0, sijk[1] - ball); j <= (std::min)(R - 1, sijk[1] + ball); ++j)
-            for(int i = (std::max)(0, sijk[0] - ball); i <= (std::min)(R - 1, sijk[0] + ball); ++i)
-            {
-              const std::size_t v = prior.classes.index(i, j, k);
-              if(exterior_band[v] && in_ball(v)) cand.push_back(v);
-            }
+        const int i = int(v % RR), j = int((v / RR) % RR), k = int(v / (RR * RR));
+        if(in_ball(i, j, k)) cand.push_back(v);
       }
-      int stride = 1;
-      auto on_lattice = [&](std::size_t v, int st) {
-        const std::array<int, 3> c = prior.classes.coordinates(v);
-        return c[0] % st == 0 && c[1] % st == 0 && c[2] % st == 0;
-      };
-      while(stride < 8)
-      {
-        std::size_t count = 0;
-        for(std::size_t v : cand) count += on_lattice(v, stride) ? 1 : 0;
-        if(count <= options.maximum_samples) break;
-        stride *= 2;
-      }
+      // the densest lattice (stride 1, 2 or 4) that keeps at most maximum_samples samples
+      std::size_t count[3] = {0, 0, 0};
+      for(std::size_t v : cand)
+        for(int l = 0; l <= int(lattice_level[v]); ++l) ++count[l];
+      int level = 0;
+      while(level < 2 && count[level] > options.maximum_samples) ++level;
       samples.clear();
       for(std::size_t v : cand)
-        if(on_lattice(v, stride))
+        if(int(lattice_level[v]) >= level)
         {
           const std::array<double, 3> c = prior.classes.center(v);
           samples.push_back(c[0], c[1], c[2], dM[v]);
         }
       result.number_of_samples += samples.size();
 
+      t_roi += seconds_since(t0);
       // ---- InitSQ (A.5): centre s, axis-aligned ellipsoid of radius min(rho0, EDT_flow(s))
       internal::Superquadric_data theta0;
       const double a_lower = delta_fit / 4., a_upper = (std::max)(rho, delta_fit / 4.);
@@ -413,6 +433,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       settings.exterior_penalty = exterior_penalty;
       settings.reestimate_variance = weight_mode == Interior_weight_mode::MPS_REESTIMATED;
       settings.maximum_evaluations = options.maximum_evaluations;
+      settings.function_tolerance = options.function_tolerance;
 
       // ---- retry loop over eta with the Flow-zone test (Alg. A.2 lines 13-17, B.3)
       bool passed = false, degenerate = false;
@@ -421,7 +442,10 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       for(double eta : etas)
       {
         settings.semi_axis_scale = eta;
+        t0 = clock();
         fit = fit_sdf<ConcurrencyTag>(samples, theta0, lb, ub, settings, workspace);
+        t_fit += seconds_since(t0);
+        t0 = clock();
         result.number_of_solves += std::size_t(fit.solves);
         result.number_of_evaluations += std::size_t(fit.evaluations);
         if(!fit.valid)
@@ -437,6 +461,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
                                                     voxel_coordinate(p[2], R));
           return flow[v] != 0;
         });
+        t_test += seconds_since(t0);
         if(inside_flow)
         {
           passed = true;
@@ -453,6 +478,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       }
 
       // ---- M_fit = {d~ <= 2 delta}, net claim and hard clipping (B.3, Alg. A.2 lines 18-22)
+      t0 = clock();
       claim.clear();
       claim_mark.reset(N);
       for_each_voxel_within(fit.theta, R, 2. * delta, [&](int, int, int, std::size_t v) {
@@ -493,6 +519,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       std::size_t net = 0;
       for(std::size_t v : claim) net += spec[v] ? 0 : 1;
       const std::size_t vmin = body_seed ? vmin_body : vmin_surface;
+      t_claim += seconds_since(t0);
       if(net < vmin)
       {
         ++result.rejected_by_volume;
@@ -536,37 +563,53 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
                 << " seeds\n";
   }
 
+  const auto t_merge_start = clock();
   // ---- small residual regions merged into the nearest primitive: unclaimed, non-Freeze
-  // components of the hull below V_min (surface, last stage) take the label of the nearest
-  // claimed voxel (Euclidean, exact EDT).
+  // components of the hull smaller than V_min (surface, last stage) take the label of the
+  // nearest claimed voxel, by a breadth-first search from all claimed voxels through the hull
+  // (6-neighbour steps; ties go to the voxel reached first from the lowest claimed index).
   if(!result.primitives.empty())
   {
     const int r_fit_last = fit_resolutions.empty() ? R : fit_resolutions.back();
     const std::size_t vmin = std::size_t(std::ceil(surface_volume * std::pow(double(R) / double(r_fit_last), 3) - 1e-9));
-    Voxel_grid<std::uint8_t> residual(R, 0), claimed(R, 0);
-    for(std::size_t v = 0; v < N; ++v)
-    {
-      residual[v] = (!freeze[v] && labels[v] < 0) ? 1 : 0;
-      claimed[v] = labels[v] >= 0 ? 1 : 0;
-    }
+    Voxel_grid<std::uint8_t> residual(R, 0);
+    for(std::size_t v = 0; v < N; ++v) residual[v] = (!freeze[v] && labels[v] < 0) ? 1 : 0;
     const Grid_components comps = connected_components(residual);
-    Voxel_grid<std::size_t> nearest;
-    squared_distance_transform<ConcurrencyTag>(claimed, false, &nearest);
-    std::vector<std::int32_t> merged(N, -1);
+    std::size_t targets = 0;
     for(std::size_t v = 0; v < N; ++v)
-      if(residual[v] && comps.sizes[std::size_t(comps.labels[v])] < vmin && nearest[v] < N)
-        merged[v] = labels[nearest[v]];
-    for(std::size_t v = 0; v < N; ++v)
-      if(merged[v] >= 0)
+      if(residual[v] && comps.sizes[std::size_t(comps.labels[v])] < vmin) ++targets;
+    if(targets > 0)
+    {
+      std::vector<std::int32_t> reached(labels.values());
+      queue.clear();
+      for(std::size_t v = 0; v < N; ++v)
+        if(labels[v] >= 0) queue.push_back(v);
+      for(std::size_t head = 0; head < queue.size() && targets > 0; ++head)
       {
-        labels[v] = merged[v];
-        ++result.merged_voxels;
+        const std::size_t v = queue[head];
+        for_each_neighbor(v, [&](std::size_t n) {
+          if(reached[n] >= 0 || exterior[n]) return;
+          reached[n] = reached[v];
+          queue.push_back(n);
+          if(residual[n] && comps.sizes[std::size_t(comps.labels[n])] < vmin)
+          {
+            labels[n] = reached[v];
+            ++result.merged_voxels;
+            --targets;
+          }
+        });
       }
+    }
   }
   result.claimed_voxels.assign(result.primitives.size(), std::vector<std::size_t>());
   for(std::size_t v = 0; v < N; ++v)
     if(labels[v] >= 0) result.claimed_voxels[std::size_t(labels[v])].push_back(v);
+  t_merge = seconds_since(t_merge_start);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  if(verbose)
+    std::cerr << "time (ms): stage setup " << 1e3 * t_setup << ", seeds " << 1e3 * t_seed << ", ROI/samples "
+              << 1e3 * t_roi << ", FitSDF " << 1e3 * t_fit << ", Flow-zone test " << 1e3 * t_test << ", claims "
+              << 1e3 * t_claim << ", merge " << 1e3 * t_merge << ", total " << 1e3 * result.seconds << "\n";
   return result;
 }
 
@@ -756,7 +799,7 @@ Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_pri
     fit_res.push_back((std::min)(r, fit_cap));
     if(std::find(distinct.begin(), distinct.end(), fit_res.back()) == distinct.end()) distinct.push_back(fit_res.back());
   }
-  const Fitting_zones zones = compute_fitting_zones(prior.classes, distinct, np);
+  const Fitting_zones zones = compute_fitting_zones<ConcurrencyTag>(prior.classes, distinct, np);
   return internal::fit_superquadrics_in_zones<ConcurrencyTag, GeomTraits>(
     prior, tsdf, zones, stages, fit_res, etas, body_threshold, body_volume, surface_volume, exterior_penalty,
     coverage, roi, mode, cap, use_freeze, use_tsdf, use_body, verbose);

@@ -29,7 +29,8 @@ namespace internal {
 // D = diag(A) / scale^2: a variable of scale s moves s times as far as one of scale 1 for the same
 // damping, which is how the caller shrinks the trust region along chosen directions (scipy's
 // x_scale). The step is projected on the box and judged by the gain ratio of the projected step;
-// the damping follows Nielsen's rule. Rejected trials evaluate residuals only.
+// the damping follows Nielsen's rule. A trial after an accepted step also evaluates the Jacobian
+// (one pass per accepted step); a trial after a rejection evaluates residuals only.
 //
 // Problem interface:
 //   std::size_t number_of_residuals() const;
@@ -71,6 +72,7 @@ public:
     m_f.resize(m);
     m_f_trial.resize(m);
     m_J.resize(m * std::size_t(N));
+    m_J_trial.resize(m * std::size_t(N));
     for(int i = 0; i < N; ++i) x[i] = (std::min)(ub[i], (std::max)(lb[i], x[i]));
 
     double F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
@@ -88,6 +90,7 @@ public:
     normal_equations(m, A, g);
 
     double mu = options.initial_damping, nu = 2.;
+    bool last_accepted = true;
     while(report.evaluations < options.maximum_evaluations)
     {
       bool frozen[N];
@@ -129,8 +132,14 @@ public:
       if(s.squaredNorm() == 0.) break;
       const double predicted = -(g.dot(s) + 0.5 * s.dot(A * s));
 
-      const double F_trial = problem.residuals(x_trial, m_f_trial.data());
+      // After an accepted step the next one is likely accepted too: evaluate the Jacobian with
+      // the trial (it is the Jacobian of the new point). After a rejection, residuals only.
+      const bool with_jacobian = last_accepted;
+      const double F_trial = with_jacobian
+                               ? problem.residuals_and_jacobian(x_trial, m_f_trial.data(), m_J_trial.data())
+                               : problem.residuals(x_trial, m_f_trial.data());
       ++report.evaluations;
+      if(with_jacobian) ++report.jacobian_evaluations;
       const double actual = F - F_trial;
       if(std::isfinite(F_trial) && predicted > 0. && actual > 0.)
       {
@@ -144,15 +153,25 @@ public:
         nu = 2.;
         F = F_trial;
         report.final_cost = F;
+        last_accepted = true;
         if(small_decrease || small_step || report.evaluations >= options.maximum_evaluations) break;
-        F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
-        ++report.evaluations;
-        ++report.jacobian_evaluations;
-        report.final_cost = F;
+        if(with_jacobian)
+        {
+          m_f.swap(m_f_trial);
+          m_J.swap(m_J_trial);
+        }
+        else
+        {
+          F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
+          ++report.evaluations;
+          ++report.jacobian_evaluations;
+          report.final_cost = F;
+        }
         normal_equations(m, A, g);
       }
       else
       {
+        last_accepted = false;
         mu *= nu;
         nu *= 2.;
         if(mu > 1e20) break;
@@ -173,7 +192,7 @@ private:
     g.noalias() = J.transpose() * f;
   }
 
-  std::vector<double> m_f, m_f_trial, m_J;
+  std::vector<double> m_f, m_f_trial, m_J, m_J_trial;
 };
 
 } // namespace internal

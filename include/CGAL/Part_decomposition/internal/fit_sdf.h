@@ -90,6 +90,7 @@ struct Fit_sdf_settings
   bool reestimate_variance = true;    // MPS rule: sigma^2 = sum w r^2 / sum w after each outer pass
   int maximum_outer_iterations = 4;   // outer passes of the MPS rule
   int maximum_evaluations = 40;       // per solve (one solve per outer pass)
+  double function_tolerance = 1e-8;   // stop a solve when an accepted step gains less (relative)
   double relative_cost_tolerance = 1e-3; // stop the outer passes when the cost changes less
   double semi_axis_scale = 1.;        // eta: x_scale of the semi-axes
 };
@@ -296,6 +297,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
   Superquadric_vector x = to_vector(theta0);
   Superquadric_solver::Options options;
   options.maximum_evaluations = settings.maximum_evaluations;
+  options.ftol = settings.function_tolerance;
   for(int i = 0; i < 3; ++i) options.scale[i] = settings.semi_axis_scale;
 
   const int passes = settings.reestimate_variance ? (std::max)(1, settings.maximum_outer_iterations) : 1;
