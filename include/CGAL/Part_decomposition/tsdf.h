@@ -224,7 +224,7 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
   const Voxel_grid<double> d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest);
   const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
   const double reach2 = reach * reach;
-  const Closest_triangle_tree tree(tris);
+  const Closest_triangle_tree tree(tris, ConcurrencyTag());
 
   Voxel_grid<double> out(r, tau);
   const double tau2 = tau * tau;

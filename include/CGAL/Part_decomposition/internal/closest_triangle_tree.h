@@ -11,6 +11,11 @@
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
 
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -22,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 // Exact point-to-triangle-soup distance queries, in double precision: a bounding volume hierarchy
@@ -90,7 +96,12 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
 class Closest_triangle_tree
 {
 public:
-  explicit Closest_triangle_tree(const std::vector<Triangle_points>& triangles) : m_triangles(&triangles)
+  /// builds the hierarchy; with a parallel `ConcurrencyTag` the subtrees are built in parallel,
+  /// into the same arrays as sequentially (the shape of the tree depends only on the count).
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
+  explicit Closest_triangle_tree(const std::vector<Triangle_points>& triangles,
+                                 ConcurrencyTag = ConcurrencyTag())
+    : m_triangles(&triangles)
   {
     const std::size_t n = triangles.size();
     std::vector<std::uint32_t> order(n);
@@ -107,10 +118,12 @@ public:
         m_box_hi[i][a] = (std::max)({triangles[i][0][a], triangles[i][1][a], triangles[i][2][a]});
       }
     }
+    m_nodes.resize(node_count(n));
+    m_leaves.resize(leaf_count(n));
     if(n > 4)
-      build(order, 0, n);
+      build(order, 0, n, 0, 0, std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
     else if(n > 0)
-      make_leaf(order, 0, n);
+      make_leaf(order, 0, n, 0);
     std::vector<Vec3>().swap(m_centroid);
     std::vector<Vec3>().swap(m_box_lo);
     std::vector<Vec3>().swap(m_box_hi);
@@ -345,9 +358,10 @@ private:
     return mid;
   }
 
-  std::int32_t make_leaf(const std::vector<std::uint32_t>& order, std::size_t first, std::size_t last)
+  std::int32_t make_leaf(const std::vector<std::uint32_t>& order, std::size_t first, std::size_t last,
+                         std::size_t leaf_id)
   {
-    Leaf L;
+    Leaf& L = m_leaves[leaf_id];
     for(int c = 0; c < 4; ++c)
     {
       const std::uint32_t id = order[first + (first + std::size_t(c) < last ? std::size_t(c) : 0)];
@@ -375,22 +389,50 @@ private:
       L.i1[c] = d11 > 0. ? float(1. / d11) : 0.f;
       L.i2[c] = d22 > 0. ? float(1. / d22) : 0.f;
     }
-    m_leaves.push_back(L);
-    return -std::int32_t(m_leaves.size());
+    return -std::int32_t(leaf_id) - 1;
   }
 
-  // The node of order[first,last), more than four triangles: two levels of median splits.
-  std::int32_t build(std::vector<std::uint32_t>& order, std::size_t first, std::size_t last)
+  // The sizes of the four children of a node of n > 4 triangles (two levels of median splits).
+  static void child_sizes(std::size_t n, std::size_t size[4])
   {
-    const std::int32_t id = std::int32_t(m_nodes.size());
-    m_nodes.emplace_back();
+    const std::size_t a = n / 2, b = n - a;
+    size[0] = a / 2;
+    size[1] = a - a / 2;
+    size[2] = b / 2;
+    size[3] = b - b / 2;
+  }
+  static std::size_t node_count(std::size_t n)
+  {
+    if(n <= 4) return 0;
+    std::size_t size[4], count = 1;
+    child_sizes(n, size);
+    for(std::size_t c : size) count += node_count(c);
+    return count;
+  }
+  static std::size_t leaf_count(std::size_t n)
+  {
+    if(n == 0) return 0;
+    if(n <= 4) return 1;
+    std::size_t size[4], count = 0;
+    child_sizes(n, size);
+    for(std::size_t c : size) count += leaf_count(c);
+    return count;
+  }
+
+  // The node of order[first,last), more than four triangles, stored at `node_id`, its subtree's
+  // nodes and leaves numbered from there in depth-first order.
+  void build(std::vector<std::uint32_t>& order, std::size_t first, std::size_t last, std::size_t node_id,
+             std::size_t leaf_id, bool parallel)
+  {
     std::size_t range[5];
     range[0] = first;
     range[2] = split(order, first, last);
     range[4] = last;
     range[1] = range[2] - first > 4 ? split(order, first, range[2]) : first + (range[2] - first) / 2;
     range[3] = last - range[2] > 4 ? split(order, range[2], last) : range[2] + (last - range[2]) / 2;
-    Node node;
+    Node& node = m_nodes[node_id];
+    std::size_t child_node[4], child_leaf[4];
+    std::size_t next_node = node_id + 1, next_leaf = leaf_id;
     for(int c = 0; c < 4; ++c)
     {
       const std::size_t b = range[c], e = range[c + 1];
@@ -405,14 +447,29 @@ private:
         node.lo[a][c] = e > b ? round_down(lo) : std::numeric_limits<float>::infinity();
         node.hi[a][c] = e > b ? round_up(hi) : -std::numeric_limits<float>::infinity();
       }
+      child_node[c] = next_node;
+      child_leaf[c] = next_leaf;
+      next_node += node_count(e - b);
+      next_leaf += leaf_count(e - b);
       node.child[c] = absent();
       if(e - b > 4)
-        node.child[c] = build(order, b, e); // may reallocate m_nodes: `node` is a local copy
+        node.child[c] = std::int32_t(child_node[c]);
       else if(e > b)
-        node.child[c] = make_leaf(order, b, e);
+        node.child[c] = make_leaf(order, b, e, child_leaf[c]);
     }
-    m_nodes[std::size_t(id)] = node;
-    return id;
+    auto build_child = [&](int c) {
+      if(range[c + 1] - range[c] > 4)
+        build(order, range[c], range[c + 1], child_node[c], child_leaf[c], parallel);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel && last - first > 4096)
+    {
+      tbb::parallel_invoke([&] { build_child(0); }, [&] { build_child(1); }, [&] { build_child(2); },
+                           [&] { build_child(3); });
+      return;
+    }
+#endif
+    for(int c = 0; c < 4; ++c) build_child(c);
   }
 
   const std::vector<Triangle_points>* m_triangles;

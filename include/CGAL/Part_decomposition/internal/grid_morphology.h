@@ -153,20 +153,21 @@ Voxel_grid<double> squared_distance_transform(const Voxel_grid<std::uint8_t>& fe
     for(std::size_t i = 0; i < feature.size(); ++i)
       if(feature[i] != 0) (*nearest_feature)[i] = i;
   }
-  Voxel_grid<std::size_t> previous; // nearest features before the current pass
   const std::size_t R = std::size_t(r);
   const std::size_t stride[3] = {1, R, R * R};
   for(int axis = 0; axis < 3; ++axis)
   {
-    if(track) previous = *nearest_feature;
     const std::size_t s = stride[axis];
     const std::size_t other1 = stride[(axis + 1) % 3], other2 = stride[(axis + 2) % 3];
     parallel_ranges<ConcurrencyTag>(R * R, [&](std::size_t begin, std::size_t end) {
       Envelope_buffers b(r);
+      std::vector<std::size_t> line_nearest(track ? R : 0);
       for(std::size_t line = begin; line < end; ++line)
       {
         const std::size_t base = (line % R) * other1 + (line / R) * other2;
         for(int q = 0; q < r; ++q) b.f[q] = dist[base + std::size_t(q) * s];
+        if(track)
+          for(int q = 0; q < r; ++q) line_nearest[q] = (*nearest_feature)[base + std::size_t(q) * s];
         lower_envelope_1d(r, grid_border_is_feature, b);
         for(int q = 0; q < r; ++q)
         {
@@ -175,7 +176,7 @@ Voxel_grid<double> squared_distance_transform(const Voxel_grid<std::uint8_t>& fe
           if(track)
             (*nearest_feature)[idx] = b.nearest[q] == -2   ? outside_grid_feature()
                                       : b.nearest[q] == -1 ? outside_grid_feature() - 1
-                                                           : previous[base + std::size_t(b.nearest[q]) * s];
+                                                           : line_nearest[std::size_t(b.nearest[q])];
         }
       }
     });

@@ -1,0 +1,230 @@
+// Times compute_tsdf() (finest grid 64^3, tau = 8 voxels) on the given meshes: median of several
+// runs with 1 and 2 threads, the process CPU time, and the time of each internal step.
+//
+// usage: benchmark_tsdf [-runs N] [-method auto|inside|winding|flood] [-open K] [-check] [-aabb]
+//                       mesh [mesh ...]
+//   -open K  removes K faces spread over the mesh first (an open mesh: hierarchical winding numbers)
+//   -check   compares 4000 voxels with CGAL: AABB-tree distance, and Side_of_triangle_mesh sign of
+//            the closed input (with -open: of the mesh before its faces were removed, at the
+//            voxels farther than one voxel from the surface)
+//   -aabb    also times the band distances with CGAL's AABB tree, for comparison
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/tsdf.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace PD = CGAL::Part_decomposition;
+namespace PDI = CGAL::Part_decomposition::internal;
+typedef CGAL::Parallel_if_available_tag Tag;
+
+// Median wall-clock time of `runs` calls; `cpu` receives the median process CPU time (all threads),
+// which stays meaningful when other programs share the machine.
+static double median_ms(int runs, const std::function<void()>& f, double* cpu = nullptr)
+{
+  std::vector<double> t, c;
+  for(int i = 0; i < runs; ++i)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t c0 = std::clock();
+    f();
+    c.push_back(1000. * double(std::clock() - c0) / CLOCKS_PER_SEC);
+    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  std::sort(c.begin(), c.end());
+  if(cpu) *cpu = c[c.size() / 2];
+  return t[t.size() / 2];
+}
+
+static const char* name(PD::Tsdf_sign_method m)
+{
+  switch(m)
+  {
+  case PD::Tsdf_sign_method::INSIDE_TEST: return "INSIDE_TEST";
+  case PD::Tsdf_sign_method::WINDING_NUMBER: return "WINDING_NUMBER";
+  case PD::Tsdf_sign_method::FLOOD_FILL: return "FLOOD_FILL";
+  default: return "AUTOMATIC";
+  }
+}
+
+// Band distances with CGAL's AABB tree (same voxels as compute_tsdf queries); returns its time.
+static double aabb_band_ms(const std::vector<PDI::Triangle_points>& tris, int r, double tau,
+                           PD::Voxel_grid<double>& out)
+{
+  typedef CGAL::Simple_cartesian<double> SC;
+  typedef std::vector<SC::Triangle_3>::const_iterator It;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<SC, CGAL::AABB_triangle_primitive<SC, It> > > Tree;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<SC::Triangle_3> triangles;
+  for(const auto& t : tris)
+    triangles.emplace_back(SC::Point_3(t[0][0], t[0][1], t[0][2]), SC::Point_3(t[1][0], t[1][1], t[1][2]),
+                           SC::Point_3(t[2][0], t[2][1], t[2][2]));
+  Tree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  const PDI::Surface_voxels sv = PDI::surface_voxels<CGAL::Sequential_tag>(tris, r);
+  const PD::Voxel_grid<double> d2 = PDI::squared_distance_transform(sv.mask);
+  const double reach = tau * r + 0.5 * std::sqrt(3.) + 1e-6;
+  out = PD::Voxel_grid<double>(r, tau);
+  for(std::size_t i = 0; i < out.size(); ++i)
+    if(d2[i] < reach * reach)
+    {
+      const auto c = out.center(i);
+      out[i] = std::min(tau, std::sqrt(tree.squared_distance(SC::Point_3(c[0], c[1], c[2]))));
+    }
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+int main(int argc, char** argv)
+{
+  int runs = 5, open_faces = 0;
+  bool check = false, aabb = false;
+  PD::Tsdf_sign_method method = PD::Tsdf_sign_method::AUTOMATIC;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "-runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if(a == "-open" && i + 1 < argc) open_faces = std::max(0, std::atoi(argv[++i]));
+    else if(a == "-check") check = true;
+    else if(a == "-aabb") aabb = true;
+    else if(a == "-method" && i + 1 < argc)
+    {
+      const std::string m = argv[++i];
+      method = m == "inside" ? PD::Tsdf_sign_method::INSIDE_TEST
+             : m == "winding" ? PD::Tsdf_sign_method::WINDING_NUMBER
+             : m == "flood" ? PD::Tsdf_sign_method::FLOOD_FILL
+                            : PD::Tsdf_sign_method::AUTOMATIC;
+    }
+    else files.push_back(a);
+  }
+  if(files.empty())
+  {
+    std::cerr << "usage: " << argv[0]
+              << " [-runs N] [-method auto|inside|winding|flood] [-open K] [-check] [-aabb] mesh [mesh ...]\n";
+    return EXIT_FAILURE;
+  }
+#ifndef CGAL_LINKED_WITH_TBB
+  std::cout << "(TBB not available: the 2-thread column is sequential)\n";
+#endif
+  {
+    std::ifstream load("/proc/loadavg");
+    std::string l1;
+    if(load >> l1) std::cout << "load average at start: " << l1 << "\n";
+  }
+  std::printf("%-20s %6s %-14s %4s %8s %8s %8s | 2 thr: %5s %5s %6s %6s | %7s%s%s\n", "mesh", "faces", "sign",
+              "clsd", "1thr ms", "2thr ms", "cpu ms", "vox", "sign", "dist", "other", "band",
+              aabb ? " | AABB band ms" : "", check ? " | check: max |d err| vox, wrong signs" : "");
+  for(const std::string& file : files)
+  {
+    Mesh mesh;
+    try
+    {
+      PD::IO::read_triangle_mesh(file, mesh);
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << file << ": " << e.what() << "\n";
+      continue;
+    }
+    const Mesh input = mesh;
+    if(open_faces > 0)
+    {
+      const std::size_t n = num_faces(mesh), step = std::max<std::size_t>(1, n / std::size_t(open_faces));
+      std::vector<Mesh::Face_index> removed;
+      std::size_t i = 0;
+      for(auto f : faces(mesh))
+        if(i++ % step == 0 && removed.size() < std::size_t(open_faces)) removed.push_back(f);
+      for(auto f : removed) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+      mesh.collect_garbage();
+    }
+    const auto np = PD::parameters::tsdf_sign_method(method);
+    PD::Truncated_signed_distance_field tsdf;
+    double t1 = 0., t2 = 0., cpu = 0.;
+    {
+#ifdef CGAL_LINKED_WITH_TBB
+      tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 1);
+#endif
+      t1 = median_ms(runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); });
+    }
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 2);
+#endif
+    t2 = median_ms(runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); }, &cpu);
+
+    // The steps, with 2 threads.
+    const int r = tsdf.values.resolution();
+    const auto tris = PDI::normalized_triangles(mesh, get(CGAL::vertex_point, mesh), tsdf.normalization);
+    const bool closed = PDI::faces_form_closed_surface(mesh);
+    PDI::Surface_voxels sv;
+    const double t_vox = median_ms(runs, [&] { sv = PDI::surface_voxels<Tag>(tris, r); });
+    const double t_sign = median_ms(runs, [&] { PDI::inside_flags<Tag>(tris, closed, tsdf.sign_method, sv, r); });
+    const double t_dist = median_ms(runs, [&] { PDI::clipped_unsigned_distance<Tag>(tris, sv, r, tsdf.truncation); });
+    std::size_t band = 0;
+    for(double v : tsdf.values.values())
+      if(std::abs(v) < tsdf.truncation) ++band;
+    const std::string shown = file.substr(file.find_last_of('/') == std::string::npos ? 0 : file.find_last_of('/') + 1);
+    std::printf("%-20s %6zu %-14s %4s %8.1f %8.1f %8.1f | %12.1f %5.1f %6.1f %6.1f | %7zu", shown.c_str(),
+                std::size_t(num_faces(mesh)), name(tsdf.sign_method), closed ? "yes" : "no", t1, t2, cpu, t_vox,
+                t_sign, t_dist, t2 - t_vox - t_sign - t_dist, band);
+    if(aabb)
+    {
+      PD::Voxel_grid<double> reference;
+      const double ms = aabb_band_ms(tris, r, tsdf.truncation, reference);
+      double worst = 0.;
+      for(std::size_t i = 0; i < reference.size(); ++i)
+        worst = std::max(worst, std::abs(reference[i] - std::abs(tsdf.values[i])));
+      std::printf(" | %8.1f (max diff %.1e vox)", ms, worst * r);
+    }
+    if(check)
+    {
+      typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > Tree;
+      Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+      tree.accelerate_distance_queries();
+      std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K> > side;
+      const bool input_closed = CGAL::is_closed(input);
+      if(input_closed) side.reset(new CGAL::Side_of_triangle_mesh<Mesh, K>(input));
+      double worst = 0.;
+      std::size_t wrong = 0;
+      for(std::size_t s = 0; s < 4000; ++s)
+      {
+        const std::size_t i = (s * 2654435761u) % tsdf.values.size();
+        const std::array<double, 3> u = tsdf.values.center(i);
+        const std::array<double, 3> x = tsdf.normalization.from_unit(u);
+        const K::Point_3 p(x[0], x[1], x[2]);
+        const double d = std::min(tsdf.truncation, std::sqrt(CGAL::to_double(tree.squared_distance(p))) * tsdf.normalization.scale());
+        worst = std::max(worst, std::abs(d - std::abs(tsdf.values[i])));
+        if(side && d > (open_faces > 0 ? 1. / r : 1e-9))
+          if(((*side)(p) == CGAL::ON_BOUNDED_SIDE) != (tsdf.values[i] < 0.)) ++wrong;
+      }
+      std::printf(" | %.1e, %zu%s", worst * r, wrong, input_closed ? "" : " (no sign reference)");
+    }
+    std::printf("\n");
+  }
+  return EXIT_SUCCESS;
+}
