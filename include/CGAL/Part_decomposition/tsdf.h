@@ -49,14 +49,16 @@ The \em surface voxels below are the voxels whose (closed) box meets a triangle.
   (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
   integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
   open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
-  the surface voxels and of their 6-neighbours, and the other voxels take, by a flood fill that
-  does not cross surface voxels, the sign of the nearest evaluated voxel: holes are bridged as
-  the winding number bridges them. Needs a consistent orientation of each connected part.
+  the voxels next to the surface voxels; the other voxels take, by a flood fill that does not
+  cross surface voxels, the sign of the nearest evaluated voxel, and the surface voxels the sign
+  of an adjacent voxel centre they see without crossing a triangle (or their own evaluation):
+  holes are bridged as the winding number bridges them. Needs a consistent orientation of each
+  connected part.
 - `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
-  outside, and so are the surface voxels whose centre is joined to an outside centre by a chain
-  of at most three segments between adjacent voxel centres that meet no triangle; all other
-  voxels are inside. Ignores orientation; seals holes smaller than a voxel but leaks through
-  larger ones; closed hollow shells become solid.
+  outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
+  centres it is joined to by a chain of at most three segments between adjacent centres that meet
+  no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
+  voxel but leaks through larger ones; closed hollow shells become solid.
 - `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
   no costly self-intersection test, and robust on open ones.
 */
@@ -88,50 +90,104 @@ struct Truncated_signed_distance_field
 
 namespace internal {
 
-// Inside flags by the generalized winding number evaluated at the surface voxels and their
-// 6-neighbours (the "evaluated" voxels), then spread to the other voxels by a breadth-first flood
-// fill through non-surface voxels from the evaluated ones, in linear-index order.
+// Gives undecided surface voxels the flag of a 6-adjacent decided voxel whose centre they see
+// without crossing a triangle, in `rounds` rounds (a voxel decided in one round passes its flag on
+// in the next). Exact for a closed surface: an uncrossed segment joins two points of the same side.
+// A segment between adjacent centres lies in the two voxels: only their triangles are tested.
+// Neighbours are tried in a fixed order and rounds are synchronous: the result is deterministic.
+template <typename ConcurrencyTag>
+void spread_to_surface_voxels(const std::vector<Triangle_points>& tris, const Surface_voxels& sv, int r,
+                              int rounds, std::vector<std::uint8_t>& inside, std::vector<std::uint8_t>& decided)
+{
+  const std::size_t R = std::size_t(r), size = R * R * R;
+  const Voxel_grid<std::uint8_t>& S = sv.mask;
+  typedef CGAL::Epick::Point_3 P;
+  auto point = [](const Vec3& p) { return P(p[0], p[1], p[2]); };
+  auto meets_triangles_of = [&](const CGAL::Epick::Segment_3& seg, std::size_t voxel) {
+    for(std::size_t t = sv.offsets[voxel]; t < sv.offsets[voxel + 1]; ++t)
+    {
+      const Triangle_points& T = tris[sv.triangles[t]];
+      if(CGAL::do_intersect(seg, CGAL::Epick::Triangle_3(point(T[0]), point(T[1]), point(T[2])))) return true;
+    }
+    return false;
+  };
+  std::vector<std::size_t> pending;
+  for(std::size_t idx = 0; idx < size; ++idx)
+    if(S[idx] != 0 && decided[idx] == 0) pending.push_back(idx);
+  for(int round = 0; round < rounds && !pending.empty(); ++round)
+  {
+    std::vector<std::uint8_t> next_inside = inside, next_decided = decided;
+    parallel_ranges<ConcurrencyTag>(pending.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t n = b; n < e; ++n)
+      {
+        const std::size_t idx = pending[n];
+        const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
+        const std::size_t neighbours[6] = {i > 0 ? idx - 1 : size,     i + 1 < R ? idx + 1 : size,
+                                           j > 0 ? idx - R : size,     j + 1 < R ? idx + R : size,
+                                           k > 0 ? idx - R * R : size, k + 1 < R ? idx + R * R : size};
+        const P c = point(S.center(idx));
+        for(std::size_t nb : neighbours)
+        {
+          if(nb == size || decided[nb] == 0) continue;
+          const CGAL::Epick::Segment_3 seg(c, point(S.center(nb)));
+          if(meets_triangles_of(seg, idx) || (S[nb] != 0 && meets_triangles_of(seg, nb))) continue;
+          next_inside[idx] = inside[nb];
+          next_decided[idx] = 1;
+          break;
+        }
+      }
+    });
+    inside.swap(next_inside);
+    decided.swap(next_decided);
+    std::vector<std::size_t> still;
+    for(std::size_t idx : pending)
+      if(decided[idx] == 0) still.push_back(idx);
+    pending.swap(still);
+  }
+}
+
+// Inside flags by the generalized winding number: evaluated at the centres of the non-surface
+// voxels next to the surface voxels, spread by a breadth-first flood fill through non-surface
+// voxels (from the evaluated voxels, in linear-index order), then passed on to the surface voxels
+// by uncrossed segments; the surface voxels left get their own evaluation.
 template <typename ConcurrencyTag>
 std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_points>& tris,
                                                    const Surface_voxels& sv, int r)
 {
   const std::size_t R = std::size_t(r), size = R * R * R;
   const Voxel_grid<std::uint8_t>& S = sv.mask;
-  std::vector<std::uint8_t> inside(size, 0), known(size, 0);
-  std::vector<std::size_t> evaluated;
+  std::vector<std::uint8_t> inside(size, 0), decided(size, 0);
+  std::vector<std::size_t> shell;
   for(std::size_t idx = 0; idx < size; ++idx)
   {
-    bool near = S[idx] != 0;
-    if(!near)
-    {
-      const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-      near = (i > 0 && S[idx - 1]) || (i + 1 < R && S[idx + 1]) || (j > 0 && S[idx - R]) ||
-             (j + 1 < R && S[idx + R]) || (k > 0 && S[idx - R * R]) || (k + 1 < R && S[idx + R * R]);
-    }
-    if(near) evaluated.push_back(idx);
+    if(S[idx] != 0) continue;
+    const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
+    if((i > 0 && S[idx - 1]) || (i + 1 < R && S[idx + 1]) || (j > 0 && S[idx - R]) ||
+       (j + 1 < R && S[idx + R]) || (k > 0 && S[idx - R * R]) || (k + 1 < R && S[idx + R * R]))
+      shell.push_back(idx);
   }
   const Fast_winding_number wn(tris);
-  parallel_ranges<ConcurrencyTag>(evaluated.size(), [&](std::size_t b, std::size_t e) {
-    for(std::size_t n = b; n < e; ++n)
-    {
-      const std::size_t idx = evaluated[n];
-      const std::array<double, 3> c = S.center(idx);
-      inside[idx] = std::abs(wn(c)) > 0.5 ? 1 : 0;
-      known[idx] = 1;
-    }
-  });
-  std::vector<std::size_t> queue;
-  queue.reserve(size / 2);
-  for(std::size_t idx : evaluated)
-    if(S[idx] == 0) queue.push_back(idx);
+  auto evaluate = [&](const std::vector<std::size_t>& voxels) {
+    parallel_ranges<ConcurrencyTag>(voxels.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t n = b; n < e; ++n)
+      {
+        const std::size_t idx = voxels[n];
+        inside[idx] = std::abs(wn(S.center(idx))) > 0.5 ? 1 : 0;
+        decided[idx] = 1;
+      }
+    });
+  };
+  evaluate(shell);
+  std::vector<std::size_t> queue(shell);
+  queue.reserve(size);
   for(std::size_t head = 0; head < queue.size(); ++head)
   {
     const std::size_t idx = queue[head];
     const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
     auto visit = [&](std::size_t n) {
-      if(known[n] == 0 && S[n] == 0)
+      if(decided[n] == 0 && S[n] == 0)
       {
-        known[n] = 1;
+        decided[n] = 1;
         inside[n] = inside[idx];
         queue.push_back(n);
       }
@@ -143,67 +199,33 @@ std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_po
     if(k > 0) visit(idx - R * R);
     if(k + 1 < R) visit(idx + R * R);
   }
+  spread_to_surface_voxels<ConcurrencyTag>(tris, sv, r, 3, inside, decided);
+  std::vector<std::size_t> left;
+  for(std::size_t idx = 0; idx < size; ++idx)
+    if(decided[idx] == 0) left.push_back(idx);
+  evaluate(left);
   return inside;
 }
 
-// Inside flags by flood fill: outside = the non-surface voxels connected to the border, plus the
-// surface voxels whose centre is joined to an outside centre by a chain of at most three segments
-// between 6-adjacent centres that meet no triangle. A segment between adjacent centres lies in the
-// two voxels, so only their triangles are tested. The short chains reach the centres lying outside
-// in the layers of surface voxels (a surface running along voxel faces marks two layers), while a
-// hole smaller than a voxel can only let the outside leak three voxels deep.
+// Inside flags by flood fill: the non-surface voxels connected to the border are outside, the
+// other non-surface voxels inside; surface voxels take the flag of a voxel they see without
+// crossing a triangle (at most three steps away, so that a hole smaller than a voxel cannot leak
+// the outside far along the surface) and are inside otherwise.
 template <typename ConcurrencyTag>
 std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points>& tris,
                                                const Surface_voxels& sv, int r)
 {
-  const std::size_t R = std::size_t(r), size = R * R * R;
-  const Voxel_grid<std::uint8_t>& S = sv.mask;
-  const Voxel_grid<std::uint8_t> exterior = border_connected_complement(S);
-  std::vector<std::size_t> surface;
+  const std::size_t size = sv.mask.size();
+  const Voxel_grid<std::uint8_t> exterior = border_connected_complement(sv.mask);
+  std::vector<std::uint8_t> inside(size, 0), decided(size, 0);
   for(std::size_t idx = 0; idx < size; ++idx)
-    if(S[idx] != 0) surface.push_back(idx);
-  typedef CGAL::Epick::Point_3 P;
-  auto point = [](const Vec3& p) { return P(p[0], p[1], p[2]); };
-  auto meets_triangles_of = [&](const CGAL::Epick::Segment_3& seg, std::size_t voxel) {
-    for(std::size_t t = sv.offsets[voxel]; t < sv.offsets[voxel + 1]; ++t)
-    {
-      const Triangle_points& T = tris[sv.triangles[t]];
-      if(CGAL::do_intersect(seg, CGAL::Epick::Triangle_3(point(T[0]), point(T[1]), point(T[2])))) return true;
-    }
-    return false;
-  };
-  // reached[v] = the length of the shortest chain found from an exterior voxel (exterior: 0).
-  const std::uint8_t unreached = 255;
-  std::vector<std::uint8_t> reached(size, unreached);
-  for(std::size_t idx = 0; idx < size; ++idx)
-    if(exterior[idx] != 0) reached[idx] = 0;
-  for(std::uint8_t depth = 1; depth <= 3; ++depth)
   {
-    std::vector<std::uint8_t> next = reached;
-    parallel_ranges<ConcurrencyTag>(surface.size(), [&](std::size_t b, std::size_t e) {
-      for(std::size_t n = b; n < e; ++n)
-      {
-        const std::size_t idx = surface[n];
-        if(reached[idx] != unreached) continue;
-        const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-        const std::size_t neighbours[6] = {i > 0 ? idx - 1 : size,     i + 1 < R ? idx + 1 : size,
-                                           j > 0 ? idx - R : size,     j + 1 < R ? idx + R : size,
-                                           k > 0 ? idx - R * R : size, k + 1 < R ? idx + R * R : size};
-        const P c = point(S.center(idx));
-        for(std::size_t nb : neighbours)
-        {
-          if(nb == size || reached[nb] != depth - 1) continue;
-          const CGAL::Epick::Segment_3 seg(c, point(S.center(nb)));
-          if(meets_triangles_of(seg, idx) || (S[nb] != 0 && meets_triangles_of(seg, nb))) continue;
-          next[idx] = depth;
-          break;
-        }
-      }
-    });
-    reached.swap(next);
+    decided[idx] = sv.mask[idx] == 0 ? 1 : 0;
+    inside[idx] = (sv.mask[idx] == 0 && exterior[idx] == 0) ? 1 : 0;
   }
-  std::vector<std::uint8_t> inside(size, 0);
-  for(std::size_t idx = 0; idx < size; ++idx) inside[idx] = reached[idx] == unreached ? 1 : 0;
+  spread_to_surface_voxels<ConcurrencyTag>(tris, sv, r, 3, inside, decided);
+  for(std::size_t idx = 0; idx < size; ++idx)
+    if(decided[idx] == 0) inside[idx] = 1;
   return inside;
 }
 
@@ -311,11 +333,13 @@ computes the truncated signed distance field \f$d_\mathcal{M}\f$ of `tm` (paper 
 voxel centres of the finest grid of the method, in the normalized cube: the Euclidean distance to
 the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$.
 
-Distances are exact (closest triangle in a bounding volume hierarchy) wherever they can be below
-\f$\tau\f$; elsewhere only the sign is computed and the value is \f$\pm\tau\f$. Every voxel
-carries its sign, deep interior voxels hold \f$-\tau\f$. How the sign is decided is described
-in `Tsdf_sign_method`. The computation is done in double precision on the normalized
-coordinates of the vertices.
+Distances are exact, up to rounding, wherever they can be below \f$\tau\f$: the distance to the
+closest triangle, found in a bounding volume hierarchy (no voxel of the development meshes differs
+by more than \f$2 \cdot 10^{-6}\f$ voxel from CGAL's AABB tree). Elsewhere only the sign is
+computed and the value is \f$\pm\tau\f$: every voxel carries its sign, deep interior voxels hold
+\f$-\tau\f$. How the sign is decided is described in `Tsdf_sign_method`. Coordinates are read
+through the vertex point map with `CGAL::to_double()` and everything is computed in double
+precision on the normalized coordinates: no geometric traits class is needed.
 
 \tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
         `CGAL::Sequential_tag`, `CGAL::Parallel_tag`, and `CGAL::Parallel_if_available_tag`.
@@ -334,12 +358,6 @@ coordinates of the vertices.
                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
                    `%Point_3` as value type}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class; only its point type is used
-                          (coordinates are read with `CGAL::to_double()`)}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
   \cgalParamNEnd
   \cgalParamNBegin{normalization}
     \cgalParamDescription{the map from input coordinates to the normalized cube
