@@ -58,13 +58,20 @@ struct P_norm
   double H;  // entropy of q = ((A/N)^p, (B/N)^p); dN/d(eps) = N H / 2 for p = 2/eps
 };
 
+// Below this value of p ln t, t^p / p < 2^-53 and N = m exactly in double; below it for
+// (p - 1) ln t, also t^(p-1) (the derivative with respect to the smaller argument) and the entropy
+// are below 1e-16. Common for box-like shapes (large p); saves three transcendental calls.
+constexpr double p_norm_negligible_log = -40.;
+
 inline double p_norm_value(double A, double B, double p)
 {
   const double m = (std::max)(A, B);
   if(!(m > 0.)) return 0.;
   const double t = (std::min)(A, B) / m;
-  const double tp = t > 0. ? std::exp(p * std::log(t)) : 0.;
-  return m * std::exp(std::log1p(tp) / p);
+  if(!(t > 0.)) return m;
+  const double plt = p * std::log(t);
+  if(plt < p_norm_negligible_log) return m;
+  return m * std::exp(std::log1p(std::exp(plt)) / p);
 }
 
 inline P_norm p_norm(double A, double B, double p)
@@ -79,7 +86,15 @@ inline P_norm p_norm(double A, double B, double p)
   }
   const double t = (a_max ? B : A) / m;
   const double lt = t > 0. ? std::log(t) : 0.;
-  const double tp = t > 0. ? std::exp(p * lt) : 0.;
+  if(!(t > 0.) || (p - 1.) * lt < p_norm_negligible_log)
+  {
+    out.N = m;
+    out.dA = a_max ? 1. : 0.;
+    out.dB = a_max ? 0. : 1.;
+    out.H = 0.;
+    return out;
+  }
+  const double tp = std::exp(p * lt);
   const double L = std::log1p(tp);
   out.N = m * std::exp(L / p);
   // (m/N)^(p-1) = (N/m) / (1 + t^p); (n/N)^(p-1) = t^(p-1) (m/N)^(p-1)
