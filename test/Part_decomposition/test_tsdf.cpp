@@ -641,6 +641,31 @@ TEST_CASE("TSDF is deterministic, reads the vertex point map and the normalizati
   CHECK(given.values(v[0], v[1], v[2]) == Approx(sd_sphere(c, {{-0.25, 0., 0.}}, 0.2)).margin(0.5 / 64));
 }
 
+TEST_CASE("TSDF of an open sheet: all outside, distances to the triangles", "[tsdf]")
+{
+  // Two triangles making a slanted square: no inside at all.
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0.3)), c = m.add_vertex(Point(1, 1, 0.5)),
+             d = m.add_vertex(Point(0, 1, 0.2));
+  m.add_face(a, b, c);
+  m.add_face(a, c, d);
+  for(PD::Tsdf_sign_method method : {PD::Tsdf_sign_method::AUTOMATIC, PD::Tsdf_sign_method::FLOOD_FILL})
+    for(int r : {2, 16})
+    {
+      const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(
+        m, PD::parameters::combine(PD::parameters::tsdf_sign_method(method),
+                                   PD::parameters::voxel_resolutions(std::vector<int>{r})));
+      const std::vector<PDI::Triangle_points> tris = PDI::normalized_triangles(m, get(CGAL::vertex_point, m), tsdf.normalization);
+      for(std::size_t i = 0; i < tsdf.values.size(); ++i)
+      {
+        const PDI::Vec3 p = tsdf.values.center(i);
+        double d2 = std::numeric_limits<double>::infinity();
+        for(const auto& t : tris) d2 = std::min(d2, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+        CHECK(tsdf.values[i] == Approx(std::min(std::sqrt(d2), tsdf.truncation)).margin(1e-9));
+      }
+    }
+}
+
 TEST_CASE("TSDF parameters are validated", "[tsdf]")
 {
   const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);

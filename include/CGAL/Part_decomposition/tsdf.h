@@ -92,7 +92,8 @@ namespace internal {
 
 // Gives undecided surface voxels the flag of a 6-adjacent decided voxel whose centre they see
 // without crossing a triangle, in `rounds` rounds (a voxel decided in one round passes its flag on
-// in the next). Exact for a closed surface: an uncrossed segment joins two points of the same side.
+// in the next); the voxels just outside the grid count as decided outside voxels. Exact for a
+// closed surface: an uncrossed segment joins two points of the same side.
 // A segment between adjacent centres lies in the two voxels: only their triangles are tested.
 // Neighbours are tried in a fixed order and rounds are synchronous: the result is deterministic.
 template <typename ConcurrencyTag>
@@ -121,17 +122,21 @@ void spread_to_surface_voxels(const std::vector<Triangle_points>& tris, const Su
       for(std::size_t n = b; n < e; ++n)
       {
         const std::size_t idx = pending[n];
-        const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-        const std::size_t neighbours[6] = {i > 0 ? idx - 1 : size,     i + 1 < R ? idx + 1 : size,
-                                           j > 0 ? idx - R : size,     j + 1 < R ? idx + R : size,
-                                           k > 0 ? idx - R * R : size, k + 1 < R ? idx + R * R : size};
+        const std::array<int, 3> ijk = S.coordinates(idx);
         const P c = point(S.center(idx));
-        for(std::size_t nb : neighbours)
+        for(int dir = 0; dir < 6; ++dir)
         {
-          if(nb == size || decided[nb] == 0) continue;
-          const CGAL::Epick::Segment_3 seg(c, point(S.center(nb)));
-          if(meets_triangles_of(seg, idx) || (S[nb] != 0 && meets_triangles_of(seg, nb))) continue;
-          next_inside[idx] = inside[nb];
+          std::array<int, 3> q = ijk;
+          q[dir / 2] += (dir % 2) ? 1 : -1;
+          // The layer around the grid is outside (the mesh lies in the cube) and holds no triangle.
+          const bool in_grid = S.contains(q[0], q[1], q[2]);
+          const std::size_t nb = in_grid ? S.index(q[0], q[1], q[2]) : size;
+          if(in_grid && decided[nb] == 0) continue;
+          const double h = 1. / double(r);
+          const P other(-0.5 + (q[0] + 0.5) * h, -0.5 + (q[1] + 0.5) * h, -0.5 + (q[2] + 0.5) * h);
+          const CGAL::Epick::Segment_3 seg(c, other);
+          if(meets_triangles_of(seg, idx) || (in_grid && S[nb] != 0 && meets_triangles_of(seg, nb))) continue;
+          next_inside[idx] = in_grid ? inside[nb] : 0;
           next_decided[idx] = 1;
           break;
         }
