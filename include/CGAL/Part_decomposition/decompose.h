@@ -8,11 +8,31 @@
 #ifndef CGAL_PART_DECOMPOSITION_DECOMPOSE_H
 #define CGAL_PART_DECOMPOSITION_DECOMPOSE_H
 
+#include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/superquadric_fitting.h>
+#include <CGAL/Part_decomposition/tsdf.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#include <Eigen/Dense>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -24,20 +44,455 @@ Wall-clock seconds spent in each stage of `decompose()`.
 struct Stage_timings
 {
   double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
-  double tsdf = 0.;              ///< truncated signed distance field and fitting zones
-  double fitting = 0.;           ///< superquadric fitting
+  double tsdf = 0.;              ///< truncated signed distance field
+  double fitting = 0.;           ///< fitting zones and superquadric fitting
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
-  double assignment = 0.;        ///< superquadric-to-mesh assignment
-  double total = 0.;             ///< the whole call
+  double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
+  double total = 0.;             ///< the whole call, input checks included
 };
 
-// Skeleton: the stages are being written; this entry point is completed once they exist.
+namespace internal {
+
+inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The box-like superquadric of the principal-axis bounding box of `points`: what a part gets
+// when no primitive could be fitted to it (a flat sheet has no volume to fit).
+template <typename GeomTraits>
+Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<double, 3> >& points)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for(const std::array<double, 3>& p : points) mean += Eigen::Vector3d(p[0], p[1], p[2]);
+  mean /= double((std::max)(std::size_t(1), points.size()));
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for(const std::array<double, 3>& p : points)
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]) - mean;
+    cov += d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  Eigen::Matrix3d axes = eig.eigenvectors();
+  if(axes.determinant() < 0) axes.col(0) = -axes.col(0);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for(const std::array<double, 3>& p : points)
+  {
+    const Eigen::Vector3d l = axes.transpose() * (Eigen::Vector3d(p[0], p[1], p[2]) - mean);
+    lo = lo.cwiseMin(l);
+    hi = hi.cwiseMax(l);
+  }
+  const Eigen::Vector3d half = (hi - lo) / 2.;
+  const Eigen::Vector3d center = mean + axes * ((hi + lo) / 2.);
+  // flat or degenerate parts still need positive semi-axes
+  const double floor_axis = (std::max)(1e-6 * half.maxCoeff(), std::numeric_limits<double>::min());
+  std::array<double, 3> scales;
+  for(int i = 0; i < 3; ++i) scales[i] = (std::max)(half[i], floor_axis);
+  typename Superquadric<GeomTraits>::Rotation R;
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j) R[3 * i + j] = axes(i, j);
+  return Superquadric<GeomTraits>(scales, 0.1, 0.1, R, Point_3(center[0], center[1], center[2]));
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1):
+`compute_prior()`, `compute_distance_field()`, `fit_primitives()`, `over_segment()` and
+`assign_parts()`, in this order, each keeping its result for inspection. `decompose()` runs them
+all in one call.
+
+Every stage function takes its own named parameters (those of the function it calls, listed in
+its documentation); the mesh, vertex point map and normalization of the decomposer are added to
+them.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam GeomTraits a model of `PartDecompositionTraits`; `CGAL::Default` means the kernel of the
+points of `VertexPointMap`
+\tparam VertexPointMap a model of `ReadablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as
+value type; `CGAL::Default` means the internal vertex point map of `TriangleMesh`
+*/
+template <typename TriangleMesh, typename GeomTraits_ = CGAL::Default, typename VertexPointMap_ = CGAL::Default>
+class Part_decomposer
+{
+public:
+  /// \name Types
+  /// @{
+  /// the vertex point map
+  typedef typename CGAL::Default::Get<
+    VertexPointMap_, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type
+    Vertex_point_map;
+  /// the geometric traits
+  typedef typename CGAL::Default::Get<
+    GeomTraits_, typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type
+    Geom_traits;
+  /// the superquadric type
+  typedef Superquadric<Geom_traits> Primitive;
+  /// @}
+
+  /// \name Creation
+  /// @{
+  /*!
+  prepares the decomposition of `tm`, with its internal vertex point map and the default
+  normalization margin: checks the input and computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  explicit Part_decomposer(const TriangleMesh& tm)
+    : Part_decomposer(tm, get_const_property_map(CGAL::vertex_point, tm))
+  {}
+
+  /*!
+  prepares the decomposition of `tm`: checks the input and computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \param vpm the vertex point map
+  \param margin the free margin of the normalization (see `compute_normalization()`)
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = 2. / 64.)
+    : m_tm(tm), m_vpm(vpm)
+  {
+    check_input(tm, CGAL::parameters::vertex_point_map(m_vpm));
+    m_normalization = compute_normalization(
+      tm, parameters::combine(CGAL::parameters::vertex_point_map(m_vpm), parameters::normalization_margin(margin)));
+  }
+  /// @}
+
+  /// \name Stages
+  /// @{
+  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_has_prior = true;
+    return m_prior;
+  }
+
+  /// computes the truncated signed distance field with `compute_tsdf()`, on the finest grid of
+  /// the prior's resolutions (pass the same `voxel_resolutions` as to `compute_prior()`).
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_tsdf = compute_tsdf<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_has_tsdf = true;
+    return m_tsdf;
+  }
+
+  /// fits the superquadrics with `fit_superquadrics()`.
+  /// \pre `compute_prior()` and `compute_distance_field()` were called.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    CGAL_precondition(m_has_prior && m_has_tsdf);
+    if(!m_has_prior || !m_has_tsdf)
+      throw std::logic_error("Part_decomposer::fit_primitives() needs the prior and the distance field");
+    if(m_tsdf.values.resolution() != m_prior.classes.resolution())
+      throw Invalid_input(Input_error::INVALID_PARAMETER,
+                          "the distance field and the prior were computed at different resolutions");
+    m_fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, np);
+    m_has_fitting = true;
+    return m_fitting;
+  }
+
+  /// computes the curvature-aware over-segmentation with `Part_decomposition::over_segment()`
+  /// and returns the number of patches.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_patches.assign(num_faces(m_tm), 0);
+    m_number_of_patches = Part_decomposition::over_segment<ConcurrencyTag>(m_tm, patch_map(np), with_mesh(np));
+    m_has_patches = true;
+    return m_number_of_patches;
+  }
+
+  /*!
+  assigns every patch to a primitive with `Part_decomposition::assign_parts()`, writes the part
+  id (0 to `K-1`) of every face to `face_part_map` and returns `K`. Part `k` is explained by
+  `part_primitives()[k]`.
+  \tparam FacePartMap a model of `WritablePropertyMap` with
+  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+  \pre `fit_primitives()` and `over_segment()` were called.
+  */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  std::size_t assign_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    CGAL_precondition(m_has_fitting && m_has_patches);
+    if(!m_has_fitting || !m_has_patches)
+      throw std::logic_error("Part_decomposer::assign_parts() needs the primitives and the patches");
+    m_part_to_primitive = Part_decomposition::assign_parts<ConcurrencyTag>(
+      m_tm, patch_map(np), m_fitting.labels, m_normalization, face_part_map,
+      with_mesh(np));
+    make_part_primitives(face_part_map);
+    return m_part_to_primitive.size();
+  }
+  /// @}
+
+  /// \name Results
+  /// @{
+  /// the normalization of the mesh into the cube of the grids.
+  const Normalization& normalization() const { return m_normalization; }
+  /// the prior. \pre `compute_prior()` was called.
+  const Hierarchical_prior& prior() const { return m_prior; }
+  /// the distance field. \pre `compute_distance_field()` was called.
+  const Truncated_signed_distance_field& distance_field() const { return m_tsdf; }
+  /// the fitted primitives and claimed voxels. \pre `fit_primitives()` was called.
+  const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_fitting; }
+  /// the patch of each face, indexed by the face index map. \pre `over_segment()` was called.
+  const std::vector<std::size_t>& patches() const { return m_patches; }
+  /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`
+  /// when no primitive was fitted to it. \pre `assign_parts()` was called.
+  const std::vector<std::size_t>& part_to_primitive() const { return m_part_to_primitive; }
+  /// for each part, its superquadric in input coordinates: the fitted primitive, or, for a part
+  /// without one, the box-like superquadric of its principal-axis bounding box.
+  /// \pre `assign_parts()` was called.
+  const std::vector<Primitive>& part_primitives() const { return m_part_primitives; }
+  /// @}
+
+private:
+  // the patches as a face property map, through the face index map the stages use
+  template <typename NamedParameters>
+  auto patch_map(const NamedParameters& np)
+  {
+    return boost::make_iterator_property_map(m_patches.begin(), CGAL::get_initialized_face_index_map(m_tm, np));
+  }
+
+  template <typename NamedParameters>
+  auto with_mesh(const NamedParameters& np) const
+  {
+    return parameters::combine(np, CGAL::parameters::vertex_point_map(m_vpm),
+                               parameters::normalization(m_normalization));
+  }
+
+  template <typename FacePartMap>
+  void make_part_primitives(FacePartMap face_part_map)
+  {
+    m_part_primitives.clear();
+    std::vector<std::vector<std::array<double, 3> > > orphan_points(m_part_to_primitive.size());
+    bool orphans = false;
+    for(std::size_t k = 0; k < m_part_to_primitive.size(); ++k)
+      orphans = orphans || m_part_to_primitive[k] >= m_fitting.input_primitives.size();
+    if(orphans)
+      for(auto f : faces(m_tm))
+      {
+        const std::size_t k = get(face_part_map, f);
+        if(k >= m_part_to_primitive.size() || m_part_to_primitive[k] < m_fitting.input_primitives.size()) continue;
+        for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
+        {
+          const auto& p = get(m_vpm, v);
+          orphan_points[k].push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+        }
+      }
+    for(std::size_t k = 0; k < m_part_to_primitive.size(); ++k)
+    {
+      if(m_part_to_primitive[k] < m_fitting.input_primitives.size())
+        m_part_primitives.push_back(m_fitting.input_primitives[m_part_to_primitive[k]]);
+      else
+        m_part_primitives.push_back(internal::bounding_superquadric<Geom_traits>(orphan_points[k]));
+    }
+  }
+
+  const TriangleMesh& m_tm;
+  Vertex_point_map m_vpm;
+  Normalization m_normalization;
+  Hierarchical_prior m_prior;
+  Truncated_signed_distance_field m_tsdf;
+  Superquadric_fitting_result<Geom_traits> m_fitting;
+  std::vector<std::size_t> m_patches;
+  std::size_t m_number_of_patches = 0;
+  std::vector<std::size_t> m_part_to_primitive;
+  std::vector<Primitive> m_part_primitives;
+  bool m_has_prior = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+decomposes the triangle mesh `tm` into parts with the Hi-TOPS method (paper Algorithm A.1) and
+writes the part id of every face, from 0 to `K-1`, to `face_part_map`. Each part is explained by
+one superquadric, optionally written to an output iterator. The same input and parameters give
+the same output, whatever the number of threads.
+
+The stages, each also available on its own: `compute_flow_freeze_prior()`, `compute_tsdf()`,
+`fit_superquadrics()`, `over_segment()`, `assign_parts()`; `Part_decomposer` runs them one by
+one. Every named parameter of these functions is accepted here and passed to the stage that reads
+it; the table below lists the parameters of the paper's Table A.1 and those of this function.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+`CGAL::Parallel_if_available_tag` (parallel with TBB when it is linked)
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam FacePartMap a model of `WritablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh: any triangle mesh, open, non-manifold, self-intersecting or made of several
+components
+\param face_part_map receives the part id of each face
+\param np an optional sequence of named parameters among the ones listed below (package parameters
+are chained with `parameters::combine()`)
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a model of `PartDecompositionTraits`}
+    \cgalParamDefault{the kernel of the point type of the vertex point map}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{voxel_resolutions}
+    \cgalParamDescription{\f$R\f$: the resolutions of the prior, coarse to fine, each twice the
+                          previous; the distance field and the fitter use the finest}
+    \cgalParamType{`std::vector<int>`}
+    \cgalParamDefault{`{16, 32, 64}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_points_per_face}
+    \cgalParamDescription{\f$N_{face}\f$: barycentric samples per face (a perfect square)}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`36`}
+  \cgalParamNEnd
+  \cgalParamNBegin{cue_weights}
+    \cgalParamDescription{\f$\lambda\f$: the weights of the curvature mean, curvature deviation,
+                          curvature gradient and normal deviation in the topology score}
+    \cgalParamType{`std::array<double, 4>`}
+    \cgalParamDefault{`{1, 1, 1, 1}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{freeze_ratio}
+    \cgalParamDescription{\f$\alpha\f$: the fraction of active voxels frozen at each resolution}
+    \cgalParamType{`double`, in \f$(0,1)\f$}
+    \cgalParamDefault{`0.15`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tsdf_truncation}
+    \cgalParamDescription{\f$\tau\f$, in voxels of the finest grid}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`8`}
+  \cgalParamNEnd
+  \cgalParamNBegin{flow_zone_tolerance}
+    \cgalParamDescription{the dilation of the Flow zone, in voxels of the fitting resolution}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`2`}
+  \cgalParamNEnd
+  \cgalParamNBegin{trust_region_scales}
+    \cgalParamDescription{\f$\{\eta\}\f$: the semi-axis trust-region scales of the retries}
+    \cgalParamType{`std::vector<double>`}
+    \cgalParamDefault{`{1, 0.5, 0.25}`}
+  \cgalParamNEnd
+  \cgalParamNBegin{body_seed_threshold}
+    \cgalParamDescription{the EDT depth, in voxels of the fitting resolution, below which seeds switch from body to surface}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`1.5`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_body_volume}
+    \cgalParamDescription{\f$V_{min}\f$ of body seeds, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`5`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_surface_volume}
+    \cgalParamDescription{\f$V_{min}\f$ of surface seeds, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`3`}
+  \cgalParamNEnd
+  \cgalParamNBegin{exterior_penalty}
+    \cgalParamDescription{\f$\mu_{ext}\f$: the exterior intrusion penalty}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`5`}
+  \cgalParamNEnd
+  \cgalParamNBegin{dihedral_quantile}
+    \cgalParamDescription{\f$q\f$: the percentile of the dihedral angles above which edges are cut}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`90`}
+  \cgalParamNEnd
+  \cgalParamNBegin{smoothing_iterations}
+    \cgalParamDescription{the boundary-smoothing iterations of the over-segmentation}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{primitive_output_iterator}
+    \cgalParamDescription{receives, for each part in increasing id, its superquadric in input
+                          coordinates: the fitted primitive, or, for a part no primitive could be
+                          fitted to (a flat sheet has no volume), the box-like superquadric of its
+                          principal-axis bounding box}
+    \cgalParamType{a model of `OutputIterator` accepting `Superquadric<GeomTraits>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{stage_timings}
+    \cgalParamDescription{receives the wall-clock time of each stage}
+    \cgalParamType{`Stage_timings*`}
+    \cgalParamDefault{`nullptr`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number `K` of parts.
+
+\pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)
+\throws Invalid_input if `tm` cannot be decomposed (no face, a face that is not a triangle, a
+non-finite coordinate, all vertices equal) or a named parameter is out of its range.
+
+\cgalExample{Part_decomposition/decompose_example.cpp}
+*/
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
           typename FacePartMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-std::size_t decompose(const TriangleMesh&, FacePartMap,
-                      const NamedParameters& = CGAL::parameters::default_values())
+std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
+                      const NamedParameters& np = CGAL::parameters::default_values())
 {
-  throw std::logic_error("decompose: not implemented yet");
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  const auto t0 = std::chrono::steady_clock::now();
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), 2. / 64.);
+  Part_decomposer<TriangleMesh, GT, VPM> decomposer(tm, vpm, margin);
+
+  Stage_timings timings;
+  auto t = std::chrono::steady_clock::now();
+  decomposer.template compute_prior<ConcurrencyTag>(np);
+  timings.prior = internal::seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  decomposer.template compute_distance_field<ConcurrencyTag>(np);
+  timings.tsdf = internal::seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  decomposer.template fit_primitives<ConcurrencyTag>(np);
+  timings.fitting = internal::seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  decomposer.template over_segment<ConcurrencyTag>(np);
+  timings.over_segmentation = internal::seconds_since(t);
+
+  t = std::chrono::steady_clock::now();
+  const std::size_t K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
+  auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),
+                              CGAL::Emptyset_iterator());
+  for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
+  timings.assignment = internal::seconds_since(t);
+
+  timings.total = internal::seconds_since(t0);
+  if(Stage_timings* st = choose_parameter(get_parameter(np, internal_np::stage_timings),
+                                          static_cast<Stage_timings*>(nullptr)))
+    *st = timings;
+  return K;
 }
 
 } // namespace Part_decomposition
