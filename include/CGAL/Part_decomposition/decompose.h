@@ -153,7 +153,7 @@ public:
   \param margin the free margin of the normalization (see `compute_normalization()`)
   \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
   */
-  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = 2. / 64.)
+  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = defaults::normalization_margin)
     : m_tm(tm), m_vpm(vpm)
   {
     check_input(tm, CGAL::parameters::vertex_point_map(m_vpm));
@@ -461,7 +461,7 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
-  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), 2. / 64.);
+  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
   Part_decomposer<TriangleMesh, GT, VPM> decomposer(tm, vpm, margin);
 
   Stage_timings timings;

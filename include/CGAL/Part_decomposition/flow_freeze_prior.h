@@ -421,7 +421,7 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
 
   // Every parameter is checked before any work.
   const std::vector<int> resolutions = internal::checked_resolutions(
-    choose_parameter(get_parameter(np, internal_np::voxel_resolutions), std::vector<int>{16, 32, 64}));
+    choose_parameter(get_parameter(np, internal_np::voxel_resolutions), defaults::voxel_resolutions()));
   const double percentile = internal::curvature_percentile_parameter(np);
   const std::size_t k = internal::number_of_neighbors_parameter(np);
   const std::vector<std::array<double, 3> > barycentric = internal::barycentric_sample_grid_parameter(np);

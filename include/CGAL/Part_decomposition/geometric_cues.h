@@ -47,7 +47,7 @@ double curvature_percentile_parameter(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double p = double(choose_parameter(get_parameter(np, internal_np::curvature_percentile), 99.5));
+  const double p = double(choose_parameter(get_parameter(np, internal_np::curvature_percentile), defaults::curvature_percentile));
   if(!(p >= 0. && p <= 100.))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "curvature_percentile must be in [0, 100]");
   return p;
@@ -58,7 +58,7 @@ std::size_t number_of_neighbors_parameter(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), 8));
+  const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), defaults::number_of_neighbors));
   if(!(k >= 1. && k <= 1e6) || k != std::floor(k))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "number_of_neighbors must be a positive integer");
   return std::size_t(k);

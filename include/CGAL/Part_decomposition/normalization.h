@@ -104,7 +104,7 @@ Normalization compute_normalization(const FaceListGraph& tm,
   typedef typename GetVertexPointMap<FaceListGraph, NamedParameters>::const_type VPM;
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
-  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), 2.0 / 64.);
+  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
   if(!(margin >= 0. && margin <= 0.25))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "normalization_margin must be in [0, 0.25]");
 

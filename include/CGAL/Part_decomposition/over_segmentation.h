@@ -112,12 +112,12 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
                                    get_const_property_map(CGAL::vertex_point, tm));
   const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
 
-  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_quantile), 90.);
+  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_quantile), defaults::dihedral_quantile);
   const double min_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), 0.001);
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), defaults::minimum_patch_size);
   const double max_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), 0.003);
-  const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), 1);
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), defaults::maximum_patch_size);
+  const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), int(defaults::smoothing_iterations));
   if(!(q >= 0. && q <= 100.))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_quantile must be in [0, 100]");
   if(!(min_size >= 0. && min_size <= 1.))

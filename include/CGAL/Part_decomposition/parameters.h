@@ -11,6 +11,10 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <array>
+#include <cstddef>
+#include <vector>
+
 namespace CGAL {
 namespace Part_decomposition {
 
@@ -57,6 +61,59 @@ namespace Part_decomposition {
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
+
+/*!
+\ingroup PkgPartDecompositionRef
+The default value of each numerical named parameter of the package: the paper's Table A.1 where
+it gives one, the choices of this implementation (documented with the functions that read them)
+elsewhere. Every function of the package takes its defaults from here.
+*/
+namespace defaults {
+/// \f$R\f$, the resolutions of the prior
+inline std::vector<int> voxel_resolutions() { return {16, 32, 64}; }
+/// \f$N_{face}\f$, barycentric samples per face
+constexpr unsigned int number_of_points_per_face = 36;
+/// \f$k\f$, the neighbours of the normal deviation cue
+constexpr unsigned int number_of_neighbors = 8;
+/// the percentile at which the vertex curvature is clipped
+constexpr double curvature_percentile = 99.5;
+/// \f$\lambda\f$, the cue weights of the topology score
+constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
+/// \f$\alpha\f$, the Freeze ratio
+constexpr double freeze_ratio = 0.15;
+/// the free margin of the normalization, two voxels of the \f$64^3\f$ grid
+constexpr double normalization_margin = 2. / 64.;
+/// \f$\tau\f$, the truncation of the distance field, in voxels of the finest grid
+constexpr double tsdf_truncation = 8.;
+/// the dilation of the Flow zone, in voxels of the fitting resolution
+constexpr double flow_zone_tolerance = 2.;
+/// \f$\{\eta\}\f$, the semi-axis trust-region scales of the retries
+inline std::vector<double> trust_region_scales() { return {1., 0.5, 0.25}; }
+/// the body-to-surface seed switch, in voxels of the fitting resolution
+constexpr double body_seed_threshold = 1.5;
+/// \f$V_{min}\f$ of body seeds, in voxels
+constexpr double minimum_body_volume = 5.;
+/// \f$V_{min}\f$ of surface seeds, in voxels
+constexpr double minimum_surface_volume = 3.;
+/// \f$\mu_{ext}\f$, the exterior intrusion penalty
+constexpr double exterior_penalty = 5.;
+/// the coverage of the valid volume that ends a fitting stage
+constexpr double coverage_target = 0.95;
+/// the radius of the region of interest of a seed, in voxels of the fitting resolution
+constexpr double roi_radius = 8.;
+/// the most primitives a fit may accept
+constexpr std::size_t maximum_number_of_primitives = 256;
+/// \f$q\f$, the dihedral percentile of the over-segmentation cut
+constexpr double dihedral_quantile = 90.;
+/// the boundary-smoothing iterations of the over-segmentation
+constexpr unsigned int smoothing_iterations = 1;
+/// the area below which a patch is merged into a neighbour, as a fraction of the mesh area
+constexpr double minimum_patch_size = 0.001;
+/// the area above which a patch is split, as a fraction of the mesh area
+constexpr double maximum_patch_size = 0.003;
+/// \f$\tau_v\f$, the temperature of the patch vote, in voxels of the finest grid
+constexpr double vote_temperature = 1.;
+} // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {

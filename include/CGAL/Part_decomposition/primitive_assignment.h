@@ -210,7 +210,7 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
   const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
-  const double temperature = choose_parameter(get_parameter(np, internal_np::vote_temperature), 1.0);
+  const double temperature = choose_parameter(get_parameter(np, internal_np::vote_temperature), defaults::vote_temperature);
   if(!(temperature > 0.) || !std::isfinite(temperature))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "vote_temperature must be positive and finite");
   CGAL_precondition(CGAL::is_triangle_mesh(tm));

@@ -243,7 +243,7 @@ std::vector<std::array<double, 3> > barycentric_sample_grid_parameter(const Name
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face), 36));
+  const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face), defaults::number_of_points_per_face));
   if(!(n >= 1. && n <= 1e7) || n != std::floor(n))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "number_of_points_per_face must be a positive perfect square");
   return barycentric_sample_grid(std::size_t(n));
@@ -255,7 +255,7 @@ std::array<double, 4> cue_weights_parameter(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   return to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights),
-                                         std::array<double, 4>{{1., 1., 1., 1.}}));
+                                         defaults::cue_weights));
 }
 
 template <typename NamedParameters>
@@ -263,7 +263,7 @@ double freeze_ratio_parameter(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  return checked_freeze_ratio(double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), 0.15)));
+  return checked_freeze_ratio(double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), defaults::freeze_ratio)));
 }
 
 template <typename TriangleMesh, typename NamedParameters>

@@ -1,0 +1,523 @@
+// hitops: the Hi-TOPS part decomposition of a mesh file, or of a list of files, from the command line.
+//
+//   hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]
+//                [--primitive-mesh OUT.off] [--threads N] [parameter options]
+//   hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]
+//
+// `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
+// status 1; output files are written to a temporary name and renamed once complete, so a failed
+// run never leaves a partial file.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/decompose.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Part_decomposition::Superquadric<K> Superquadric;
+namespace PD = CGAL::Part_decomposition;
+namespace PDP = CGAL::Part_decomposition::parameters;
+
+// A user error: one line on stderr, exit status 1.
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::string input, labels, colored, primitives, primitive_mesh;
+  std::string batch, out_dir;
+  std::size_t shard = 0, shards = 1;
+  int threads = 0;
+  bool timings = false, verbose = false;
+  // the named parameters, at the library's defaults
+  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
+  unsigned int samples_per_face = PD::defaults::number_of_points_per_face;
+  unsigned int neighbors = PD::defaults::number_of_neighbors;
+  double curvature_percentile = PD::defaults::curvature_percentile;
+  std::array<double, 4> cue_weights = PD::defaults::cue_weights;
+  double freeze_ratio = PD::defaults::freeze_ratio;
+  double margin = PD::defaults::normalization_margin;
+  double truncation = PD::defaults::tsdf_truncation;
+  PD::Tsdf_sign_method sign_method = PD::Tsdf_sign_method::AUTOMATIC;
+  double flow_tolerance = PD::defaults::flow_zone_tolerance;
+  std::vector<double> trust_region_scales = PD::defaults::trust_region_scales();
+  double body_seed_threshold = PD::defaults::body_seed_threshold;
+  double min_body_volume = PD::defaults::minimum_body_volume;
+  double min_surface_volume = PD::defaults::minimum_surface_volume;
+  double exterior_penalty = PD::defaults::exterior_penalty;
+  double coverage = PD::defaults::coverage_target;
+  double roi_radius = PD::defaults::roi_radius;
+  PD::Interior_weight_mode interior_weight = PD::Interior_weight_mode::ONE_SHOT;
+  std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
+  bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
+  double dihedral_quantile = PD::defaults::dihedral_quantile;
+  unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
+  double min_patch_size = PD::defaults::minimum_patch_size;
+  double max_patch_size = PD::defaults::maximum_patch_size;
+  double vote_temperature = PD::defaults::vote_temperature;
+};
+
+const char* const usage_text =
+  "usage: hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]\n"
+  "                    [--primitive-mesh OUT.off] [--threads N] [parameter options]\n"
+  "       hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]\n"
+  "\n"
+  "Decomposes a triangle mesh (OFF, OBJ, PLY, STL) into parts with the Hi-TOPS method.\n"
+  "\n"
+  "outputs:\n"
+  "  --labels FILE            one part id per line, one line per face of INPUT, in its order\n"
+  "  --colored FILE           the mesh as PLY with one colour per part\n"
+  "  --primitives FILE        the superquadric of each part as JSON, in INPUT's coordinates\n"
+  "  --primitive-mesh FILE    the superquadrics as one triangle mesh (OFF)\n"
+  "  --timings                print the time of each stage on stderr\n"
+  "  --verbose                print what each stage does on stderr\n"
+  "  --threads N              number of threads (default: all cores)\n"
+  "batch processing:\n"
+  "  --batch LIST             a file with one mesh path per line (# starts a comment)\n"
+  "  --out DIR                writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
+  "                           DIR/summary[.I-of-N].tsv; meshes whose outputs exist are skipped\n"
+  "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
+  "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
+  "  --resolutions 16,32,64   voxel resolutions of the prior, coarse to fine\n"
+  "  --samples-per-face 36    barycentric samples per face (a perfect square)\n"
+  "  --neighbors 8            neighbours of the normal deviation cue\n"
+  "  --curvature-percentile 99.5\n"
+  "  --cue-weights 1,1,1,1    weights of curvature mean, deviation, gradient, normal deviation\n"
+  "  --freeze-ratio 0.15      fraction of frozen voxels per resolution\n"
+  "  --margin 0.03125         free margin of the normalized cube\n"
+  "  --truncation 8           TSDF truncation, voxels of the finest grid\n"
+  "  --sign-method M          auto, inside, winding or flood\n"
+  "  --flow-tolerance 2       Flow-zone dilation, voxels of the fitting resolution\n"
+  "  --trust-region-scales 1,0.5,0.25\n"
+  "  --body-seed-threshold 1.5\n"
+  "  --min-body-volume 5      --min-surface-volume 3\n"
+  "  --exterior-penalty 5     --coverage 0.95     --roi-radius 8\n"
+  "  --interior-weight M      one-shot or mps\n"
+  "  --max-primitives 256\n"
+  "  --no-freeze --no-tsdf --no-body-seeds   ablations of the paper\n"
+  "  --dihedral-quantile 90   --smoothing-iterations 1\n"
+  "  --min-patch-size 0.001   --max-patch-size 0.003   (fractions of the mesh area)\n"
+  "  --vote-temperature 1     voxels of the finest grid\n";
+
+double to_number(const std::string& option, const std::string& text)
+{
+  std::istringstream in(text);
+  double v;
+  char extra;
+  if(!(in >> v) || (in >> extra) || !std::isfinite(v))
+    throw Usage_error("option " + option + " expects a number, got '" + text + "'");
+  return v;
+}
+
+unsigned int to_count(const std::string& option, const std::string& text)
+{
+  const double v = to_number(option, text);
+  if(v < 0 || v != std::floor(v) || v > 1e9)
+    throw Usage_error("option " + option + " expects a non-negative integer, got '" + text + "'");
+  return static_cast<unsigned int>(v);
+}
+
+std::vector<double> to_numbers(const std::string& option, const std::string& text)
+{
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while(std::getline(in, item, ',')) out.push_back(to_number(option, item));
+  if(out.empty()) throw Usage_error("option " + option + " expects a comma-separated list");
+  return out;
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
+      return argv[++i];
+    };
+    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(EXIT_SUCCESS); }
+    else if(a == "--labels") o.labels = value();
+    else if(a == "--colored") o.colored = value();
+    else if(a == "--primitives") o.primitives = value();
+    else if(a == "--primitive-mesh") o.primitive_mesh = value();
+    else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
+    else if(a == "--timings") o.timings = true;
+    else if(a == "--verbose") o.verbose = true;
+    else if(a == "--batch") o.batch = value();
+    else if(a == "--out") o.out_dir = value();
+    else if(a == "--shard")
+    {
+      const std::string s = value();
+      const std::size_t slash = s.find('/');
+      if(slash == std::string::npos) throw Usage_error("--shard expects I/N");
+      o.shard = to_count(a, s.substr(0, slash));
+      o.shards = to_count(a, s.substr(slash + 1));
+      if(o.shards < 1 || o.shard >= o.shards) throw Usage_error("--shard expects I/N with 0 <= I < N");
+    }
+    else if(a == "--resolutions")
+    {
+      o.resolutions.clear();
+      for(double r : to_numbers(a, value())) o.resolutions.push_back(int(r));
+    }
+    else if(a == "--samples-per-face") o.samples_per_face = to_count(a, value());
+    else if(a == "--neighbors") o.neighbors = to_count(a, value());
+    else if(a == "--curvature-percentile") o.curvature_percentile = to_number(a, value());
+    else if(a == "--cue-weights")
+    {
+      const std::vector<double> w = to_numbers(a, value());
+      if(w.size() != 4) throw Usage_error("--cue-weights expects four numbers");
+      for(int k = 0; k < 4; ++k) o.cue_weights[k] = w[k];
+    }
+    else if(a == "--freeze-ratio") o.freeze_ratio = to_number(a, value());
+    else if(a == "--margin") o.margin = to_number(a, value());
+    else if(a == "--truncation") o.truncation = to_number(a, value());
+    else if(a == "--sign-method")
+    {
+      const std::string m = value();
+      if(m == "auto") o.sign_method = PD::Tsdf_sign_method::AUTOMATIC;
+      else if(m == "inside") o.sign_method = PD::Tsdf_sign_method::INSIDE_TEST;
+      else if(m == "winding") o.sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
+      else if(m == "flood") o.sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
+      else throw Usage_error("--sign-method expects auto, inside, winding or flood");
+    }
+    else if(a == "--flow-tolerance") o.flow_tolerance = to_number(a, value());
+    else if(a == "--trust-region-scales") o.trust_region_scales = to_numbers(a, value());
+    else if(a == "--body-seed-threshold") o.body_seed_threshold = to_number(a, value());
+    else if(a == "--min-body-volume") o.min_body_volume = to_number(a, value());
+    else if(a == "--min-surface-volume") o.min_surface_volume = to_number(a, value());
+    else if(a == "--exterior-penalty") o.exterior_penalty = to_number(a, value());
+    else if(a == "--coverage") o.coverage = to_number(a, value());
+    else if(a == "--roi-radius") o.roi_radius = to_number(a, value());
+    else if(a == "--interior-weight")
+    {
+      const std::string m = value();
+      if(m == "one-shot") o.interior_weight = PD::Interior_weight_mode::ONE_SHOT;
+      else if(m == "mps") o.interior_weight = PD::Interior_weight_mode::MPS_REESTIMATED;
+      else throw Usage_error("--interior-weight expects one-shot or mps");
+    }
+    else if(a == "--max-primitives") o.max_primitives = to_count(a, value());
+    else if(a == "--no-freeze") o.use_freeze = false;
+    else if(a == "--no-tsdf") o.use_tsdf = false;
+    else if(a == "--no-body-seeds") o.use_body_seeds = false;
+    else if(a == "--dihedral-quantile") o.dihedral_quantile = to_number(a, value());
+    else if(a == "--smoothing-iterations") o.smoothing_iterations = to_count(a, value());
+    else if(a == "--min-patch-size") o.min_patch_size = to_number(a, value());
+    else if(a == "--max-patch-size") o.max_patch_size = to_number(a, value());
+    else if(a == "--vote-temperature") o.vote_temperature = to_number(a, value());
+    else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a + " (see --help)");
+    else if(o.input.empty()) o.input = a;
+    else throw Usage_error("more than one input file: '" + o.input + "' and '" + a + "'");
+  }
+  if(o.batch.empty() && o.input.empty()) throw Usage_error("no input file (see --help)");
+  if(!o.batch.empty() && !o.input.empty()) throw Usage_error("give either an input file or --batch, not both");
+  if(!o.batch.empty() && o.out_dir.empty()) throw Usage_error("--batch needs --out DIR");
+  return o;
+}
+
+// Files written under a temporary name, renamed into place only when all of them are complete.
+class Atomic_outputs
+{
+public:
+  ~Atomic_outputs()
+  {
+    for(const auto& f : m_files) std::remove(f.second.c_str());
+  }
+  std::ofstream& open(const std::string& path)
+  {
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    m_files.emplace_back(path, tmp);
+    m_streams.emplace_back(new std::ofstream(tmp, std::ios::binary));
+    if(!*m_streams.back()) throw std::runtime_error("cannot write '" + path + "'");
+    m_streams.back()->precision(17);
+    return *m_streams.back();
+  }
+  void commit()
+  {
+    for(auto& s : m_streams)
+    {
+      s->flush();
+      if(!*s) throw std::runtime_error("write error");
+      s->close();
+    }
+    for(const auto& f : m_files)
+      if(std::rename(f.second.c_str(), f.first.c_str()) != 0)
+        throw std::runtime_error("cannot write '" + f.first + "'");
+    m_files.clear();
+  }
+
+private:
+  std::vector<std::pair<std::string, std::string> > m_files;
+  std::vector<std::unique_ptr<std::ofstream> > m_streams;
+};
+
+// A distinct, saturated colour per part (golden-ratio hue steps).
+std::array<int, 3> part_colour(std::size_t k)
+{
+  const double h = std::fmod(0.13 + 0.618033988749895 * double(k), 1.) * 6.;
+  const double s = (k % 3 == 2) ? 0.55 : 0.8, v = (k % 2) ? 0.8 : 0.95;
+  const int i = int(h);
+  const double f = h - i, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  double r, g, b;
+  switch(i % 6)
+  {
+    case 0: r = v; g = t; b = p; break;
+    case 1: r = q; g = v; b = p; break;
+    case 2: r = p; g = v; b = t; break;
+    case 3: r = p; g = q; b = v; break;
+    case 4: r = t; g = p; b = v; break;
+    default: r = v; g = p; b = q; break;
+  }
+  return {{int(std::lround(255 * r)), int(std::lround(255 * g)), int(std::lround(255 * b))}};
+}
+
+struct Result
+{
+  std::size_t parts = 0;
+  std::vector<std::size_t> face_part; // per mesh face, in the iteration order of faces(mesh)
+  std::vector<Superquadric> primitives;
+  PD::Stage_timings timings;
+};
+
+Result run(const Mesh& mesh, const Options& o)
+{
+  Result r;
+  std::vector<std::size_t> part(num_faces(mesh), 0);
+  auto part_map = CGAL::make_property_map(part); // Surface_mesh face indices are 0..F-1 here
+  r.parts = PD::decompose(
+    mesh, part_map,
+    PDP::combine(CGAL::parameters::number_of_points_per_face(o.samples_per_face).verbose(o.verbose),
+                 PDP::voxel_resolutions(o.resolutions), PDP::number_of_neighbors(o.neighbors),
+                 PDP::curvature_percentile(o.curvature_percentile), PDP::cue_weights(o.cue_weights),
+                 PDP::freeze_ratio(o.freeze_ratio), PDP::normalization_margin(o.margin),
+                 PDP::tsdf_truncation(o.truncation), PDP::tsdf_sign_method(o.sign_method),
+                 PDP::flow_zone_tolerance(o.flow_tolerance), PDP::trust_region_scales(o.trust_region_scales),
+                 PDP::body_seed_threshold(o.body_seed_threshold), PDP::minimum_body_volume(o.min_body_volume),
+                 PDP::minimum_surface_volume(o.min_surface_volume), PDP::exterior_penalty(o.exterior_penalty),
+                 PDP::coverage_target(o.coverage), PDP::roi_radius(o.roi_radius),
+                 PDP::interior_weight_mode(o.interior_weight), PDP::maximum_number_of_primitives(o.max_primitives),
+                 PDP::use_freeze_zone(o.use_freeze), PDP::use_tsdf_guidance(o.use_tsdf),
+                 PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_quantile(o.dihedral_quantile),
+                 PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
+                 PDP::maximum_patch_size(o.max_patch_size), PDP::vote_temperature(o.vote_temperature),
+                 PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
+                 PDP::stage_timings(&r.timings)));
+  r.face_part.assign(part.begin(), part.end());
+  return r;
+}
+
+void write_labels(std::ostream& out, const PD::IO::Mesh_file_info& info, const Result& r)
+{
+  for(std::size_t label : PD::IO::labels_in_file_order(info, r.face_part)) out << label << '\n';
+}
+
+void write_colored(std::ostream& out, const Mesh& mesh, const Result& r)
+{
+  out << "ply\nformat ascii 1.0\ncomment Hi-TOPS parts: one colour per part\n"
+      << "element vertex " << num_vertices(mesh) << "\nproperty double x\nproperty double y\nproperty double z\n"
+      << "element face " << num_faces(mesh) << "\nproperty list uchar int vertex_indices\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty int part\nend_header\n";
+  std::map<Mesh::Vertex_index, std::size_t> index; // vertices are renumbered densely
+  for(Mesh::Vertex_index v : vertices(mesh))
+  {
+    index.emplace(v, index.size());
+    const K::Point_3& p = mesh.point(v);
+    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  std::size_t i = 0;
+  for(Mesh::Face_index f : faces(mesh))
+  {
+    const std::size_t k = r.face_part[i++];
+    const std::array<int, 3> c = part_colour(k);
+    out << 3;
+    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh)) out << ' ' << index[v];
+    out << ' ' << c[0] << ' ' << c[1] << ' ' << c[2] << ' ' << k << '\n';
+  }
+}
+
+void write_primitives(std::ostream& out, const Result& r)
+{
+  out << "{\"primitives\":[";
+  for(std::size_t k = 0; k < r.primitives.size(); ++k)
+  {
+    const Superquadric& q = r.primitives[k];
+    const auto R = q.rotation();
+    const auto a = q.scales();
+    const K::Point_3 c = q.center();
+    out << (k ? ",\n" : "\n") << "{\"part\":" << k << ",\"center\":[" << c.x() << ',' << c.y() << ',' << c.z()
+        << "],\"rotation\":[[" << R[0] << ',' << R[1] << ',' << R[2] << "],[" << R[3] << ',' << R[4] << ','
+        << R[5] << "],[" << R[6] << ',' << R[7] << ',' << R[8] << "]],\"scale\":[" << a[0] << ',' << a[1]
+        << ',' << a[2] << "],\"exponents\":[" << q.epsilon1() << ',' << q.epsilon2() << "]}";
+  }
+  out << "\n]}\n";
+}
+
+void write_primitive_mesh(std::ostream& out, const Result& r)
+{
+  Mesh all;
+  for(const Superquadric& q : r.primitives)
+  {
+    Mesh one;
+    q.to_triangle_mesh(one, 24);
+    all.join(one);
+  }
+  if(!CGAL::IO::write_OFF(out, all)) throw std::runtime_error("cannot write the primitive mesh");
+}
+
+void print_timings(const std::string& name, const Mesh& mesh, const Result& r, double read_seconds)
+{
+  const PD::Stage_timings& t = r.timings;
+  std::cerr << std::fixed << std::setprecision(3) << name << ": " << num_faces(mesh) << " faces, "
+            << r.parts << " parts; seconds: read " << read_seconds << ", prior " << t.prior << ", tsdf "
+            << t.tsdf << ", fitting " << t.fitting << ", over-segmentation " << t.over_segmentation
+            << ", assignment " << t.assignment << ", total " << t.total << std::endl;
+}
+
+int single(const Options& o)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(o.input, mesh);
+  const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Result r = run(mesh, o);
+
+  Atomic_outputs outputs;
+  if(!o.labels.empty()) write_labels(outputs.open(o.labels), info, r);
+  if(!o.colored.empty()) write_colored(outputs.open(o.colored), mesh, r);
+  if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
+  if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
+  outputs.commit();
+
+  if(o.timings) print_timings(o.input, mesh, r, read_seconds);
+  std::cout << o.input << ": " << num_faces(mesh) << " faces, " << r.parts << " parts" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+std::string stem(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = name.find_last_of('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+bool file_exists(const std::string& path)
+{
+  return std::ifstream(path).good();
+}
+
+// One line per mesh of the shard: name, status, faces, parts, seconds, message.
+int batch(const Options& o)
+{
+  std::ifstream list(o.batch);
+  if(!list) throw Usage_error("cannot read the list '" + o.batch + "'");
+  std::vector<std::string> paths;
+  for(std::string line; std::getline(list, line);)
+  {
+    while(!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    std::size_t b = line.find_first_not_of(" \t");
+    if(b == std::string::npos || line[b] == '#') continue;
+    paths.push_back(line.substr(b));
+  }
+  // names must be unique in the output folder: repeated stems get their rank appended
+  std::map<std::string, std::size_t> stem_count;
+  for(const std::string& p : paths) ++stem_count[stem(p)];
+
+  const std::string suffix = o.shards > 1 ? "." + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) : "";
+  Atomic_outputs summary_file;
+  std::ostream& summary = summary_file.open(o.out_dir + "/summary" + suffix + ".tsv");
+  summary << "name\tinput\tstatus\tfaces\tparts\tseconds\tmessage\n";
+  std::size_t done = 0, skipped = 0, failed = 0;
+  for(std::size_t i = 0; i < paths.size(); ++i)
+  {
+    if(i % o.shards != o.shard) continue;
+    const std::string name = stem_count[stem(paths[i])] > 1 ? stem(paths[i]) + "_" + std::to_string(i) : stem(paths[i]);
+    const std::string seg = o.out_dir + "/" + name + ".seg", json = o.out_dir + "/" + name + ".json";
+    if(file_exists(seg) && file_exists(json))
+    {
+      ++skipped;
+      summary << name << '\t' << paths[i] << "\tskipped\t\t\t\talready done\n";
+      continue;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    try
+    {
+      Mesh mesh;
+      const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(paths[i], mesh);
+      const Result r = run(mesh, o);
+      Atomic_outputs outputs;
+      write_labels(outputs.open(seg), info, r);
+      write_primitives(outputs.open(json), r);
+      outputs.commit();
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      summary << name << '\t' << paths[i] << "\tok\t" << info.number_of_input_faces << '\t' << r.parts << '\t'
+              << s << "\t\n";
+      if(o.timings) print_timings(paths[i], mesh, r, 0.);
+      ++done;
+    }
+    catch(const std::exception& e)
+    {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::string message = e.what();
+      for(char& c : message)
+        if(c == '\t' || c == '\n') c = ' ';
+      summary << name << '\t' << paths[i] << "\tfailed\t\t\t" << s << '\t' << message << '\n';
+      std::cerr << "hitops: " << paths[i] << ": " << message << std::endl;
+      ++failed;
+    }
+    summary.flush();
+  }
+  summary_file.commit();
+  std::cout << "batch: " << done << " decomposed, " << skipped << " skipped, " << failed << " failed" << std::endl;
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    const Options o = parse(argc, argv);
+#ifdef CGAL_LINKED_WITH_TBB
+    std::unique_ptr<tbb::global_control> limit;
+    if(o.threads > 0)
+      limit.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads)));
+#endif
+    return o.batch.empty() ? single(o) : batch(o);
+  }
+  catch(const std::exception& e)
+  {
+    std::string message = e.what();
+    for(char& c : message)
+      if(c == '\n') c = ' ';
+    std::cerr << "hitops: error: " << message << std::endl;
+    return EXIT_FAILURE;
+  }
+}
