@@ -2,6 +2,7 @@
 //
 // Usage: bench_superquadric_fitting [--threads N] [--runs R] [--mode mps|oneshot] [--roi X]
 //        [--no-exterior-band] [--no-connected] [--max-samples N] [--max-evals N] [--ftol X]
+//        [--surface-exclusion F] [--rejections K]
 //        [--verbose] mesh...
 // Per mesh: the median fitting time over R runs (prior and TSDF excluded), the number of
 // primitives, seeds, rejections, solves and residual evaluations; then, if NAME_k.seg files lie
@@ -81,6 +82,8 @@ int main(int argc, char** argv)
     else if(a == "--max-samples" && i + 1 < argc) options.maximum_samples = std::size_t(std::atol(argv[++i]));
     else if(a == "--max-evals" && i + 1 < argc) options.maximum_evaluations = std::atoi(argv[++i]);
     else if(a == "--ftol" && i + 1 < argc) options.function_tolerance = std::atof(argv[++i]);
+    else if(a == "--surface-exclusion" && i + 1 < argc) options.surface_exclusion = std::atof(argv[++i]);
+    else if(a == "--rejections" && i + 1 < argc) options.consecutive_rejections = std::size_t(std::atol(argv[++i]));
     else if(a == "--verbose") verbose = true;
     else files.push_back(a);
   }

@@ -122,6 +122,8 @@ struct Sdfsqfit_options
   double surface_test_spacing = 1.;  // Flow-zone test sample spacing, in finest voxels (the zone
                                      // tolerance is >= 4 of them)
   int maximum_evaluations = 40;      // per least-squares solve
+  double surface_exclusion = 0.5;    // a rejected surface seed excludes this fraction of rho
+  std::size_t consecutive_rejections = 4; // a stage ends after this many rejections in a row (0: never)
   double function_tolerance = 1e-8;  // relative gain below which a solve stops
 };
 
@@ -201,6 +203,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     }
   }
 
+  const double surface_exclusion_fraction = options.surface_exclusion;
   // wall-clock breakdown, printed when verbose
   double t_setup = 0., t_seed = 0., t_roi = 0., t_fit = 0., t_test = 0., t_claim = 0., t_merge = 0.;
   auto clock = [] { return std::chrono::steady_clock::now(); };
@@ -268,10 +271,11 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     Voxel_grid<double> body_sqd = squared_distance_transform<ConcurrencyTag>(not_body);
     t_setup += seconds_since(t0);
 
-    std::size_t seeds_this_stage = 0;
+    std::size_t seeds_this_stage = 0, rejections_in_a_row = 0;
     const std::size_t seed_cap = 16 * (std::max<std::size_t>)(maximum_primitives, 16);
     while(n_valid > 0 && double(n_covered) < coverage_target * double(n_valid) &&
-          result.primitives.size() < maximum_primitives && seeds_this_stage < seed_cap)
+          result.primitives.size() < maximum_primitives && seeds_this_stage < seed_cap &&
+          (options.consecutive_rejections == 0 || rejections_in_a_row < options.consecutive_rejections))
     {
       // ---- BodyOrSurfaceSeed (A.2-A.4)
       t0 = clock();
@@ -289,7 +293,6 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
         candidates.resize(kept);
       }
       bool body_seed = use_body_seeds && seed < N && std::sqrt(seed_sqd) * delta >= body_threshold * delta_fit;
-      std::vector<std::size_t> surface_component;
       if(!body_seed)
       {
         Voxel_grid<std::uint8_t> open(R, 0);
@@ -308,7 +311,6 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
         for(std::size_t v : candidates)
           if(comps.labels[v] == int(best))
           {
-            surface_component.push_back(v);
             const std::array<int, 3> ijk = prior.classes.coordinates(v);
             const double d = (ijk[0] - g[0]) * (ijk[0] - g[0]) + (ijk[1] - g[1]) * (ijk[1] - g[1]) +
                              (ijk[2] - g[2]) * (ijk[2] - g[2]);
@@ -323,10 +325,13 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
 
       auto reject = [&]() {
         ++result.number_of_rejected_seeds;
-        if(body_seed)
+        ++rejections_in_a_row;
         {
-          // the seed's inscribed ball would restart from the same place: exclude it from seeding
-          const double rad = (std::max)(1., std::sqrt(seed_sqd));
+          // Seeds near this one would start from the same place and see nearly the same region:
+          // exclude the seed's inscribed ball (body seed), or the half-ROI ball (surface seed;
+          // the rest of its component is seeded again at the centroid of what remains).
+          const double rad = body_seed ? (std::max)(1., std::sqrt(seed_sqd))
+                                       : (std::max)(1., (surface_exclusion_fraction * rho) / delta);
           const std::array<int, 3> s = prior.classes.coordinates(seed);
           const int ir = int(std::floor(rad));
           for(int k = (std::max)(0, s[2] - ir); k <= (std::min)(R - 1, s[2] + ir); ++k)
@@ -337,8 +342,6 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
                 if(d2 <= rad * rad) excluded[prior.classes.index(i, j, k)] = 1;
               }
         }
-        else
-          for(std::size_t v : surface_component) excluded[v] = 1;
         excluded[seed] = 1;
       };
 
@@ -544,6 +547,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
         }
       }
       excluded[seed] = 1;
+      rejections_in_a_row = 0;
       add_features_to_squared_distance_transform<ConcurrencyTag>(body_sqd, claim_new_body);
       const SQ sq(fit.theta);
       result.primitives.push_back(sq);
@@ -650,7 +654,10 @@ Choices where the paper is silent (measured on the development meshes, see the p
 - Bounds: semi-axes in \f$[\Delta^{r_{fit}}/4, \rho]\f$, exponents in \f$[10^{-3}, 2]\f$, centre
   within \f$\rho/2\f$ of the seed; rotations are unbounded (body-frame increments).
 - A rejected body seed excludes its inscribed ball from later seeds of the stage, a rejected
-  surface seed its component; components smaller than \f$V_{min}\f$ are not seeded.
+  surface seed the ball of radius \f$\rho/2\f$ around it (the rest of its component is seeded
+  again at the centroid of what remains); components smaller than \f$V_{min}\f$ are not seeded;
+  a stage also ends after 4 rejected seeds in a row (the paper's iteration budget; on the
+  development meshes it removed 22% of the solves and slightly improved the parts).
 - Claimed voxels include reserved voxels of finer stages (Alg. A.2 line 22); the volume test
   does not count them.
 - FitSDF runs the projected Levenberg-Marquardt solver of the package (active-set freezing,
