@@ -124,13 +124,21 @@ Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes,
     for(std::size_t i = 0; i < classes.size(); ++i)
       if(classes[i] == Voxel_class::FREEZE) zones.freeze_zone[i] = 1;
 
-  const Voxel_grid<std::uint8_t> hull = internal::complement(zones.exterior);
+  // One distance transform of the hull serves every dilation radius.
+  const Voxel_grid<double> to_hull =
+    internal::squared_distance_transform<ConcurrencyTag>(internal::complement(zones.exterior));
   for(int r_fit : fitting_resolutions)
   {
     if(zones.flow_zone.count(r_fit) != 0) continue;
     const double radius = tolerance * double(r) / double(r_fit);
-    Voxel_grid<std::uint8_t> flow = internal::dilate<ConcurrencyTag>(hull, radius);
-    const Voxel_grid<double> d2 = internal::squared_distance_transform<ConcurrencyTag>(internal::complement(flow), true);
+    const double limit = radius * radius * (1. + 1e-12) + 1e-9; // as in internal::dilate()
+    Voxel_grid<std::uint8_t> flow(r, 0), outside(r, 0);
+    for(std::size_t i = 0; i < flow.size(); ++i)
+    {
+      flow[i] = to_hull[i] <= limit ? 1 : 0;
+      outside[i] = 1 - flow[i];
+    }
+    const Voxel_grid<double> d2 = internal::squared_distance_transform<ConcurrencyTag>(outside, true);
     Voxel_grid<double> distance(r, 0.);
     for(std::size_t i = 0; i < distance.size(); ++i)
       if(flow[i] != 0) distance[i] = std::sqrt(d2[i]) / double(r);

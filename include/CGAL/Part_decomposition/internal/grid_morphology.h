@@ -124,6 +124,36 @@ inline void lower_envelope_1d(int n, bool border_sites, Envelope_buffers& b)
   }
 }
 
+// The same as `lower_envelope_1d()` when every f[p] is 0 or infinite (the first pass over a mask):
+// two sweeps for the nearest site on each side.
+inline void binary_distance_1d(int n, bool border_sites, Envelope_buffers& b)
+{
+  const int none = std::numeric_limits<int>::min() / 2;
+  int last = border_sites ? -1 : none;
+  for(int q = 0; q < n; ++q)
+  {
+    if(b.f[q] == 0.) last = q;
+    b.v[q] = last; // nearest site at or before q
+  }
+  int next = border_sites ? n : std::numeric_limits<int>::max() / 2;
+  for(int q = n - 1; q >= 0; --q)
+  {
+    if(b.f[q] == 0.) next = q;
+    const int before = b.v[q];
+    const double db = before == none ? no_feature_distance() : double(q - before);
+    const double da = next >= std::numeric_limits<int>::max() / 2 ? no_feature_distance() : double(next - q);
+    if(db == no_feature_distance() && da == no_feature_distance())
+    {
+      b.d[q] = no_feature_distance();
+      b.nearest[q] = -1;
+      continue;
+    }
+    const int p = db <= da ? before : next;
+    b.d[q] = double(q - p) * double(q - p);
+    b.nearest[q] = (p < 0 || p >= n) ? -2 : p;
+  }
+}
+
 /*
 Exact squared Euclidean distance transform, in voxel units squared, from every voxel centre to
 the nearest voxel centre where `feature` is nonzero: separable lower envelopes of parabolas
@@ -168,7 +198,10 @@ Voxel_grid<double> squared_distance_transform(const Voxel_grid<std::uint8_t>& fe
         for(int q = 0; q < r; ++q) b.f[q] = dist[base + std::size_t(q) * s];
         if(track)
           for(int q = 0; q < r; ++q) line_nearest[q] = (*nearest_feature)[base + std::size_t(q) * s];
-        lower_envelope_1d(r, grid_border_is_feature, b);
+        if(axis == 0)
+          binary_distance_1d(r, grid_border_is_feature, b);
+        else
+          lower_envelope_1d(r, grid_border_is_feature, b);
         for(int q = 0; q < r; ++q)
         {
           const std::size_t idx = base + std::size_t(q) * s;
