@@ -17,6 +17,7 @@ class PartDecompositionTraits
 public:
   /// \name Types
   /// @{
+
   /// a model of `FieldNumberType` convertible to `double` with `CGAL::to_double()`
   typedef unspecified_type FT;
   /// the point type

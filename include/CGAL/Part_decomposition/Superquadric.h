@@ -31,7 +31,7 @@ namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-A superquadric (paper Sec. 3.3, Eq. 6): the solid
+A superquadric (paper Sec.\ 3.3, Eq.\ 6): the solid
 \f[
 \left( \left|\frac{\bar x}{a_x}\right|^{2/\epsilon_2} + \left|\frac{\bar y}{a_y}\right|^{2/\epsilon_2} \right)^{\epsilon_2/\epsilon_1}
 + \left|\frac{\bar z}{a_z}\right|^{2/\epsilon_1} \le 1,
@@ -55,6 +55,7 @@ class Superquadric
 public:
   /// \name Types
   /// @{
+
   /// the geometric traits
   typedef GeomTraits Geom_traits;
   /// the point type
@@ -68,6 +69,7 @@ public:
 
   /// \name Creation
   /// @{
+
   /// creates the unit ball centred at the origin.
   Superquadric() {}
 
@@ -87,6 +89,7 @@ public:
 
   /// \name Parameters
   /// @{
+
   /// the semi-axes \f$(a_x, a_y, a_z)\f$.
   std::array<double, 3> scales() const { return {{m_data.a[0], m_data.a[1], m_data.a[2]}}; }
   /// \f$\epsilon_1\f$, the exponent along the local \f$z\f$ axis.
@@ -138,6 +141,7 @@ public:
 
   /// \name Queries
   /// @{
+
   /// the inside-outside function \f$F(p)\f$ (left side of the equation above): less than 1
   /// inside, 1 on the surface, greater than 1 outside. It grows like
   /// \f$|p-c|^{2/\epsilon_1}\f$ and may be `+infinity` far away for tiny \f$\epsilon_1\f$;
@@ -194,6 +198,7 @@ public:
 
   /// \name Rasterization and Sampling
   /// @{
+
   /// calls `f(i, j, k, index)` for every voxel `(i,j,k)` of the `r`\f$^3\f$ grid of the normalized
   /// cube \f$[-0.5,0.5]^3\f$ (same layout as `Voxel_grid`, `index = i + r*(j + r*k)`) whose centre
   /// satisfies \f$\tilde d \le\f$ `margin`; with `margin == 0` these are the voxel centres in the
@@ -326,6 +331,7 @@ public:
 
   /// \name Coordinate Systems
   /// @{
+
   /// the same solid in input coordinates, for a superquadric given in the normalized cube of
   /// `normalization`: scales divided by `normalization.scale()`, centre mapped by
   /// `normalization.from_unit()`, same rotation and exponents.

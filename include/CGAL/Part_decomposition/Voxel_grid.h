@@ -37,7 +37,7 @@ inline int voxel_coordinate(double p, int r)
 
 /*!
 \ingroup PkgPartDecompositionRef
-The role of a voxel in the Flow/Freeze prior (paper Sec. 3.2): `FLOW` voxels are low-complexity
+The role of a voxel in the Flow/Freeze prior (paper Sec.\ 3.2): `FLOW` voxels are low-complexity
 surface support where primitives may grow, `FREEZE` voxels mark articulation and thin-structure
 boundaries that stop them, `EMPTY` voxels hold no surface sample.
 */
@@ -122,14 +122,20 @@ public:
 
   /// \name Value access
   /// @{
+
+  /// the value of voxel `(i,j,k)`. \pre `contains(i, j, k)`
   T& operator()(int i, int j, int k) { return m_values[index(i, j, k)]; }
+  /// the value of voxel `(i,j,k)`. \pre `contains(i, j, k)`
   const T& operator()(int i, int j, int k) const { return m_values[index(i, j, k)]; }
+  /// the value of the voxel of linear index `idx`. \pre `idx < size()`
   T& operator[](std::size_t idx) { return m_values[idx]; }
+  /// the value of the voxel of linear index `idx`. \pre `idx < size()`
   const T& operator[](std::size_t idx) const { return m_values[idx]; }
   /// sets every value to `value`.
   void fill(const T& value) { std::fill(m_values.begin(), m_values.end(), value); }
   /// the values in linear-index order.
   std::vector<T>& values() { return m_values; }
+  /// the values in linear-index order.
   const std::vector<T>& values() const { return m_values; }
   /// @}
 

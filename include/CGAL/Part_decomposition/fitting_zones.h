@@ -27,7 +27,7 @@ namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-The volumetric zones that constrain the superquadric fitter (paper App. E.2 (A.1), Alg. A.2
+The volumetric zones that constrain the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2
 lines 1-4), on the finest grid of the prior. Masks hold 1 inside the zone and 0 outside.
 */
 struct Fitting_zones
@@ -48,7 +48,7 @@ struct Fitting_zones
 
 /*!
 \ingroup PkgPartDecompositionRef
-builds the volumetric zones of the superquadric fitter (paper App. E.2 (A.1), Alg. A.2 lines 1-4)
+builds the volumetric zones of the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2 lines 1-4)
 from the fused Flow/Freeze classes on the finest grid, of resolution `r = classes.resolution()`:
 
 - `occupied` = `FLOW` or `FREEZE` voxels;
@@ -70,7 +70,7 @@ The morphology is exact (linear-time Euclidean distance transforms) and determin
 
 \param classes the class of every voxel of the finest grid (the hierarchical prior projected on it)
 \param fitting_resolutions the fitting resolutions \f$r_{fit}\f$ (paper: \f$\min(r, 32)\f$ for
-       \f$r \in \{16, 32, 64\}\f$, i.e. 16 and 32)
+       \f$r \in \{16, 32, 64\}\f$, i.e.\ 16 and 32)
 \param np an optional sequence of named parameters among the ones listed below
 
 \cgalNamedParamsBegin

@@ -37,7 +37,7 @@ namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-The hierarchical Flow/Freeze prior (paper Sec. 3.2, App. E.1): the per-resolution topology
+The hierarchical Flow/Freeze prior (paper Sec.\ 3.2, App.\ E.1): the per-resolution topology
 score fields, fused on an octree and projected on the finest grid.
 */
 struct Hierarchical_prior
@@ -106,7 +106,7 @@ inline int log2_of_power_of_two(int r)
 /*!
 \ingroup PkgPartDecompositionRef
 fuses per-level Flow/Freeze class grids into one non-overlapping octree carrier and projects it
-on the finest grid (paper Sec. 3.2, App. E.1).
+on the finest grid (paper Sec.\ 3.2, App.\ E.1).
 
 For each parent voxel of a level and its 8 children at the next level, with \f$n_{nz}\f$ the
 number of non-empty children and \f$n_{diff}\f$ the number of non-empty children whose class
@@ -318,7 +318,7 @@ std::vector<int> checked_resolutions(const Range& range)
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the hierarchical Flow/Freeze prior of `tm` (paper Alg. A.1, lines 1-5): the geometric
+computes the hierarchical Flow/Freeze prior of `tm` (paper Alg.\ A.1, lines 1-5): the geometric
 cues once (`compute_geometric_cues()`), the topology score and its Flow/Freeze cut at each of
 the `voxel_resolutions` from a single pass over the surface samples (`compute_topology_score()`),
 and their fusion (`fuse_flow_freeze()`).

@@ -80,9 +80,9 @@ void write_face_values(const TriangleMesh& tm, FaceMap map, const std::vector<do
 computes the mean curvature \f$\kappa_v = \|\mathbf{H}_v\|/2\f$ of every vertex of `tm`, where
 \f$\mathbf{H}_v = \frac{1}{2A_v}\sum_j (\cot\alpha_{vj} + \cot\beta_{vj})(\mathbf{x}_v - \mathbf{x}_j)\f$
 is the mean-curvature normal given by the cotangent Laplace-Beltrami operator and \f$A_v\f$ the
-mixed Voronoi area of Meyer et al. (Voronoi area in non-obtuse triangles, half the triangle's
+mixed Voronoi area of Meyer et al.\ (Voronoi area in non-obtuse triangles, half the triangle's
 area at an obtuse corner, a quarter at the other corners). A sphere of radius \f$R\f$ gives
-\f$1/R\f$, a cylinder \f$1/(2R)\f$, a plane 0 (paper App. B).
+\f$1/R\f$, a cylinder \f$1/(2R)\f$, a plane 0 (paper App.\ B).
 
 At a border edge the missing cotangent is left out; the sum then also measures how the border
 curve bends within the surface, so at a border vertex (one of its edges has a single incident
@@ -142,7 +142,7 @@ void compute_vertex_mean_curvature(const TriangleMesh& tm, VertexCurvatureMap ve
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the face curvature cue \f$c_f \in [0,1]\f$ of paper App. B: the vertex mean curvatures
+computes the face curvature cue \f$c_f \in [0,1]\f$ of paper App.\ B: the vertex mean curvatures
 of `compute_vertex_mean_curvature()` are clipped at their `curvature_percentile`-th percentile
 (over the vertices incident to a face; linear interpolation between order statistics, as
 `numpy.quantile`), divided by the maximum of the clipped values, and averaged over the three
@@ -206,7 +206,7 @@ void compute_face_curvature_cue(const TriangleMesh& tm, FaceCurvatureMap face_cu
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the normal deviation cue of paper App. B for every face `f`:
+computes the normal deviation cue of paper App.\ B for every face `f`:
 \f$\phi_{norm}(f) = \frac{2}{\pi}\,\frac{1}{|N_f|}\sum_{f' \in N_f} \arccos\langle n_f, n_{f'}\rangle\f$,
 where \f$N_f\f$ are the `number_of_neighbors` faces whose centroids are nearest to the centroid
 of `f` (a kd-tree search, `CGAL::Orthogonal_k_neighbor_search`), `f` itself excluded. The value
@@ -277,7 +277,7 @@ void compute_face_normal_deviation(const TriangleMesh& tm, FaceNormalDeviationMa
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the two per-face geometric cues of paper App. B in one call: the face curvature cue
+computes the two per-face geometric cues of paper App.\ B in one call: the face curvature cue
 \f$c_f\f$ (`compute_face_curvature_cue()`) and the normal deviation \f$\phi_{norm}(f)\f$
 (`compute_face_normal_deviation()`). They feed `compute_topology_score()`.
 

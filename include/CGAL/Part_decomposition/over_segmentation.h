@@ -195,7 +195,7 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the curvature-aware over-segmentation of `tm` into edge primitives (paper App. E.3):
+computes the curvature-aware over-segmentation of `tm` into edge primitives (paper App.\ E.3):
 patches of faces bounded by the sharpest edges of the mesh. It is the first half of the
 superquadric-to-mesh assignment (`assign_parts()`) and is usable on its own.
 

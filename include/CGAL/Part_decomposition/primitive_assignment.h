@@ -125,7 +125,7 @@ std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patc
 
 /*!
 \ingroup PkgPartDecompositionRef
-transfers the primitives fitted in voxel space to the mesh (paper Sec. 3.3, App. E.4, Eq. 9): each
+transfers the primitives fitted in voxel space to the mesh (paper Sec.\ 3.3, App.\ E.4, Eq.\ 9): each
 patch of an over-segmentation of `tm` (see `over_segment()`) is given one primitive by a
 distance-weighted vote of its faces, and the patches given the same primitive form one part.
 

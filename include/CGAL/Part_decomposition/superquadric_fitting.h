@@ -38,7 +38,7 @@ namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-How FitSDF (paper Alg. A.3) sets the variance \f$\sigma^2\f$ of the Gaussian inlier weight of
+How FitSDF (paper Alg.\ A.3) sets the variance \f$\sigma^2\f$ of the Gaussian inlier weight of
 interior samples, \f$w = p/(C+p)\f$ with \f$p = e^{-r^2/2\sigma^2}\f$ and
 \f$C = w_o\sqrt{2\pi\sigma^2}/((1-w_o)\tau)\f$, \f$w_o = 0.99\f$ (inherited from MPS; the paper
 does not say how \f$\sigma^2\f$ is set).
@@ -66,6 +66,7 @@ struct Superquadric_fitting_result
 {
   /// \name Primitives
   /// @{
+
   /// the accepted superquadrics in the coordinates of the normalized cube \f$[-0.5,0.5]^3\f$.
   std::vector<Superquadric<GeomTraits> > primitives;
   /// the same superquadrics in the input coordinates of the mesh (through `normalization`).
@@ -87,6 +88,7 @@ struct Superquadric_fitting_result
 
   /// \name Grids
   /// @{
+
   /// on the finest grid of the prior: the primitive that claimed each voxel (hard-clipped claims
   /// plus small residual regions merged into the nearest primitive), or -1.
   Voxel_grid<std::int32_t> labels;
@@ -624,7 +626,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
 
 /*!
 \ingroup PkgPartDecompositionRef
-SDFSQFit (paper Alg. A.2, with FitSDF, Alg. A.3): fits superquadrics to the truncated signed
+SDFSQFit (paper Alg.\ A.2, with FitSDF, Alg.\ A.3): fits superquadrics to the truncated signed
 distance field of a shape, coarse to fine over the resolutions of the prior, growing them in the
 Flow zone and stopping them at the Freeze zone.
 
@@ -658,10 +660,10 @@ Choices where the paper is silent (measured on the development meshes, see the p
   again at the centroid of what remains); components smaller than \f$V_{min}\f$ are not seeded;
   a stage also ends after 4 rejected seeds in a row (the paper's iteration budget; on the
   development meshes it removed 22% of the solves and slightly improved the parts).
-- Claimed voxels include reserved voxels of finer stages (Alg. A.2 line 22); the volume test
+- Claimed voxels include reserved voxels of finer stages (Alg.\ A.2 line 22); the volume test
   does not count them.
 - FitSDF runs the projected Levenberg-Marquardt solver of the package (active-set freezing,
-  Marquardt scaling divided by \f$\eta^2\f$ along the semi-axes, i.e. scipy's `x_scale`) with
+  Marquardt scaling divided by \f$\eta^2\f$ along the semi-axes, i.e.\ scipy's `x_scale`) with
   at most 40 residual evaluations per solve; the first interior-weight variance is the mean
   squared clipped residual at \f$\theta_0\f$. On the development meshes `ONE_SHOT` and
   `MPS_REESTIMATED` scored within noise of each other (the MPS rule had a lower variation of

@@ -31,7 +31,7 @@ namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
-The voxel cues, the topology score \f$S_B\f$ (paper Eq. 3) and its Flow/Freeze cut (Eq. 4, 5) at
+The voxel cues, the topology score \f$S_B\f$ (paper Eq.\ 3) and its Flow/Freeze cut (Eq.\ 4, 5) at
 one resolution `r`. Grids have resolution `r`; empty voxels (no sample) hold 0 and are not part of
 the field.
 */
@@ -170,7 +170,7 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
 /*!
 \ingroup PkgPartDecompositionRef
 returns the barycentric coordinates \f$(u,v,w)\f$, \f$u+v+w=1\f$, of the deterministic sample
-grid of a triangle (paper App. B, "Surface sampling"): each side is split in \f$n\f$ equal
+grid of a triangle (paper App.\ B, "Surface sampling"): each side is split in \f$n\f$ equal
 parts, which cuts the triangle into \f$n^2\f$ congruent sub-triangles, and the samples are their
 centroids. All samples are strictly inside the triangle, none is shared with a neighbouring
 face, and they are evenly spread over its area. The order is fixed: the \f$n(n+1)/2\f$ upright
@@ -211,7 +211,7 @@ inline std::vector<std::array<double, 3> > barycentric_sample_grid(std::size_t n
 
 /*!
 \ingroup PkgPartDecompositionRef
-(re)computes the Flow/Freeze cut of `field` (paper Eq. 4, 5) from its `sample_count` and
+(re)computes the Flow/Freeze cut of `field` (paper Eq.\ 4, 5) from its `sample_count` and
 `score` grids: \f$\tau_\alpha\f$ is the \f$(1-\alpha)\f$-quantile of the scores of the active
 voxels (`sample_count > 0`), computed with linear interpolation between order statistics (the
 default of `numpy.quantile`: with the \f$m\f$ active scores sorted increasingly
@@ -295,7 +295,7 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
 /*!
 \ingroup PkgPartDecompositionRef
 computes the voxel cues, the topology score \f$S_B\f$ and its Flow/Freeze cut at resolution `r`
-(paper Sec. 3.2, Eq. 3-5, App. B).
+(paper Sec.\ 3.2, Eq.\ 3-5, App.\ B).
 
 Every face gets the `number_of_points_per_face` samples of `barycentric_sample_grid()`; they are
 mapped to the normalized cube by `normalization` and binned with `voxel_coordinate()`. One
@@ -321,7 +321,7 @@ with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the triangle mesh
-\param face_curvature_map the face curvature cue \f$c_f\f$ (e.g. from `compute_geometric_cues()`)
+\param face_curvature_map the face curvature cue \f$c_f\f$ (e.g.\ from `compute_geometric_cues()`)
 \param face_normal_deviation_map the normal deviation \f$\phi_{norm}(f)\f$
 \param resolution the resolution \f$r\f$ of the grid
 \param np an optional sequence of named parameters among the ones listed below
