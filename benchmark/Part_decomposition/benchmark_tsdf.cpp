@@ -7,15 +7,14 @@
 //   -check   compares 4000 voxels with CGAL: AABB-tree distance, and Side_of_triangle_mesh sign of
 //            the closed input (with -open: of the mesh before its faces were removed, at the
 //            voxels farther than one voxel from the surface)
-//   -aabb    also times the band distances with CGAL's AABB tree, for comparison
+//   -aabb    also times the band distances with the plain query of CGAL's AABB tree
+//            (`squared_distance()`: kd-tree hint, no bound, fixed child order), for comparison
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
@@ -73,19 +72,18 @@ static const char* name(PD::Tsdf_sign_method m)
   }
 }
 
-// Band distances with CGAL's AABB tree (same voxels as compute_tsdf queries); returns its time.
+// Band distances with the plain distance query of CGAL's AABB tree (same voxels and tree type as
+// compute_tsdf, one thread); returns its time.
 static double aabb_band_ms(const std::vector<PDI::Triangle_points>& tris, int r, double tau,
                            PD::Voxel_grid<double>& out)
 {
-  typedef CGAL::Simple_cartesian<double> SC;
-  typedef std::vector<SC::Triangle_3>::const_iterator It;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<SC, CGAL::AABB_triangle_primitive<SC, It> > > Tree;
+  typedef PDI::Aabb_kernel SC;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<SC::Triangle_3> triangles;
   for(const auto& t : tris)
     triangles.emplace_back(SC::Point_3(t[0][0], t[0][1], t[0][2]), SC::Point_3(t[1][0], t[1][1], t[1][2]),
                            SC::Point_3(t[2][0], t[2][1], t[2][2]));
-  Tree tree(triangles.begin(), triangles.end());
+  PDI::Aabb_triangle_tree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   const PDI::Surface_voxels sv = PDI::surface_voxels<CGAL::Sequential_tag>(tris, r);
   const PD::Voxel_grid<double> d2 = PDI::squared_distance_transform(sv.mask);

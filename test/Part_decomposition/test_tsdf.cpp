@@ -5,9 +5,10 @@
 #include "test_shapes.h"
 
 #include <CGAL/Part_decomposition/fitting_zones.h>
-#include <CGAL/Part_decomposition/internal/closest_triangle_tree.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
+#include <CGAL/Part_decomposition/internal/triangle_distance.h>
+#include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 #include <CGAL/Part_decomposition/tsdf.h>
 
@@ -316,7 +317,7 @@ TEST_CASE("Connected components on a hand-made grid", "[tsdf][morphology]")
 
 // ------------------------------------------------------------------------------- geometry pieces
 
-TEST_CASE("Point-triangle distance and the closest-triangle tree match brute force", "[tsdf][distance]")
+TEST_CASE("Point-triangle distance and the AABB-tree closest-triangle search match brute force", "[tsdf][distance]")
 {
   CGAL::Random rng(5);
   auto rnd = [&](double s) { return PDI::Vec3{{rng.get_double(-s, s), rng.get_double(-s, s), rng.get_double(-s, s)}}; };
@@ -345,29 +346,85 @@ TEST_CASE("Point-triangle distance and the closest-triangle tree match brute for
     const double ref = CGAL::to_double(CGAL::squared_distance(Point(p[0], p[1], p[2]), T));
     CHECK(PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]) == Approx(ref).epsilon(1e-9).margin(1e-18));
   }
-  const PDI::Closest_triangle_tree tree(tris);
+  const PDI::Triangle_soup_aabb_tree tree(tris);
   for(int i = 0; i < 3000; ++i)
   {
     const PDI::Vec3 p = rnd(0.6);
     double best = std::numeric_limits<double>::infinity();
     for(const auto& t : tris) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
     const std::pair<std::uint32_t, double> got = tree.closest(p);
-    CHECK(std::abs(std::sqrt(got.second) - std::sqrt(best)) <= 1e-7);
+    CHECK(std::abs(std::sqrt(got.second) - std::sqrt(best)) <= 1e-12);
     const auto& t = tris[got.first];
     CHECK(PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]) == got.second);
     // A bound reached by a given triangle does not change the answer.
     const std::uint32_t hint = std::uint32_t(i) % std::uint32_t(tris.size());
     const auto& h = tris[hint];
     const std::pair<std::uint32_t, double> hinted = tree.closest(p, PDI::squared_distance_to_triangle(p, h[0], h[1], h[2]), hint);
-    CHECK(std::abs(std::sqrt(hinted.second) - std::sqrt(best)) <= 1e-7);
+    CHECK(std::abs(std::sqrt(hinted.second) - std::sqrt(best)) <= 1e-12);
+    // A bound below every triangle comes back unchanged.
+    const std::pair<std::uint32_t, double> below = tree.closest(p, 0.5 * best, 7u);
+    CHECK(below.first == 7u);
+    CHECK(below.second == 0.5 * best);
   }
-  // Tiny soups use a single leaf.
-  const std::vector<PDI::Triangle_points> few(tris.begin(), tris.begin() + 3);
-  const PDI::Closest_triangle_tree small(few);
-  const PDI::Vec3 p = {{0.1, 0.2, 0.3}};
-  double best = std::numeric_limits<double>::infinity();
-  for(const auto& t : few) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
-  CHECK(std::abs(std::sqrt(small.closest(p).second) - std::sqrt(best)) <= 1e-7);
+  // One triangle (a tree without nodes) and three.
+  for(std::size_t n : {std::size_t(1), std::size_t(3)})
+  {
+    const std::vector<PDI::Triangle_points> few(tris.begin() + 4, tris.begin() + 4 + std::ptrdiff_t(n));
+    const PDI::Triangle_soup_aabb_tree small(few);
+    const PDI::Vec3 p = {{0.1, 0.2, 0.3}};
+    double best = std::numeric_limits<double>::infinity();
+    for(const auto& t : few) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+    CHECK(small.closest(p).second == best);
+  }
+}
+
+TEST_CASE("TSDF band distances equal the distances of CGAL's AABB tree", "[tsdf][distance]")
+{
+  // A jittered sphere (irregular triangles) overlapping a box: two components, many near ties.
+  Mesh m = test_shapes::make_sphere(Point(0.2, 0.1, 0.), 0.7, 3);
+  CGAL::Random rng(17);
+  for(auto v : vertices(m))
+  {
+    const Point& q = m.point(v);
+    m.point(v) = Point(q.x() + rng.get_double(-0.03, 0.03), q.y() + rng.get_double(-0.03, 0.03), q.z() + rng.get_double(-0.03, 0.03));
+  }
+  test_shapes::append(m, test_shapes::make_box(Point(-0.9, -0.4, -0.3), Point(0.1, 0.3, 0.35), 4));
+  for(int r : {40, 64})
+  {
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<CGAL::Parallel_if_available_tag>(
+      m, PD::parameters::voxel_resolutions(std::vector<int>{r}));
+    const std::vector<PDI::Triangle_points> tris = PDI::normalized_triangles(m, get(CGAL::vertex_point, m), tsdf.normalization);
+    // CGAL's plain distance query on the same normalized triangles.
+    typedef PDI::Aabb_kernel SC;
+    std::vector<SC::Triangle_3> triangles;
+    for(const auto& t : tris)
+      triangles.emplace_back(SC::Point_3(t[0][0], t[0][1], t[0][2]), SC::Point_3(t[1][0], t[1][1], t[1][2]),
+                             SC::Point_3(t[2][0], t[2][1], t[2][2]));
+    PDI::Aabb_triangle_tree tree(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+    std::vector<std::size_t> band;
+    for(std::size_t i = 0; i < tsdf.values.size(); ++i)
+      if(std::abs(tsdf.values[i]) < tsdf.truncation) band.push_back(i);
+    REQUIRE(band.size() > 1000);
+    CGAL::Random pick(3);
+    double worst = 0.;
+    for(int s = 0; s < 400; ++s)
+    {
+      const std::size_t i = band[std::size_t(pick.get_int(0, int(band.size())))];
+      const PDI::Vec3 c = tsdf.values.center(i);
+      const double d = std::sqrt(CGAL::to_double(tree.squared_distance(SC::Point_3(c[0], c[1], c[2]))));
+      worst = std::max(worst, std::abs(std::abs(tsdf.values[i]) - d));
+    }
+    CHECK(worst <= 1e-12);
+    // Outside the band CGAL finds nothing closer than the truncation.
+    for(int s = 0; s < 400; ++s)
+    {
+      const std::size_t i = std::size_t(pick.get_int(0, int(tsdf.values.size())));
+      if(std::abs(tsdf.values[i]) < tsdf.truncation) continue;
+      const PDI::Vec3 c = tsdf.values.center(i);
+      CHECK(std::sqrt(CGAL::to_double(tree.squared_distance(SC::Point_3(c[0], c[1], c[2])))) >= tsdf.truncation - 1e-12);
+    }
+  }
 }
 
 TEST_CASE("Surface voxels are the voxels the triangles touch", "[tsdf][voxelization]")

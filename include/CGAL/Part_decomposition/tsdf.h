@@ -14,7 +14,8 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
-#include <CGAL/Part_decomposition/internal/closest_triangle_tree.h>
+#include <CGAL/Part_decomposition/internal/triangle_distance.h>
+#include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -22,12 +23,17 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -234,13 +240,29 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
   return inside;
 }
 
+// Runs `f` and `g`, at the same time when `ConcurrencyTag` is parallel.
+template <typename ConcurrencyTag, typename F, typename G>
+void invoke_both(const F& f, const G& g)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_invoke(f, g);
+    return;
+  }
+#endif
+  f();
+  g();
+}
+
 // Unsigned distances (normalized units, clipped to `tau`) at the voxel centres that can be closer
 // than `tau` to the surface, `tau` elsewhere. The distance from a centre to the surface is at least
 // its distance to the nearest surface-voxel centre minus half a voxel diagonal: beyond
-// tau + sqrt(3)/2 voxels nothing is queried. Each query is an exact closest-triangle search whose
-// initial bound is the distance to the closest triangle of the previous voxel of the row, or to the
-// triangles of the nearest surface voxel. Rows are processed whole by one thread, so the result
-// does not depend on the thread count.
+// tau + sqrt(3)/2 voxels nothing is queried. Each query is an exact closest-triangle search in
+// CGAL's AABB tree of the triangles, nearest child first, whose initial bound is the distance to
+// the closest triangle of the previous voxel of the row, or to the triangles of the nearest surface
+// voxel, capped at tau. The tree is built before the parallel loop; rows are processed whole by
+// one thread, so the result does not depend on the thread count.
 template <typename ConcurrencyTag>
 Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>& tris,
                                              const Surface_voxels& sv, int r, double tau)
@@ -248,10 +270,14 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
   const std::size_t R = std::size_t(r);
   const double h = 1. / double(r);
   Voxel_grid<std::size_t> nearest;
-  const Voxel_grid<double> d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest);
+  Voxel_grid<double> d2;
+  std::unique_ptr<const Triangle_soup_aabb_tree> tree_holder;
+  // CGAL builds the tree sequentially: next to the surface-voxel EDT when threads are available.
+  invoke_both<ConcurrencyTag>([&] { tree_holder.reset(new Triangle_soup_aabb_tree(tris)); },
+                              [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest); });
+  const Triangle_soup_aabb_tree& tree = *tree_holder;
   const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
   const double reach2 = reach * reach;
-  const Closest_triangle_tree tree(tris, ConcurrencyTag());
 
   Voxel_grid<double> out(r, tau);
   const double tau2 = tau * tau;
@@ -339,8 +365,12 @@ voxel centres of the finest grid of the method, in the normalized cube: the Eucl
 the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$.
 
 Distances are exact, up to rounding, wherever they can be below \f$\tau\f$: the distance to the
-closest triangle, found in a bounding volume hierarchy (no voxel of the development meshes differs
-by more than \f$2 \cdot 10^{-6}\f$ voxel from CGAL's AABB tree). Elsewhere only the sign is
+closest triangle, found in a `CGAL::AABB_tree` of the normalized triangles by a nearest-first
+traversal (nearest child box first, boxes farther than the best triangle so far pruned, exact
+point-triangle distances at the leaves), bounded from the start by the triangle found for the
+previous voxel of the row and by \f$\tau\f$. These distances equal those of the tree's own
+`squared_distance()` query up to rounding (\f$10^{-14}\f$ voxel on the development meshes),
+which is several times slower on the band. Elsewhere only the sign is
 computed and the value is \f$\pm\tau\f$: every voxel carries its sign, deep interior voxels hold
 \f$-\tau\f$. How the sign is decided is described in `Tsdf_sign_method`. Coordinates are read
 through the vertex point map with `CGAL::to_double()` and everything is computed in double
