@@ -136,8 +136,46 @@ PD::decompose(mesh, part_map,
                                       PD::parameters::voxel_resolutions(std::vector<int>{32, 64})));
 \endcode
 
-Which parameter a function reads, its type and its default are listed in that function's
-documentation.
+Which parameter a function reads, its type, range and default are listed in that function's
+documentation; `decompose()` accepts them all and passes each to the stage that reads it. The
+package's parameters are:
+
+| Function | Type | Default | Read by |
+| :------- | :--- | :------ | :------ |
+| `voxel_resolutions()` | `std::vector<int>` | `{16, 32, 64}` | `compute_flow_freeze_prior()`, `compute_tsdf()` |
+| `number_of_neighbors()` | `unsigned int` | 8 | `compute_face_normal_deviation()` |
+| `curvature_percentile()` | `double` | 99.5 | `compute_face_curvature_cue()` |
+| `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
+| `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
+| `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
+| `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
+| `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |
+| `tsdf_sign_method()` | `Tsdf_sign_method` | `AUTOMATIC` | `compute_tsdf()` |
+| `flow_zone_tolerance()` | `double` | 2 | `compute_fitting_zones()`, `fit_superquadrics()` |
+| `trust_region_scales()` | `std::vector<double>` | `{1, 0.5, 0.25}` | `fit_superquadrics()` |
+| `body_seed_threshold()` | `double` | 1.5 | `fit_superquadrics()` |
+| `minimum_body_volume()` | `double` | 5 | `fit_superquadrics()` |
+| `minimum_surface_volume()` | `double` | 3 | `fit_superquadrics()` |
+| `exterior_penalty()` | `double` | 5 | `fit_superquadrics()` |
+| `coverage_target()` | `double` | 0.95 | `fit_superquadrics()` |
+| `roi_radius()` | `double` | 8 | `fit_superquadrics()` |
+| `interior_weight_mode()` | `Interior_weight_mode` | `ONE_SHOT` | `fit_superquadrics()` |
+| `maximum_number_of_primitives()` | `std::size_t` | 256 | `fit_superquadrics()` |
+| `use_freeze_zone()` | `bool` | `true` | `compute_fitting_zones()`, `fit_superquadrics()` |
+| `use_tsdf_guidance()` | `bool` | `true` | `fit_superquadrics()` |
+| `use_body_seeds()` | `bool` | `true` | `fit_superquadrics()` |
+| `dihedral_quantile()` | `double` | 90 | `over_segment()` |
+| `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
+| `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
+| `maximum_patch_size()` | `double` | 0.003 | `over_segment()` |
+| `vote_temperature()` | `double` | 1 | `assign_parts()` |
+| `primitive_output_iterator()` | an output iterator | none | `decompose()` |
+| `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
+
+Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
+\cgal's own parameters keep their names: `vertex_point_map`, `vertex_index_map`,
+`face_index_map`, `geom_traits`, `number_of_points_per_face` (36), `verbose`, and, for
+`evaluate_segmentation()`, `number_of_points_on_faces` and `random_seed`.
 */
 namespace parameters {
 
