@@ -64,6 +64,10 @@ from the fused Flow/Freeze classes on the finest grid, of resolution `r = classe
 
 The morphology is exact (linear-time Euclidean distance transforms) and deterministic.
 
+\par Complexity
+Linear in the number of voxels \f$r^3\f$ for each distinct fitting resolution (hole filling and exact
+linear-time Euclidean distance transforms).
+
 \tparam ConcurrencyTag enables sequential versus parallel computation (`CGAL::Sequential_tag`,
         `CGAL::Parallel_tag`, `CGAL::Parallel_if_available_tag`); the result does not depend on it.
 \tparam NamedParameters a sequence of named parameters

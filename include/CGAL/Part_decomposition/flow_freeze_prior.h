@@ -137,6 +137,9 @@ at its level splits if a voxel below it is non-empty at a finer level (its child
 own classes); a non-empty parent whose children are all empty stays a leaf, and the finest
 non-empty voxels below it (at deeper levels) take its class.
 
+\par Complexity
+Linear in the total number of voxels of the levels, \f$\sum_l r_l^3\f$.
+
 \param level_classes the class grids, coarse to fine, each of twice the resolution of the
        previous one (typically the `classes` of the `Topology_score_field`s at 16, 32, 64)
 
@@ -325,6 +328,11 @@ and their fusion (`fuse_flow_freeze()`).
 
 The result is the same with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`, for any number of
 threads.
+
+\par Complexity
+\f$O(F \log F + F\,N_{face} + r^3)\f$ for \f$F\f$ faces, \f$N_{face}\f$ = `number_of_points_per_face` and
+the finest resolution \f$r\f$: the cues (`compute_geometric_cues()`), one pass over the samples for all
+resolutions, and the fusion.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`

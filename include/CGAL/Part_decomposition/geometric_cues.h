@@ -92,6 +92,9 @@ a flat sheet gives 0 on its rim too, a spherical cap \f$1/R\f$. A triangle whose
 with no non-degenerate incident face (also an isolated vertex) gets 0. Values are always finite.
 The computation is done in `double`.
 
+\par Complexity
+Linear in the size of `tm`: one pass over the corners of the faces.
+
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 \tparam VertexCurvatureMap a model of `WritablePropertyMap` with
@@ -148,6 +151,9 @@ of `compute_vertex_mean_curvature()` are clipped at their `curvature_percentile`
 `numpy.quantile`), divided by the maximum of the clipped values, and averaged over the three
 vertices of each face. If that maximum is 0 or below \f$10^{-9}\f$ divided by the diagonal of the
 bounding box of `tm` (rounding noise on a planar mesh), every \f$c_f\f$ is 0.
+
+\par Complexity
+Linear in the size of `tm` (the percentile is a selection, not a sort).
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
@@ -222,6 +228,10 @@ distance are broken by the kd-tree: the result is deterministic and does not dep
 number of threads. A mesh with fewer faces gives smaller neighbourhoods; a face with no neighbour
 gets 0.
 
+\par Complexity
+\f$O(F \log F)\f$ for \f$F\f$ faces: the kd-tree of the centroids is built once, and each of the \f$F\f$
+queries for `number_of_neighbors` neighbours takes logarithmic time in practice.
+
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 \tparam FaceNormalDeviationMap a model of `WritablePropertyMap` with
@@ -280,6 +290,9 @@ void compute_face_normal_deviation(const TriangleMesh& tm, FaceNormalDeviationMa
 computes the two per-face geometric cues of paper App.\ B in one call: the face curvature cue
 \f$c_f\f$ (`compute_face_curvature_cue()`) and the normal deviation \f$\phi_{norm}(f)\f$
 (`compute_face_normal_deviation()`). They feed `compute_topology_score()`.
+
+\par Complexity
+\f$O(F \log F)\f$ for \f$F\f$ faces, dominated by the normal deviation.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`

@@ -234,6 +234,11 @@ The steps are:
 
 The result does not depend on the number of threads.
 
+\par Complexity
+\f$O(E \log E)\f$ for \f$E\f$ edges: the edges of the size cap are sorted by dihedral angle; the other
+steps are linear (the percentile is a selection), up to the priority queue of the fragment
+clean-up, logarithmic in the number of patches.
+
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the dihedral
         angles, the sort of the size cap and the smoothing run in parallel.
 \tparam TriangleMesh a model of `FaceListGraph`

@@ -142,6 +142,11 @@ distance-weighted vote of its faces, and the patches given the same primitive fo
 If no voxel is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
 The result does not depend on the number of threads.
 
+\par Complexity
+\f$O(V \log V + F \log V)\f$ for \f$V\f$ claimed voxels and \f$F\f$ faces: one kd-tree of the claimed voxels and one
+nearest-neighbour query per face (most answered by a local search in the 27 voxels around the
+centroid); the vote is linear.
+
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the
         nearest-voxel queries and the votes run in parallel.
 \tparam TriangleMesh a model of `FaceListGraph`

@@ -178,6 +178,9 @@ sub-triangles, then the \f$n(n-1)/2\f$ inverted ones. A sample is
 \f$u\,\mathbf{v}_0 + v\,\mathbf{v}_1 + w\,\mathbf{v}_2\f$ for the face's vertices in
 `vertices_around_face()` order.
 
+\par Complexity
+Linear in `number_of_points_per_face`.
+
 \param number_of_points_per_face \f$n^2\f$, a perfect square (36 in the paper)
 
 \throws Invalid_input (`INVALID_PARAMETER`) if `number_of_points_per_face` is not a positive
@@ -224,6 +227,9 @@ Without ties the number of Freeze voxels is \f$m - \lceil h \rceil\f$ (or
 \f$m - h\f$ when \f$h\f$ is an integer), within one voxel of \f$\alpha m\f$; tied scores at the
 threshold are all Freeze. Sets `classes`, `threshold`, `number_of_active_voxels` and
 `number_of_freeze_voxels`.
+
+\par Complexity
+Linear in the number of voxels \f$r^3\f$ (the quantile is a selection).
 
 \param field a field whose `sample_count` and `score` grids have the same resolution
 \param freeze_ratio \f$\alpha\f$
@@ -311,6 +317,9 @@ on the active voxels (\f$n > 0\f$), and `apply_flow_freeze_cut()` with \f$\alpha
 
 The sums are accumulated in face order whatever the number of threads: results are identical
 with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
+
+\par Complexity
+\f$O(F\,N_{face} + r^3)\f$ for \f$F\f$ faces and \f$N_{face}\f$ = `number_of_points_per_face`.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`

@@ -50,7 +50,7 @@ The \em surface voxels below are the voxels whose (closed) box meets a triangle.
 - `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
   number of times. Exact for closed meshes; meaningless for open ones, and a region covered
   twice by self-intersecting parts counts as outside.
-- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al. 2013); a point is
+- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al.\ 2013); a point is
   inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
   (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
   integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
@@ -360,7 +360,7 @@ std::vector<std::uint8_t> inside_flags(const std::vector<Triangle_points>& tris,
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the truncated signed distance field \f$d_\mathcal{M}\f$ of `tm` (paper App. E.2) at the
+computes the truncated signed distance field \f$d_\mathcal{M}\f$ of `tm` (paper App.\ E.2) at the
 voxel centres of the finest grid of the method, in the normalized cube: the Euclidean distance to
 the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$.
 
@@ -375,6 +375,13 @@ computed and the value is \f$\pm\tau\f$: every voxel carries its sign, deep inte
 \f$-\tau\f$. How the sign is decided is described in `Tsdf_sign_method`. Coordinates are read
 through the vertex point map with `CGAL::to_double()` and everything is computed in double
 precision on the normalized coordinates: no geometric traits class is needed.
+
+\par Complexity
+\f$O(F \log F)\f$ to build the tree of the \f$F\f$ triangles, then one closest-triangle query (logarithmic in
+\f$F\f$ in practice) per voxel of the band of width \f$\tau\f$ around the surface, and linear time in the
+number of voxels \f$r^3\f$ for the sign, plus, on a closed mesh, the number of crossings of the rows of
+the grid by the triangles, and, on an open mesh, a hierarchical winding-number evaluation at the
+voxels next to the surface.
 
 \tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
         `CGAL::Sequential_tag`, `CGAL::Parallel_tag`, and `CGAL::Parallel_if_available_tag`.
