@@ -203,7 +203,7 @@ public:
   /// cube \f$[-0.5,0.5]^3\f$ (same layout as `Voxel_grid`, `index = i + r*(j + r*k)`) whose centre
   /// satisfies \f$\tilde d \le\f$ `margin`; with `margin == 0` these are the voxel centres in the
   /// solid. Only the voxels of the world bounding box (grown by `margin`) are visited, in
-  /// increasing index.
+  /// increasing index; the cost is linear in their number.
   /// \pre `r > 0` and `margin >= 0`.
   template <typename Function>
   void for_each_covered_voxel(int r, const Function& f, double margin = 0.) const
@@ -227,6 +227,7 @@ public:
 
   /// writes points of the surface to `out`: a regular grid of spacing at most `spacing` on each
   /// face of the local box, projected radially onto the surface. Returns the output iterator.
+  /// The number of points is linear in the area of the local box divided by `spacing`\f$^2\f$.
   /// \pre `spacing > 0`
   template <typename OutputIterator>
   OutputIterator sample_surface(double spacing, OutputIterator out) const

@@ -104,6 +104,9 @@ the same mesh and seed give the same samples with every compiler and standard li
 If the total area of `tm` is zero (every face is degenerate), the faces are drawn uniformly
 instead; if `tm` has no face, the result is empty.
 
+\par Complexity
+\f$O(F + N \log F)\f$ for \f$F\f$ faces: a prefix sum of the areas, then a binary search per draw.
+
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam NamedParameters a sequence of named parameters
 
@@ -216,6 +219,9 @@ nothing. With \f$n_{ij}\f$ the number of samples in ground-truth part \f$G_i\f$ 
 The cost is linear in \f$N\f$ plus the number of ground-truth and predicted parts.
 If \f$N = 0\f$, the four metrics are NaN.
 
+\par Complexity
+Linear in \f$N\f$ and in the numbers of parts (expected: the labels are hashed).
+
 \tparam GroundTruthRange a range of labels (a type with `std::hash` and `operator==`, such as an
         integer type)
 \tparam PredictionRange likewise, possibly of another label type
@@ -297,6 +303,9 @@ same faces, following the paper's protocol (Appendix A): `N` points are drawn on
 two labelings are compared with `compare_segmentations()`. With several ground truths of one
 shape, call this once per ground truth with the same seed (the samples are then the same) and
 average the scores.
+
+\par Complexity
+\f$O(F + N \log F)\f$ for \f$F\f$ faces and \f$N\f$ = `number_of_points_on_faces`.
 
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam GroundTruthMap a model of `ReadablePropertyMap` with
