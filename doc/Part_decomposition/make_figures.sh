@@ -26,10 +26,11 @@ THREADS_OPT=()
 mkdir -p "$BUILD"
 cmake -S "$DOC/tools" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release > "$BUILD/figures_cmake.log" 2>&1 ||
   { cat "$BUILD/figures_cmake.log"; exit 1; }
-cmake --build "$BUILD" --target hitops figure_data render_mesh -j "$JOBS"
+cmake --build "$BUILD" --target hitops figure_data render_mesh sdf_segmentation -j "$JOBS"
 HITOPS=$BUILD/part_decomposition/bin/hitops
 FIGURE_DATA=$BUILD/bin/figure_data
 RENDER=$BUILD/bin/render_mesh
+SDF=$BUILD/bin/sdf_segmentation
 WORK=$BUILD/figure_work
 mkdir -p "$WORK" "$FIG"
 
@@ -101,6 +102,18 @@ if [ -d "$DEV" ]; then
     "$DEV/fourleg_385.off" "$DEV/fourleg_385.off@labels=$WORK/fourleg_385.seg" \
     "$WORK/fourleg_385_primitives.off@components"
 
+  # comparison with CGAL's SDF segmentation: a human segmentation, SDF, Hi-TOPS
+  COMPARE=(chair_108 octopus_123 hand_187)
+  PANELS=()
+  for shape in "${COMPARE[@]}"; do
+    [ -f "$WORK/$shape.seg" ] || parts "$shape" "$DEV/$shape.off"
+    "$SDF" "$DEV/$shape.off" "$WORK/${shape}_sdf.seg"
+    case $shape in hand_187) view="+view=0,80" ;; *) view="" ;; esac
+    PANELS+=("$DEV/$shape.off@labels=$DEV/${shape}_0.seg$view" "$DEV/$shape.off@labels=$WORK/${shape}_sdf.seg$view"
+             "$DEV/$shape.off@labels=$WORK/$shape.seg$view")
+  done
+  "$RENDER" -o "$FIG/comparison_sdf.png" --view 30,15 --panel 190x190 --columns 3 --frame own "${PANELS[@]}"
+
   # gallery: one shape of each of 12 categories, with its own view
   GALLERY=(airplane_71 ant_90 armadillo_281 bird_245 chair_108 cup_21 fish_222 glasses_53
            hand_187 octopus_123 plier_207 table_152)
@@ -110,6 +123,7 @@ if [ -d "$DEV" ]; then
     case $shape in
       airplane_71) view="up=-z+view=210,35" ;;
       ant_90) view="up=z+view=30,40" ;;
+      armadillo_281) view="view=180,10" ;;
       glasses_53) view="up=z+view=30,20" ;;
       hand_187|plier_207) view="view=0,80" ;;
       bird_245) view="view=30,60" ;;
@@ -119,9 +133,9 @@ if [ -d "$DEV" ]; then
     esac
     PANELS+=("$DEV/$shape.off@labels=$WORK/$shape.seg+$view")
   done
-  "$RENDER" -o "$FIG/gallery.png" --panel 175x175 --columns 6 --frame own "${PANELS[@]}"
+  "$RENDER" -o "$FIG/gallery.png" --panel 170x170 --columns 6 --frame own "${PANELS[@]}"
 else
-  echo "no development meshes in $DEV: teaser.png and gallery.png left unchanged"
+  echo "no development meshes in $DEV: teaser.png, comparison_sdf.png and gallery.png left unchanged"
 fi
 
 ls -l "$FIG"/*.png
