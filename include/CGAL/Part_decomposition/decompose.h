@@ -122,6 +122,7 @@ class Part_decomposer
 public:
   /// \name Types
   /// @{
+
   /// the vertex point map
   typedef typename CGAL::Default::Get<
     VertexPointMap_, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type
@@ -164,6 +165,7 @@ public:
 
   /// \name Stages
   /// @{
+
   /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -239,6 +241,7 @@ public:
 
   /// \name Results
   /// @{
+
   /// the normalization of the mesh into the cube of the grids.
   const Normalization& normalization() const { return m_normalization; }
   /// the prior. \pre `compute_prior()` was called.
@@ -324,7 +327,7 @@ the same output, whatever the number of threads.
 The stages, each also available on its own: `compute_flow_freeze_prior()`, `compute_tsdf()`,
 `fit_superquadrics()`, `over_segment()`, `assign_parts()`; `Part_decomposer` runs them one by
 one. Every named parameter of these functions is accepted here and passed to the stage that reads
-it; the table below lists the parameters of the paper's Table A.1 and those of this function.
+it; the table below lists them all.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 `CGAL::Parallel_if_available_tag` (parallel with TBB when it is linked)
@@ -369,6 +372,16 @@ are chained with `parameters::combine()`)
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{`36`}
   \cgalParamNEnd
+  \cgalParamNBegin{number_of_neighbors}
+    \cgalParamDescription{the number \f$k\f$ of nearest faces of the normal deviation cue}
+    \cgalParamType{an integer type, at least 1}
+    \cgalParamDefault{`8`}
+  \cgalParamNEnd
+  \cgalParamNBegin{curvature_percentile}
+    \cgalParamDescription{the percentile at which the vertex curvatures are clipped}
+    \cgalParamType{`double`, in `[0, 100]`}
+    \cgalParamDefault{`99.5`}
+  \cgalParamNEnd
   \cgalParamNBegin{cue_weights}
     \cgalParamDescription{\f$\lambda\f$: the weights of the curvature mean, curvature deviation,
                           curvature gradient and normal deviation in the topology score}
@@ -380,10 +393,20 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, in \f$(0,1)\f$}
     \cgalParamDefault{`0.15`}
   \cgalParamNEnd
+  \cgalParamNBegin{normalization_margin}
+    \cgalParamDescription{the free margin left on each side of the normalized cube (see `compute_normalization()`)}
+    \cgalParamType{`double`, in `[0, 0.25]`}
+    \cgalParamDefault{`2.0/64`}
+  \cgalParamNEnd
   \cgalParamNBegin{tsdf_truncation}
     \cgalParamDescription{\f$\tau\f$, in voxels of the finest grid}
     \cgalParamType{`double`}
     \cgalParamDefault{`8`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tsdf_sign_method}
+    \cgalParamDescription{how the inside of the shape is decided}
+    \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
+    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC` (generalized winding numbers)}
   \cgalParamNEnd
   \cgalParamNBegin{flow_zone_tolerance}
     \cgalParamDescription{the dilation of the Flow zone, in voxels of the fitting resolution}
@@ -415,6 +438,41 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`}
     \cgalParamDefault{`5`}
   \cgalParamNEnd
+  \cgalParamNBegin{coverage_target}
+    \cgalParamDescription{the fraction of the valid volume claimed before a fitting stage ends}
+    \cgalParamType{`double`, in \f$(0,1]\f$}
+    \cgalParamDefault{`0.95`}
+  \cgalParamNEnd
+  \cgalParamNBegin{roi_radius}
+    \cgalParamDescription{the radius of the region of interest of a seed, in voxels of the fitting resolution}
+    \cgalParamType{`double`, positive}
+    \cgalParamDefault{`8`}
+  \cgalParamNEnd
+  \cgalParamNBegin{interior_weight_mode}
+    \cgalParamDescription{how the variance of the interior Gaussian weight of the fit is set}
+    \cgalParamType{`CGAL::Part_decomposition::Interior_weight_mode`}
+    \cgalParamDefault{`Interior_weight_mode::ONE_SHOT`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_number_of_primitives}
+    \cgalParamDescription{a safety cap on the number of fitted superquadrics}
+    \cgalParamType{`std::size_t`, positive}
+    \cgalParamDefault{`256`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_freeze_zone}
+    \cgalParamDescription{if `false` (ablation "w/o Freeze"), Freeze voxels are treated as Flow by the fitter}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_tsdf_guidance}
+    \cgalParamDescription{if `false` (ablation "w/o TSDF"), the fit sees the occupancy only}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_body_seeds}
+    \cgalParamDescription{if `false` (ablation "w/o Body"), only surface seeds are used}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{dihedral_quantile}
     \cgalParamDescription{\f$q\f$: the percentile of the dihedral angles above which edges are cut}
     \cgalParamType{`double`}
@@ -424,6 +482,26 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{the boundary-smoothing iterations of the over-segmentation}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_patch_size}
+    \cgalParamDescription{the smallest patch area kept by the over-segmentation, as a fraction of the mesh area}
+    \cgalParamType{`double`, in `[0, 1]`}
+    \cgalParamDefault{`0.001`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_patch_size}
+    \cgalParamDescription{the largest patch area the over-segmentation builds on smooth regions, as a fraction of the mesh area}
+    \cgalParamType{`double`, in `(0, 1]`}
+    \cgalParamDefault{`0.003`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vote_temperature}
+    \cgalParamDescription{\f$\tau_v\f$: the temperature of the patch vote, in voxels of the finest grid}
+    \cgalParamType{`double`, positive}
+    \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{primitive_output_iterator}
     \cgalParamDescription{receives, for each part in increasing id, its superquadric in input
@@ -441,6 +519,11 @@ are chained with `parameters::combine()`)
 \cgalNamedParamsEnd
 
 \returns the number `K` of parts.
+
+\par Complexity
+The sum of the costs of the stages, \f$O(F \log F + F\,N_{face} + r^3)\f$ for \f$F\f$ faces and the finest
+resolution \f$r\f$, plus the superquadric fits, whose number and cost depend on the shape and on
+\f$r\f$, not on \f$F\f$ (see `fit_superquadrics()`).
 
 \pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)
 \throws Invalid_input if `tm` cannot be decomposed (no face, a face that is not a triangle, a
