@@ -761,6 +761,15 @@ distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
 
 \pre `tsdf.values` has the resolution of `prior.classes`, the resolutions of the prior are
 increasing, and the finest is that of `prior.classes`.
+\par Complexity
+Independent of the number of faces of the mesh. A stage ends after 4 rejected seeds in a row, so
+there are at most \f$5P + 4L\f$ seeds for \f$P\f$ accepted primitives and \f$L\f$ resolutions. Each seed
+costs at most linear time in the \f$r^3\f$ voxels of the finest grid (finding it, claiming, and the
+incremental update of the distance transform after an acceptance) plus its solves: one fit per
+trust-region scale, each of one solve (`ONE_SHOT`) or at most 4 (`MPS_REESTIMATED`), and each solve
+evaluates the residuals of at most about 4096 samples (plus exterior band samples) at most 40
+times.
+
 \returns the accepted superquadrics and the claimed-voxel labels.
 \throws Invalid_input (`INVALID_PARAMETER`) if a parameter is out of range.
 */
