@@ -79,6 +79,11 @@ three distinct vertices are left out of `tm` and reported in the returned inform
 
 \returns the correspondence between the faces of `tm` and those of the file.
 
+\par Complexity
+\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices), plus the ear clipping of
+the polygons, quadratic in the number of vertices of each polygon, and the orientation of the soup
+by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`.
+
 \throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
 (`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
 (`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`).
@@ -306,6 +311,9 @@ turns one label per mesh face (in the iteration order of `faces(tm)`, as read by
 `read_triangle_mesh()`) into one label per face of the file, in the file's order. A polygon
 triangulated into several faces takes the label most of its triangles carry (the smallest one on a
 tie); a face left out of the mesh takes the label of its donor face.
+
+\par Complexity
+Linear in the number of faces, up to a sort of the labels of each triangulated polygon.
 
 \pre `mesh_labels.size() == info.face_to_input.size()`
 */
