@@ -76,6 +76,9 @@ every grid.
 \tparam FaceListGraph a model of `FaceListGraph`
 \tparam NamedParameters a sequence of named parameters
 
+\param tm the mesh
+\param np an optional sequence of named parameters among the ones listed below
+
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tm`}
@@ -92,6 +95,11 @@ every grid.
 \cgalNamedParamsEnd
 
 Only the vertices incident to a face count.
+
+\returns the normalization.
+
+\par Complexity
+Linear in the size of `tm`.
 
 \throws Invalid_input if `tm` has no face, a non-finite coordinate, or all its vertices coincide.
 */
