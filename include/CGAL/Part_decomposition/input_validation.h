@@ -61,6 +61,9 @@ checks that `tm` can be decomposed: it has at least one face, every face is a tr
 vertex has finite coordinates, not all equal. Open, non-manifold, self-intersecting meshes and
 meshes of several connected components are accepted.
 
+\par Complexity
+Linear in the size of `tm`.
+
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam NamedParameters a sequence of named parameters
 
