@@ -8,11 +8,14 @@
 // Scores this package and CGAL's SDF segmentation against human segmentations, shape by shape,
 // in one run (see README.md next to this file).
 //
-//   benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours] [--shapes a,b]
+//   benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours,ours1] [--shapes a,b]
 //                          [--threads N] [--ablations] [--variants v1,v2] [--samples N] [--seed S]
+//   benchmark_segmentation DATASET_DIR --scale SHAPE [--scale-faces 100000,300000,1000000]
+//                          [--out DIR] [--threads N]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
@@ -24,6 +27,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #include <tbb/version.h>
 #endif
 
@@ -74,6 +78,8 @@ struct Options
   int threads = 0; // 0: all hardware threads
   std::size_t samples = 10000;
   unsigned seed = 0;
+  std::string scale_shape; // --scale: the scale run on this shape instead of the dataset run
+  std::vector<double> scale_faces = {1e5, 3e5, 1e6};
   std::string command_line;
 };
 
@@ -94,11 +100,15 @@ bool contains(const std::vector<std::string>& v, const std::string& x)
 
 void usage()
 {
-  std::cerr << "usage: benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours] [--shapes a,b]\n"
+  std::cerr << "usage: benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours,ours1] [--shapes a,b]\n"
                "                              [--threads N] [--ablations] [--variants v1,v2]\n"
                "                              [--samples N] [--seed S]\n"
+               "       benchmark_segmentation DATASET_DIR --scale SHAPE [--scale-faces 100000,300000,1000000]\n"
+               "                              [--out DIR] [--threads N]\n"
                "DATASET_DIR holds manifest.tsv (columns shape, category, ...), NAME.off|obj|ply|stl and\n"
-               "NAME_k.seg (one label per face, file order). --variants implies --ablations.\n";
+               "NAME_k.seg (one label per face, file order). --variants implies --ablations.\n"
+               "Methods: sdf (CGAL's SDF segmentation), ours (Hi-TOPS with --threads threads), ours1 (Hi-TOPS\n"
+               "on one thread, reading included, labels compared with ours).\n";
 }
 
 bool parse(int argc, char** argv, Options& o)
@@ -115,6 +125,15 @@ bool parse(int argc, char** argv, Options& o)
     std::string v;
     if(a == "--out") { if(!value(o.out)) return false; }
     else if(a == "--methods") { if(!value(v)) return false; o.methods = split(v, ','); }
+    else if(a == "--scale") { if(!value(o.scale_shape)) return false; }
+    else if(a == "--scale-faces")
+    {
+      if(!value(v)) return false;
+      o.scale_faces.clear();
+      for(const std::string& x : split(v, ',')) o.scale_faces.push_back(std::atof(x.c_str()));
+      for(double x : o.scale_faces)
+        if(!(x >= 1.)) return false;
+    }
     else if(a == "--shapes") { if(!value(v)) return false; o.shapes = split(v, ','); }
     else if(a == "--variants") { if(!value(v)) return false; o.variants = split(v, ','); o.ablations = true; }
     else if(a == "--threads") { if(!value(v)) return false; o.threads = std::atoi(v.c_str()); }
@@ -127,7 +146,7 @@ bool parse(int argc, char** argv, Options& o)
     else return false;
   }
   for(const std::string& m : o.methods)
-    if(m != "sdf" && m != "ours") { std::cerr << "unknown method " << m << "\n"; return false; }
+    if(m != "sdf" && m != "ours" && m != "ours1") { std::cerr << "unknown method " << m << "\n"; return false; }
   return !o.dataset.empty() && o.samples > 0;
 }
 
@@ -303,6 +322,8 @@ struct Row
   double t_read = NaN, t_prior = NaN, t_tsdf = NaN, t_fitting = NaN, t_overseg = NaN, t_assign = NaN;
   double t_sdf = NaN, t_sdf_segmentation = NaN, t_method = NaN;
   double peak_mb = NaN, rss_before_mb = NaN;
+  std::string same_labels; // ours1: "yes" or "no" against ours on the same shape
+  double end_to_end() const { return t_read + t_method; }
 };
 
 std::string clean(std::string s)
@@ -324,7 +345,7 @@ void write_tsv_header(std::ostream& out)
 {
   out << "dataset\tshape\tcategory\tfaces\tmethod\tstatus\tmIoU\tRI\tVoI\tSC\tparts\tgt_parts\tn_gt"
          "\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign\tt_sdf_values\tt_sdf_segmentation"
-         "\tt_method\tpeak_mb\trss_before_mb\terror\tnote\n";
+         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\n";
 }
 
 void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
@@ -334,8 +355,9 @@ void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
       << num(r.sc) << '\t' << r.parts << '\t' << num(r.gt_parts, 2) << '\t' << r.n_gt << '\t'
       << num(r.t_read) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t' << num(r.t_fitting) << '\t'
       << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_sdf) << '\t'
-      << num(r.t_sdf_segmentation) << '\t' << num(r.t_method) << '\t' << num(r.peak_mb, 1) << '\t'
-      << num(r.rss_before_mb, 1) << '\t' << clean(r.error) << '\t' << clean(r.note) << '\n';
+      << num(r.t_sdf_segmentation) << '\t' << num(r.t_method) << '\t' << num(r.end_to_end()) << '\t'
+      << num(r.peak_mb, 1) << '\t' << num(r.rss_before_mb, 1) << '\t' << r.same_labels << '\t'
+      << clean(r.error) << '\t' << clean(r.note) << '\n';
   out.flush();
 }
 
@@ -406,7 +428,7 @@ struct Aggregate
 {
   std::size_t n_ok = 0, n_all = 0;
   double miou = NaN, ri = NaN, voi = NaN, sc = NaN, parts = NaN, gt_parts = NaN;
-  double t_median = NaN, t_mean = NaN, peak_median = NaN;
+  double t_median = NaN, t_mean = NaN, peak_median = NaN, end_to_end_median = NaN;
 };
 
 Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, const std::string& category = "")
@@ -429,6 +451,7 @@ Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, con
   a.t_median = median(field(ok, [](const Row& r) { return r.t_method; }));
   a.t_mean = mean(field(ok, [](const Row& r) { return r.t_method; }));
   a.peak_median = median(field(ok, [](const Row& r) { return r.peak_mb; }));
+  a.end_to_end_median = median(field(ok, [](const Row& r) { return r.end_to_end(); }));
   return a;
 }
 
@@ -436,6 +459,7 @@ std::string method_label(const std::string& m)
 {
   if(m == "sdf") return "CGAL SDF (defaults)";
   if(m == "ours") return "Hi-TOPS (ours)";
+  if(m == "ours1") return "Hi-TOPS (ours), 1 thread";
   return m;
 }
 
@@ -504,24 +528,26 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
       << "probability proportional to area (seed " << o.seed << "), each labelled by its face; "
       << "class-agnostic mIoU (many-to-one best match per ground-truth part), Rand index, variation "
       << "of information (natural log, nats) and segmentation covering, averaged over every human "
-      << "segmentation of a shape, then over shapes. Seconds exclude reading the mesh; peak memory is "
+      << "segmentation of a shape, then over shapes. \"s\" columns exclude reading the mesh, "
+      << "\"end-to-end s\" adds it (file to labels; the same reader for every method); peak memory is "
       << "the process's VmHWM during the method.\n\n";
 
   std::vector<std::string> methods;
-  for(const std::string m : {"sdf", "ours"})
+  for(const std::string m : {"sdf", "ours", "ours1"})
     for(const Row& r : rows)
       if(r.method == m) { methods.push_back(m); break; }
 
   out << "## Overall\n\n"
-      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s | mean s | median peak MB |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s | mean s "
+         "| median end-to-end s | median peak MB |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const std::string& m : methods)
   {
     const Aggregate a = aggregate(rows, m);
     out << "| " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | " << num(a.miou, 3) << " | "
         << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3) << " | " << num(a.parts, 1)
         << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " | " << num(a.t_mean, 3) << " | "
-        << num(a.peak_median, 0) << " |\n";
+        << num(a.end_to_end_median, 3) << " | " << num(a.peak_median, 0) << " |\n";
   }
 
   out << "\n## Per category\n\n"
@@ -538,48 +564,95 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
     }
 
   // Pair by pair: the ratio of each shape's times, then their median.
-  std::map<std::string, const Row*> sdf, ours;
+  std::map<std::string, const Row*> sdf, ours, ours1;
   for(const Row& r : rows)
     if(r.ok && r.method == "sdf") sdf[r.shape] = &r;
     else if(r.ok && r.method == "ours") ours[r.shape] = &r;
-  std::vector<double> ratios;
+    else if(r.ok && r.method == "ours1") ours1[r.shape] = &r;
+  auto geometric_mean = [](const std::vector<double>& v) {
+    double log_sum = 0.;
+    for(double x : v) log_sum += std::log(x);
+    return std::exp(log_sum / double(v.size()));
+  };
+  std::vector<double> ratios, e2e_ratios;
+  std::size_t at_most_half = 0;
   std::ostringstream table;
   for(const Row& r : rows)
   {
     if(r.method != "ours" || !r.ok || !sdf.count(r.shape)) continue;
     const Row& s = *sdf[r.shape];
-    const double ratio = r.t_method / s.t_method;
+    const double ratio = r.t_method / s.t_method, e2e = r.end_to_end() / s.end_to_end();
     ratios.push_back(ratio);
-    table << "| " << r.shape << " | " << num(r.t_method, 3) << " | " << num(s.t_method, 3) << " | "
-          << num(ratio, 3) << " | " << num(r.miou, 3) << " | " << num(s.miou, 3) << " |\n";
+    e2e_ratios.push_back(e2e);
+    if(e2e <= 0.5) ++at_most_half;
+    table << "| " << r.shape << " | " << num(r.end_to_end(), 3) << " | " << num(s.end_to_end(), 3) << " | "
+          << num(e2e, 3) << " | " << num(ratio, 3) << " | " << num(r.miou, 3) << " | " << num(s.miou, 3) << " |\n";
   }
   out << "\n## Time ratio ours / SDF, shape by shape\n\n";
   if(ratios.empty())
     out << "No shape where both methods succeeded.\n";
   else
-  {
-    double log_sum = 0.;
-    for(double x : ratios) log_sum += std::log(x);
-    out << "Median ratio " << num(median(ratios), 3) << ", geometric mean "
-        << num(std::exp(log_sum / double(ratios.size())), 3) << ", over " << ratios.size() << " shapes.\n\n"
-        << "| Shape | ours s | SDF s | ours/SDF | ours mIoU | SDF mIoU |\n|---|---|---|---|---|---|\n"
+    out << "End to end (read + method): median ratio " << num(median(e2e_ratios), 3) << ", geometric mean "
+        << num(geometric_mean(e2e_ratios), 3) << ", largest " << num(*std::max_element(e2e_ratios.begin(), e2e_ratios.end()), 3)
+        << "; at most 0.5 on " << at_most_half << "/" << e2e_ratios.size() << " shapes. Method only: median "
+        << num(median(ratios), 3) << ", geometric mean " << num(geometric_mean(ratios), 3) << ".\n\n"
+        << "| Shape | ours end-to-end s | SDF end-to-end s | ours/SDF end-to-end | ours/SDF method | ours mIoU "
+           "| SDF mIoU |\n|---|---|---|---|---|---|---|\n"
         << table.str();
+
+  if(!ours1.empty())
+  {
+    // the same shapes on one thread: speed-up and bit-identical labels
+    std::vector<double> speedups, method_speedups;
+    std::size_t same = 0, compared = 0;
+    std::ostringstream t;
+    for(const Row& r : rows)
+    {
+      if(r.method != "ours1" || !r.ok || !ours.count(r.shape)) continue;
+      const Row& n = *ours[r.shape];
+      speedups.push_back(r.end_to_end() / n.end_to_end());
+      method_speedups.push_back(r.t_method / n.t_method);
+      if(!r.same_labels.empty()) ++compared;
+      if(r.same_labels == "yes") ++same;
+      t << "| " << r.shape << " | " << r.faces << " | " << num(r.end_to_end(), 3) << " | " << num(n.end_to_end(), 3)
+        << " | " << num(speedups.back(), 3) << " | " << num(method_speedups.back(), 3) << " | "
+        << (r.same_labels.empty() ? "-" : r.same_labels) << " |\n";
+    }
+    out << "\n## One thread against " << threads << ", shape by shape\n\n";
+    if(speedups.empty())
+      out << "No shape where both runs succeeded.\n";
+    else
+      out << "Speed-up end to end (1-thread time / " << threads << "-thread time, read + method): median "
+          << num(median(speedups), 3) << ", geometric mean " << num(geometric_mean(speedups), 3)
+          << "; method only: median " << num(median(method_speedups), 3) << ". Labels bit-identical on "
+          << same << "/" << compared << " shapes.\n\n"
+          << "| Shape | faces | 1 thread end-to-end s | " << threads << " threads end-to-end s | speed-up | "
+          << "speed-up method only | same labels |\n|---|---|---|---|---|---|---|\n"
+          << t.str();
   }
 
-  if(!ours.empty())
+  if(!ours.empty() || !ours1.empty())
   {
-    std::vector<const Row*> ok;
-    for(const auto& e : ours) ok.push_back(e.second);
     out << "\n## Our stages, median seconds\n\n"
-        << "| read | prior | TSDF | fitting | over-segmentation | assignment | total |\n"
-        << "|---|---|---|---|---|---|---|\n| "
-        << num(median(field(ok, [](const Row& r) { return r.t_read; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_prior; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_tsdf; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_fitting; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_overseg; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_assign; })), 3) << " | "
-        << num(median(field(ok, [](const Row& r) { return r.t_method; })), 3) << " |\n";
+        << "Stages that run at the same time (the prior, the distance field and the over-segmentation, then "
+           "the fitting next to what is left of the over-segmentation) overlap: their sum exceeds the total.\n\n"
+        << "| run | read | prior | TSDF | fitting | over-segmentation | assignment | method | end-to-end |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n";
+    for(const auto* m : {&ours, &ours1})
+    {
+      if(m->empty()) continue;
+      std::vector<const Row*> ok;
+      for(const auto& e : *m) ok.push_back(e.second);
+      out << "| " << (m == &ours ? std::to_string(threads) + " thread(s)" : std::string("1 thread")) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_read; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_prior; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_tsdf; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_fitting; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_overseg; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_assign; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.t_method; })), 3) << " | "
+          << num(median(field(ok, [](const Row& r) { return r.end_to_end(); })), 3) << " |\n";
+    }
   }
   if(!sdf.empty())
   {
@@ -594,7 +667,7 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
   bool any = false;
   for(const Row& r : rows)
   {
-    if(r.method != "sdf" && r.method != "ours") continue;
+    if(r.method != "sdf" && r.method != "ours" && r.method != "ours1") continue;
     if(!r.ok) { out << "- " << r.shape << " / " << r.method << ": error: " << clean(r.error) << "\n"; any = true; }
     if(!r.note.empty()) { out << "- " << r.shape << " / " << r.method << ": " << clean(r.note) << "\n"; any = true; }
   }
@@ -670,6 +743,140 @@ void write_ablations(const Options& o, const std::string& dataset, const std::ve
   if(!any) out << "None.\n";
 }
 
+
+// ------------------------------------------------------------------------------------------
+// Scale run: one shape subdivided to several sizes, each decomposed from its file.
+
+// The subdivision steps (L: Loop, 1 to 4 faces; S: sqrt(3), 1 to 3) whose face count is
+// nearest to `target` in ratio among those with at least 90% of it.
+std::string subdivision_steps(double base_faces, double target)
+{
+  std::string best;
+  double best_error = std::numeric_limits<double>::infinity();
+  for(int loop = 0; loop <= 8; ++loop)
+    for(int sqrt3 = 0; sqrt3 <= 8; ++sqrt3)
+    {
+      const double f = base_faces * std::pow(4., loop) * std::pow(3., sqrt3);
+      const double error = std::abs(std::log(f / target));
+      if(f >= 0.9 * target && error < best_error)
+      {
+        best_error = error;
+        best = std::string(std::size_t(loop), 'L') + std::string(std::size_t(sqrt3), 'S');
+      }
+    }
+  return best;
+}
+
+int run_scale(const Options& o, int threads)
+{
+  const fs::path dir(o.dataset);
+  fs::path input;
+  for(const char* ext : {".off", ".obj", ".ply", ".stl"})
+    if(fs::exists(dir / (o.scale_shape + ext))) { input = dir / (o.scale_shape + ext); break; }
+  if(input.empty()) { std::cerr << "no mesh file " << o.scale_shape << ".{off,obj,ply,stl} in " << o.dataset << "\n"; return 1; }
+  Mesh base;
+  try { PD::IO::read_triangle_mesh(input.string(), base); }
+  catch(const std::exception& e) { std::cerr << "cannot read " << input << ": " << e.what() << "\n"; return 1; }
+  fs::create_directories(o.out);
+  if(!reset_peak_memory()) std::cerr << "warning: cannot reset the peak memory: peak_mb is the process peak\n";
+
+  std::ofstream tsv(fs::path(o.out) / "scale.tsv");
+  tsv << "shape\tsteps\tfaces\tvertices\tfile_mb\tt_generate\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign"
+         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tparts\terror\n";
+  std::ostringstream table;
+  std::vector<std::pair<double, double> > sizes; // (faces, end-to-end seconds)
+  for(double target : o.scale_faces)
+  {
+    const std::string steps = subdivision_steps(double(num_faces(base)), target);
+    auto t0 = std::chrono::steady_clock::now();
+    const fs::path file = fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".off");
+    {
+      Mesh m = base;
+      for(char c : steps)
+        if(c == 'L') CGAL::Subdivision_method_3::Loop_subdivision(m);
+        else CGAL::Subdivision_method_3::Sqrt3_subdivision(m);
+      std::ofstream out(file);
+      out.precision(17);
+      if(!CGAL::IO::write_OFF(out, m)) { std::cerr << "cannot write " << file << "\n"; return 1; }
+    }
+    const double t_generate = seconds_since(t0);
+    const double file_mb = double(fs::file_size(file)) / (1024. * 1024.);
+
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+    const double rss_before = status_mb("VmRSS:");
+    reset_peak_memory();
+    Row r;
+    std::size_t vertices = 0;
+    t0 = std::chrono::steady_clock::now();
+    try
+    {
+      Mesh mesh;
+      PD::IO::read_triangle_mesh(file.string(), mesh);
+      r.t_read = seconds_since(t0);
+      r.faces = num_faces(mesh);
+      vertices = num_vertices(mesh);
+      std::vector<std::size_t> labels;
+      PD::Stage_timings st;
+      t0 = std::chrono::steady_clock::now();
+      r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st));
+      r.t_method = seconds_since(t0);
+      r.t_prior = st.prior;
+      r.t_tsdf = st.tsdf;
+      r.t_fitting = st.fitting;
+      r.t_overseg = st.over_segmentation;
+      r.t_assign = st.assignment;
+      r.ok = true;
+    }
+    catch(const std::exception& e) { r.error = e.what(); }
+    r.peak_mb = status_mb("VmHWM:");
+    fs::remove(file);
+
+    tsv << o.scale_shape << '\t' << steps << '\t' << r.faces << '\t' << vertices << '\t' << num(file_mb, 1) << '\t'
+        << num(t_generate) << '\t' << num(r.t_read) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t'
+        << num(r.t_fitting) << '\t' << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_method) << '\t'
+        << num(r.end_to_end()) << '\t' << num(r.peak_mb, 1) << '\t' << num(rss_before, 1) << '\t' << r.parts << '\t'
+        << clean(r.error) << std::endl;
+    std::cout << "scale " << steps << ": " << r.faces << " faces, " << (r.ok ? "ok" : "ERROR " + r.error) << ", read "
+              << num(r.t_read, 3) << " s, decompose " << num(r.t_method, 3) << " s, peak " << num(r.peak_mb, 0)
+              << " MB" << std::endl;
+    if(!r.ok) continue;
+    double slope = NaN;
+    if(!sizes.empty())
+      slope = std::log(r.end_to_end() / sizes.back().second) / std::log(double(r.faces) / sizes.back().first);
+    sizes.emplace_back(double(r.faces), r.end_to_end());
+    table << "| " << steps << " | " << r.faces << " | " << num(file_mb, 0) << " | " << num(r.t_read, 2) << " | "
+          << num(r.t_prior, 2) << " | " << num(r.t_tsdf, 2) << " | " << num(r.t_fitting, 2) << " | "
+          << num(r.t_overseg, 2) << " | " << num(r.t_assign, 2) << " | " << num(r.t_method, 2) << " | "
+          << num(r.end_to_end(), 2) << " | " << num(1e5 * r.end_to_end() / double(r.faces), 3) << " | "
+          << (std::isnan(slope) ? std::string("-") : num(slope, 2)) << " | " << num(r.peak_mb, 0) << " | "
+          << r.parts << " |\n";
+  }
+
+  std::ofstream md(fs::path(o.out) / "scale.md");
+  md << "# Scale run: " << o.scale_shape << " (" << num_faces(base) << " faces) subdivided\n\n"
+     << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
+     << "Each size is made by Loop (L, 1 to 4 faces) and sqrt(3) (S, 1 to 3) subdivision steps of CGAL's "
+        "Subdivision_method_3, written as an OFF file, then read with IO::read_triangle_mesh() and decomposed "
+        "with decompose() at the default parameters; the file is deleted afterwards. Seconds are wall-clock; "
+        "end-to-end = read + decompose; peak MB is the process's VmHWM from just before the read to the end "
+        "(the mesh, the file buffer and every stage). Growth exponent: log(t2/t1)/log(F2/F1) of the "
+        "end-to-end time against the previous size (1 = linear).\n\n"
+     << "| steps | faces | file MB | read s | prior s | TSDF s | fitting s | over-seg. s | assignment s "
+        "| decompose s | end-to-end s | s per 100k faces | growth exponent | peak MB | parts |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+     << table.str();
+  if(sizes.size() >= 2)
+    md << "\nFrom " << num(sizes.front().first, 0) << " to " << num(sizes.back().first, 0) << " faces ("
+       << num(sizes.back().first / sizes.front().first, 1) << "x) the end-to-end time grows "
+       << num(sizes.back().second / sizes.front().second, 1) << "x (exponent "
+       << num(std::log(sizes.back().second / sizes.front().second) / std::log(sizes.back().first / sizes.front().first), 2)
+       << ").\n";
+  std::cout << "wrote " << (fs::path(o.out) / "scale.tsv").string() << ", " << (fs::path(o.out) / "scale.md").string() << "\n";
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -681,6 +888,7 @@ int main(int argc, char** argv)
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 #endif
+  if(!o.scale_shape.empty()) return run_scale(o, threads);
 
   std::string error;
   const std::vector<Shape_entry> shapes = read_dataset(o, error);
@@ -792,11 +1000,14 @@ int main(int argc, char** argv)
     };
 
     std::vector<std::pair<std::string, const Variant*> > runs;
-    for(const std::string& m : o.methods) runs.emplace_back(m, nullptr);
+    for(const std::string m : {"sdf", "ours", "ours1"}) // ours before ours1: its labels are the reference
+      if(contains(o.methods, m)) runs.emplace_back(m, nullptr);
     if(contains(o.methods, "ours") || o.ablations)
       for(const Variant& v : variants)
         if(v.available) runs.emplace_back("ours:" + v.id, &v); // the others are n/a in the tables
 
+    std::vector<std::size_t> ours_labels; // of the "ours" run, compared with "ours1"
+    bool has_ours_labels = false;
     for(const auto& run : runs)
     {
       Row r = base;
@@ -807,7 +1018,33 @@ int main(int argc, char** argv)
       t0 = std::chrono::steady_clock::now();
       try
       {
-        if(run.first == "sdf")
+        if(run.first == "ours1")
+        {
+          // One thread from the file to the labels: the mesh is read again inside the arena.
+          PD::Stage_timings st;
+          auto one_thread = [&]() {
+            Mesh mesh1;
+            const auto tr = std::chrono::steady_clock::now();
+            PD::IO::read_triangle_mesh(e.mesh.string(), mesh1);
+            r.t_read = seconds_since(tr);
+            t0 = std::chrono::steady_clock::now();
+            r.parts = run_ours(mesh1, labels, PD::parameters::stage_timings(&st));
+            r.t_method = seconds_since(t0);
+          };
+#ifdef CGAL_LINKED_WITH_TBB
+          tbb::task_arena arena(1);
+          arena.execute(one_thread);
+#else
+          one_thread();
+#endif
+          r.t_prior = st.prior;
+          r.t_tsdf = st.tsdf;
+          r.t_fitting = st.fitting;
+          r.t_overseg = st.over_segmentation;
+          r.t_assign = st.assignment;
+          if(has_ours_labels) r.same_labels = labels == ours_labels ? "yes" : "no";
+        }
+        else if(run.first == "sdf")
         {
           pd_benchmark::Sdf_peer_result p = pd_benchmark::segment_with_sdf(mesh);
           r.t_method = seconds_since(t0);
@@ -840,6 +1077,11 @@ int main(int argc, char** argv)
           r.t_fitting = st.fitting;
           r.t_overseg = st.over_segmentation;
           r.t_assign = st.assignment;
+          if(run.first == "ours")
+          {
+            ours_labels = labels;
+            has_ours_labels = true;
+          }
         }
         score(labels, samples, gt_samples, r);
         r.ok = true;

@@ -17,6 +17,8 @@
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/tsdf.h>
+#include <cstdlib>
+#include <map>
 
 #include <CGAL/Default.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -26,12 +28,17 @@
 #include <Eigen/Dense>
 #include <boost/property_map/property_map.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -49,6 +56,9 @@ struct Stage_timings
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
   double total = 0.;             ///< the whole call, input checks included
+  /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
+  /// overlap and their sum exceeds `total`.
+  bool overlapping = false;
 };
 
 namespace internal {
@@ -56,6 +66,22 @@ namespace internal {
 inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Runs `f` and `g`, as two tasks when `ConcurrencyTag` is parallel (each may run parallel loops:
+// a thread idle in one joins the other), else `f` then `g`. An exception of either is rethrown.
+template <typename ConcurrencyTag, typename F, typename G>
+void run_side_by_side(const F& f, const G& g)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_invoke(f, g);
+    return;
+  }
+#endif
+  f();
+  g();
 }
 
 // The box-like superquadric of the principal-axis bounding box of `points`: what a part gets
@@ -234,6 +260,8 @@ public:
     m_part_to_primitive = Part_decomposition::assign_parts<ConcurrencyTag>(
       m_tm, patch_map(np), m_fitting.labels, m_normalization, face_part_map,
       with_mesh(np));
+    if(const char* env = std::getenv("PD_SHEET"))
+      merge_sheets(face_part_map, np, std::atof(env));
     make_part_primitives(face_part_map);
     return m_part_to_primitive.size();
   }
@@ -262,6 +290,107 @@ public:
   /// @}
 
 private:
+  template <typename FacePartMap, typename NamedParameters>
+  void merge_sheets(FacePartMap face_part_map, const NamedParameters& np, double ratio)
+  {
+    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+    const auto fim = CGAL::get_initialized_face_index_map(m_tm, np);
+    const std::size_t nf = num_faces(m_tm);
+    std::vector<std::size_t> part(nf);
+    std::vector<std::array<double, 3> > normal(nf);
+    for(face_descriptor f : faces(m_tm))
+    {
+      const std::size_t i = get(fim, f);
+      part[i] = get(face_part_map, f);
+      std::array<std::array<double, 3>, 3> p;
+      int k = 0;
+      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
+      {
+        const auto& q = get(m_vpm, v);
+        p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+      }
+      double e1[3], e2[3];
+      for(int a = 0; a < 3; ++a) { e1[a] = p[1][a] - p[0][a]; e2[a] = p[2][a] - p[0][a]; }
+      double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for(int a = 0; a < 3; ++a) normal[i][a] = len > 0. ? n[a] / len : 0.;
+    }
+    struct E { std::size_t a, b; double angle, length; };
+    std::vector<E> seam;
+    std::vector<double> angles;
+    for(auto e : CGAL::edges(m_tm))
+    {
+      const auto h = halfedge(e, m_tm);
+      if(is_border_edge(h, m_tm)) continue;
+      const std::size_t a = get(fim, face(h, m_tm)), b = get(fim, face(opposite(h, m_tm), m_tm));
+      const double d = normal[a][0] * normal[b][0] + normal[a][1] * normal[b][1] + normal[a][2] * normal[b][2];
+      const double angle = std::acos((std::max)(-1., (std::min)(1., d))) * 180. / CGAL_PI;
+      angles.push_back(angle);
+      if(part[a] == part[b]) continue;
+      const auto& p = get(m_vpm, source(h, m_tm));
+      const auto& q = get(m_vpm, target(h, m_tm));
+      const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x()), dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
+                   dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+      seam.push_back({a, b, angle, std::sqrt(dx * dx + dy * dy + dz * dz)});
+    }
+    if(angles.empty()) return;
+    std::sort(angles.begin(), angles.end());
+    const double cut = angles[std::size_t(0.9 * double(angles.size() - 1))];
+    const std::size_t K = m_part_to_primitive.size();
+    std::vector<char> sheet(K, 0);
+    static const double thick = std::getenv("PD_THICK") ? std::atof(std::getenv("PD_THICK")) : 1e9;
+    Voxel_grid<std::uint8_t> outside(m_tsdf.values.resolution(), 0);
+    for(std::size_t v = 0; v < outside.size(); ++v) outside[v] = m_tsdf.values[v] > 0.;
+    const Voxel_grid<double> depth2 = internal::squared_distance_transform<CGAL::Sequential_tag>(outside);
+    for(std::size_t k = 0; k < K; ++k)
+    {
+      const std::size_t prim = m_part_to_primitive[k];
+      if(prim >= m_fitting.primitives.size()) continue;
+      std::array<double, 3> a = m_fitting.primitives[prim].scales();
+      std::sort(a.begin(), a.end());
+      double maxd2 = 0.;
+      for(std::size_t v : m_fitting.claimed_voxels[prim]) maxd2 = (std::max)(maxd2, depth2[v]);
+      sheet[k] = a[0] * ratio < a[1] && std::sqrt(maxd2) <= thick;
+    }
+    // union-find over sheet pairs whose seam is mostly smooth
+    std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > stats; // (sharp length, length)
+    for(const E& e : seam)
+    {
+      const std::size_t p = part[e.a], q = part[e.b];
+      if(!sheet[p] || !sheet[q]) continue;
+      auto& st = stats[std::make_pair((std::min)(p, q), (std::max)(p, q))];
+      st.second += e.length;
+      if(e.angle >= cut) st.first += e.length;
+    }
+    std::vector<std::size_t> leader(K);
+    for(std::size_t k = 0; k < K; ++k) leader[k] = k;
+    auto find = [&](std::size_t x) { while(leader[x] != x) x = leader[x] = leader[leader[x]]; return x; };
+    for(const auto& st : stats)
+      if(st.second.first < 0.5 * st.second.second)
+      {
+        const std::size_t a = find(st.first.first), b = find(st.first.second);
+        if(a != b) leader[(std::max)(a, b)] = (std::min)(a, b);
+      }
+    std::vector<std::size_t> old_to_new(K), new_id(K, std::size_t(-1));
+    std::size_t K2 = 0;
+    for(std::size_t k = 0; k < K; ++k)
+    {
+      const std::size_t r = find(k);
+      if(new_id[r] == std::size_t(-1)) new_id[r] = K2++;
+      old_to_new[k] = new_id[r];
+    }
+    std::vector<std::size_t> primitive(K2, no_primitive);
+    std::vector<std::size_t> volume(K2, 0);
+    for(std::size_t p = 0; p < K; ++p)
+    {
+      const std::size_t q = old_to_new[p], prim = m_part_to_primitive[p];
+      const std::size_t vol = prim < m_fitting.claimed_voxels.size() ? m_fitting.claimed_voxels[prim].size() + 1 : 0;
+      if(primitive[q] == no_primitive || vol > volume[q]) { primitive[q] = prim; volume[q] = vol; }
+    }
+    m_part_to_primitive = primitive;
+    for(face_descriptor f : faces(m_tm)) put(face_part_map, f, old_to_new[part[get(fim, f)]]);
+  }
+
   // the patches as a face property map, through the face index map the stages use
   template <typename NamedParameters>
   auto patch_map(const NamedParameters& np)
@@ -328,6 +457,12 @@ The stages, each also available on its own: `compute_flow_freeze_prior()`, `comp
 `fit_superquadrics()`, `over_segment()`, `assign_parts()`; `Part_decomposer` runs them one by
 one. Every named parameter of these functions is accepted here and passed to the stage that reads
 it; the table below lists them all.
+
+With a parallel `ConcurrencyTag`, the stages that do not depend on each other also run at the same
+time: the prior and the distance field side by side, followed by the fitting, while the
+over-segmentation (which needs only the mesh) runs next to the three of them; every stage also
+runs its own loops in parallel. The result is the same: each stage is deterministic and none
+reads what another writes.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 `CGAL::Parallel_if_available_tag` (parallel with TBB when it is linked)
@@ -548,23 +683,34 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   Part_decomposer<TriangleMesh, GT, VPM> decomposer(tm, vpm, margin);
 
   Stage_timings timings;
-  auto t = std::chrono::steady_clock::now();
-  decomposer.template compute_prior<ConcurrencyTag>(np);
-  timings.prior = internal::seconds_since(t);
+  timings.overlapping = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
+  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
+  // distance field next to each other before it.
+  internal::run_side_by_side<ConcurrencyTag>(
+    [&] {
+      internal::run_side_by_side<ConcurrencyTag>(
+        [&] {
+          const auto t = std::chrono::steady_clock::now();
+          decomposer.template compute_prior<ConcurrencyTag>(np);
+          timings.prior = internal::seconds_since(t);
+        },
+        [&] {
+          const auto t = std::chrono::steady_clock::now();
+          decomposer.template compute_distance_field<ConcurrencyTag>(np);
+          timings.tsdf = internal::seconds_since(t);
+        });
+      const auto t = std::chrono::steady_clock::now();
+      decomposer.template fit_primitives<ConcurrencyTag>(np);
+      timings.fitting = internal::seconds_since(t);
+    },
+    [&] {
+      const auto t = std::chrono::steady_clock::now();
+      decomposer.template over_segment<ConcurrencyTag>(np);
+      timings.over_segmentation = internal::seconds_since(t);
+    });
 
-  t = std::chrono::steady_clock::now();
-  decomposer.template compute_distance_field<ConcurrencyTag>(np);
-  timings.tsdf = internal::seconds_since(t);
-
-  t = std::chrono::steady_clock::now();
-  decomposer.template fit_primitives<ConcurrencyTag>(np);
-  timings.fitting = internal::seconds_since(t);
-
-  t = std::chrono::steady_clock::now();
-  decomposer.template over_segment<ConcurrencyTag>(np);
-  timings.over_segmentation = internal::seconds_since(t);
-
-  t = std::chrono::steady_clock::now();
+  const auto t = std::chrono::steady_clock::now();
   const std::size_t K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),
                               CGAL::Emptyset_iterator());
