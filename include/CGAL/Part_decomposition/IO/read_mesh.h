@@ -27,11 +27,63 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The largest single allocation, in bytes, of the containers the file parser fills on this thread.
+inline std::size_t& read_allocation_limit()
+{
+  thread_local std::size_t limit = std::size_t(-1);
+  return limit;
+}
+
+// Sets the limit for the lifetime of the object.
+class Read_allocation_limit
+{
+public:
+  explicit Read_allocation_limit(std::size_t bytes) : m_previous(read_allocation_limit())
+  {
+    read_allocation_limit() = bytes;
+  }
+  ~Read_allocation_limit() { read_allocation_limit() = m_previous; }
+  Read_allocation_limit(const Read_allocation_limit&) = delete;
+  Read_allocation_limit& operator=(const Read_allocation_limit&) = delete;
+
+private:
+  std::size_t m_previous;
+};
+
+// std::allocator that throws std::bad_alloc beyond read_allocation_limit().
+template <typename T>
+struct Bounded_allocator
+{
+  typedef T value_type;
+  Bounded_allocator() = default;
+  template <typename U>
+  Bounded_allocator(const Bounded_allocator<U>&) {}
+  T* allocate(std::size_t n)
+  {
+    if(n > read_allocation_limit() / sizeof(T)) throw std::bad_alloc();
+    return std::allocator<T>().allocate(n);
+  }
+  void deallocate(T* p, std::size_t n) { std::allocator<T>().deallocate(p, n); }
+  template <typename U>
+  bool operator==(const Bounded_allocator<U>&) const { return true; }
+  template <typename U>
+  bool operator!=(const Bounded_allocator<U>&) const { return false; }
+};
+
+} // namespace internal
+/// \endcond
+
 namespace IO {
 
 /*!
@@ -99,18 +151,34 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
   typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
 
   Mesh_file_info info;
+  std::size_t file_size = 0;
   {
-    std::ifstream probe(filename);
+    std::ifstream probe(filename, std::ios::binary | std::ios::ate);
     if(!probe)
       throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
+    const std::streamoff end = probe.tellg();
+    file_size = end > 0 ? std::size_t(end) : 0;
   }
   std::vector<Read_point> file_points;
   std::vector<std::vector<std::size_t> > polygons;
   bool ok = false;
   try
   {
-    ok = CGAL::IO::read_polygon_soup(filename, file_points, polygons,
+    // A header may promise more than the file holds (an OFF count or face degree of 10^9 in a
+    // few bytes): no single allocation of the parser may exceed a multiple of the file size.
+    internal::Read_allocation_limit limit(64 * file_size + (std::size_t(1) << 20));
+    std::vector<Read_point, internal::Bounded_allocator<Read_point> > bounded_points;
+    std::vector<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> >,
+                internal::Bounded_allocator<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> > > >
+      bounded_polygons;
+    ok = CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons,
                                      CGAL::parameters::verbose(false));
+    if(ok)
+    {
+      file_points.assign(bounded_points.begin(), bounded_points.end());
+      polygons.reserve(bounded_polygons.size());
+      for(const auto& poly : bounded_polygons) polygons.emplace_back(poly.begin(), poly.end());
+    }
   }
   catch(const std::exception&)
   {
