@@ -12,11 +12,16 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -33,8 +38,24 @@ enum class Input_error
   NOT_TRIANGLE_MESH,      ///< a face of the mesh is not a triangle
   NON_FINITE_COORDINATES, ///< a vertex coordinate is infinite or NaN
   DEGENERATE_EXTENT,      ///< all vertices coincide: the shape has no extent to normalize
-  INVALID_PARAMETER       ///< a named parameter is out of its documented range
+  INVALID_PARAMETER,      ///< a named parameter is out of its documented range
+  COORDINATES_OUT_OF_RANGE ///< a coordinate or the extent is outside the range of `maximum_coordinate` and `minimum_extent`
 };
+
+/*!
+\ingroup PkgPartDecompositionRef
+The largest absolute value of a vertex coordinate the package accepts. Squared and fourth powers
+of lengths (areas, cotangent weights, covariances) must stay far from overflow; results are
+checked to be independent of the scale from `minimum_extent` to this value.
+*/
+constexpr double maximum_coordinate = 1e30;
+
+/*!
+\ingroup PkgPartDecompositionRef
+The smallest extent (longest side of the bounding box) of a mesh the package accepts, for the
+same reason as `maximum_coordinate`, at the other end of the range of `double`.
+*/
+constexpr double minimum_extent = 1e-30;
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -55,16 +76,60 @@ private:
   Input_error m_error;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The bounding box [lo, hi] of finite coordinates must have an extent and lie in the range where
+// squared lengths neither overflow nor underflow.
+inline void check_extent(const double lo[3], const double hi[3])
+{
+  long double extent = 0;
+  double magnitude = 0.;
+  for(int a = 0; a < 3; ++a)
+  {
+    extent = (std::max)(extent, static_cast<long double>(hi[a]) - lo[a]);
+    magnitude = (std::max)(magnitude, (std::max)(std::abs(lo[a]), std::abs(hi[a])));
+  }
+  if(!(extent > 0))
+    throw Invalid_input(Input_error::DEGENERATE_EXTENT, "all vertices of the mesh coincide");
+  if(!(magnitude <= maximum_coordinate) || !(extent >= minimum_extent))
+    throw Invalid_input(Input_error::COORDINATES_OUT_OF_RANGE,
+                        "the coordinates are out of range: each must be at most 1e30 in absolute value and "
+                        "the mesh at least 1e-30 wide");
+}
+
+// Whether `index` maps the elements of `range` one to one onto [0, n).
+template <typename Range, typename IndexMap>
+bool is_bijection_onto_range(const Range& range, const IndexMap& index, std::size_t n)
+{
+  std::vector<char> seen(n, 0);
+  std::size_t count = 0;
+  for(auto x : range)
+  {
+    const std::size_t i = std::size_t(get(index, x));
+    if(!(i < n) || seen[i]) return false;
+    seen[i] = 1;
+    ++count;
+  }
+  return count == n;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgPartDecompositionRef
-checks that `tm` can be decomposed: it has at least one face, every face is a triangle, and every
-vertex has finite coordinates, not all equal. Open, non-manifold, self-intersecting meshes and
+checks that `tm` can be decomposed: it has at least one face, every face is a triangle, every
+vertex of a face has finite coordinates, not all equal, of absolute value at most
+`maximum_coordinate`, the extent of the mesh is at least `minimum_extent`, and the vertex and face
+index maps number the vertices and faces from 0 to `num_vertices(tm) - 1` and `num_faces(tm) - 1`
+(a `CGAL::Surface_mesh` after removals needs `collect_garbage()`). Open, non-manifold, self-intersecting meshes and
 meshes of several connected components are accepted.
 
 \par Complexity
 Linear in the size of `tm`.
 
-\tparam TriangleMesh a model of `FaceListGraph`
+\tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the mesh
@@ -78,9 +143,23 @@ Linear in the size of `tm`.
                    `%Point_3` as value type}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
   \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws Invalid_input if one of the conditions above does not hold.
+\throws Invalid_input if one of the conditions above does not hold: `NO_FACES`,
+`NOT_TRIANGLE_MESH`, `NON_FINITE_COORDINATES`, `DEGENERATE_EXTENT`, `COORDINATES_OUT_OF_RANGE`, or
+`INVALID_PARAMETER` for an index map.
 */
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void check_input(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
@@ -97,8 +176,25 @@ void check_input(const TriangleMesh& tm, const NamedParameters& np = CGAL::param
     if(degree(f, tm) != 3)
       throw Invalid_input(Input_error::NOT_TRIANGLE_MESH, "the mesh has a face that is not a triangle");
 
-  bool first = true, distinct = false;
-  double ref[3] = {0., 0., 0.};
+  // The stages size arrays by num_vertices() and num_faces() and turn indices back into
+  // elements: each index map must be a bijection onto [0, n). It is not on a Surface_mesh with
+  // removed elements, whose num_faces() still counts them.
+  {
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    if(!internal::is_bijection_onto_range(vertices(tm), vim, std::size_t(num_vertices(tm))))
+      throw Invalid_input(Input_error::INVALID_PARAMETER,
+                          "the vertex indices are not 0 to num_vertices() - 1 (a Surface_mesh with removed "
+                          "elements needs collect_garbage())");
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    if(!internal::is_bijection_onto_range(faces(tm), fim, std::size_t(num_faces(tm))))
+      throw Invalid_input(Input_error::INVALID_PARAMETER,
+                          "the face indices are not 0 to num_faces() - 1 (a Surface_mesh with removed "
+                          "elements needs collect_garbage())");
+  }
+
+  double lo[3], hi[3];
+  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
   for(auto f : faces(tm))
     for(auto v : vertices_around_face(halfedge(f, tm), tm))
     {
@@ -109,15 +205,11 @@ void check_input(const TriangleMesh& tm, const NamedParameters& np = CGAL::param
         if(!std::isfinite(c[a]))
           throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
                               "a vertex has a non-finite coordinate");
-        if(first)
-          ref[a] = c[a];
-        else if(c[a] != ref[a])
-          distinct = true;
+        lo[a] = (std::min)(lo[a], c[a]);
+        hi[a] = (std::max)(hi[a], c[a]);
       }
-      first = false;
     }
-  if(!distinct)
-    throw Invalid_input(Input_error::DEGENERATE_EXTENT, "all vertices of the mesh coincide");
+  internal::check_extent(lo, hi);
 }
 
 } // namespace Part_decomposition

@@ -33,10 +33,13 @@ class Normalization
 public:
   /// the identity.
   Normalization() : m_center{{0., 0., 0.}}, m_scale(1.) {}
-  /// the map `p -> (p - center) * scale`. \pre `scale > 0`
+  /// the map `p -> (p - center) * scale`.
+  /// \throws Invalid_input (`INVALID_PARAMETER`) unless `scale` is positive and every value is finite.
   Normalization(const std::array<double, 3>& center, double scale) : m_center(center), m_scale(scale)
   {
-    CGAL_precondition(scale > 0.);
+    if(!(scale > 0.) || !std::isfinite(scale) || !std::isfinite(center[0]) || !std::isfinite(center[1]) ||
+       !std::isfinite(center[2]))
+      throw Invalid_input(Input_error::INVALID_PARAMETER, "a normalization needs a finite center and a positive finite scale");
   }
 
   /// the input point mapped to the centre of the cube.
@@ -101,7 +104,9 @@ Only the vertices incident to a face count.
 \par Complexity
 Linear in the size of `tm`.
 
-\throws Invalid_input if `tm` has no face, a non-finite coordinate, or all its vertices coincide.
+\throws Invalid_input if `tm` has no face (`NO_FACES`), a non-finite coordinate
+(`NON_FINITE_COORDINATES`), all its vertices coincide (`DEGENERATE_EXTENT`), or its coordinates are
+out of the range of `maximum_coordinate` and `minimum_extent` (`COORDINATES_OUT_OF_RANGE`).
 */
 template <typename FaceListGraph, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Normalization compute_normalization(const FaceListGraph& tm,
@@ -136,6 +141,7 @@ Normalization compute_normalization(const FaceListGraph& tm,
     }
   if(!any)
     throw Invalid_input(Input_error::NO_FACES, "the mesh has no face");
+  internal::check_extent(lo, hi);
 
   // Centre and extent in long double: at 1e8 offsets with 1e-8 extents the difference matters.
   std::array<double, 3> center;
