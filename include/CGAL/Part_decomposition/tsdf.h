@@ -114,7 +114,9 @@ void spread_to_surface_voxels(const std::vector<Triangle_points>& tris, const Su
     for(std::size_t t = sv.offsets[voxel]; t < sv.offsets[voxel + 1]; ++t)
     {
       const Triangle_points& T = tris[sv.triangles[t]];
-      if(CGAL::do_intersect(seg, CGAL::Epick::Triangle_3(point(T[0]), point(T[1]), point(T[2])))) return true;
+      const CGAL::Epick::Triangle_3 triangle(point(T[0]), point(T[1]), point(T[2]));
+      // a zero-area triangle separates nothing (and do_intersect() requires a proper one)
+      if(!triangle.is_degenerate() && CGAL::do_intersect(seg, triangle)) return true;
     }
     return false;
   };
