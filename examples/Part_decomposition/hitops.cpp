@@ -520,4 +520,9 @@ int main(int argc, char** argv)
     std::cerr << "hitops: error: " << message << std::endl;
     return EXIT_FAILURE;
   }
+  catch(...)
+  {
+    std::cerr << "hitops: error: unexpected exception" << std::endl;
+    return EXIT_FAILURE;
+  }
 }
