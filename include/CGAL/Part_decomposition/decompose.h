@@ -660,9 +660,10 @@ The sum of the costs of the stages, \f$O(F \log F + F\,N_{face} + r^3)\f$ for \f
 resolution \f$r\f$, plus the superquadric fits, whose number and cost depend on the shape and on
 \f$r\f$, not on \f$F\f$ (see `fit_superquadrics()`).
 
-\pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)
 \throws Invalid_input if `tm` cannot be decomposed (no face, a face that is not a triangle, a
-non-finite coordinate, all vertices equal) or a named parameter is out of its range.
+non-finite coordinate, all vertices equal, coordinates out of the range of `maximum_coordinate` and
+`minimum_extent`, a `CGAL::Surface_mesh` with garbage: see `check_input()`) or a named parameter is
+out of its range.
 
 \cgalExample{Part_decomposition/decompose_example.cpp}
 */
