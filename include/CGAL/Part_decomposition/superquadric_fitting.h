@@ -718,7 +718,8 @@ distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
   \cgalParamNBegin{coverage_target}
     \cgalParamDescription{the fraction of \f$\Omega_{valid}\f$ to claim before a stage ends}
     \cgalParamType{`double`, in \f$(0,1]\f$}
-    \cgalParamDefault{`0.95`}
+    \cgalParamDefault{`0.999` (the paper's 0.95 leaves thin limbs, a few voxels each, without a
+                      primitive)}
   \cgalParamNEnd
   \cgalParamNBegin{roi_radius}
     \cgalParamDescription{\f$\rho(r_{fit})\f$, the radius of the region of interest, in voxels of \f$r_{fit}\f$}
@@ -759,8 +760,6 @@ distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\pre `tsdf.values` has the resolution of `prior.classes`, the resolutions of the prior are
-increasing, and the finest is that of `prior.classes`.
 \par Complexity
 Independent of the number of faces of the mesh. A stage ends after 4 rejected seeds in a row, so
 there are at most \f$5P + 4L\f$ seeds for \f$P\f$ accepted primitives and \f$L\f$ resolutions. Each seed
@@ -771,7 +770,9 @@ evaluates the residuals of at most about 4096 samples (plus exterior band sample
 times.
 
 \returns the accepted superquadrics and the claimed-voxel labels.
-\throws Invalid_input (`INVALID_PARAMETER`) if a parameter is out of range.
+\throws Invalid_input (`INVALID_PARAMETER`) if a parameter is out of range, or unless `tsdf.values`
+has the resolution of `prior.classes`, the resolutions of the prior are increasing, and the finest
+is that of `prior.classes`.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel,
@@ -793,7 +794,7 @@ Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_pri
   const double body_volume = choose_parameter(get_parameter(np, internal_np::minimum_body_volume), 5.);
   const double surface_volume = choose_parameter(get_parameter(np, internal_np::minimum_surface_volume), 3.);
   const double exterior_penalty = choose_parameter(get_parameter(np, internal_np::exterior_penalty), 5.);
-  const double coverage = choose_parameter(get_parameter(np, internal_np::coverage_target), 0.95);
+  const double coverage = choose_parameter(get_parameter(np, internal_np::coverage_target), defaults::coverage_target);
   const double roi = choose_parameter(get_parameter(np, internal_np::roi_radius), 8.);
   const Interior_weight_mode mode =
     choose_parameter(get_parameter(np, internal_np::interior_weight_mode), Interior_weight_mode::ONE_SHOT);
@@ -814,8 +815,14 @@ Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_pri
   if(!(roi > 0.) || !std::isfinite(roi)) fail("roi_radius must be positive");
   if(cap == 0) fail("maximum_number_of_primitives must be positive");
 
-  CGAL_precondition(tsdf.values.resolution() == prior.classes.resolution());
-  CGAL_precondition(!prior.resolutions.empty() && prior.resolutions.back() == prior.classes.resolution());
+  // Results of other calls: checked at run time, a mismatch would index out of the grids.
+  bool consistent = !prior.resolutions.empty() && prior.resolutions.front() >= 1 &&
+                    prior.resolutions.back() == prior.classes.resolution() &&
+                    tsdf.values.resolution() == prior.classes.resolution();
+  for(std::size_t l = 1; consistent && l < prior.resolutions.size(); ++l)
+    consistent = prior.resolutions[l - 1] < prior.resolutions[l];
+  if(!consistent)
+    fail("the prior and the distance field must be computed with the same voxel_resolutions");
 
   // r_fit = min(r, cap) with cap the resolution before the finest (32 for 16, 32, 64).
   const std::vector<int>& stages = prior.resolutions;
