@@ -75,6 +75,7 @@ struct Options
   PD::Interior_weight_mode interior_weight = PD::Interior_weight_mode::ONE_SHOT;
   std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
   bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
+  bool merge_sheets = PD::defaults::merge_thin_sheets;
   double dihedral_quantile = PD::defaults::dihedral_quantile;
   unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
   double min_patch_size = PD::defaults::minimum_patch_size;
@@ -116,13 +117,14 @@ const char* const usage_text =
   "  --trust-region-scales 1,0.5,0.25\n"
   "  --body-seed-threshold 1.5\n"
   "  --min-body-volume 5      --min-surface-volume 3\n"
-  "  --exterior-penalty 5     --coverage 0.95     --roi-radius 8\n"
+  "  --exterior-penalty 5     --coverage 0.999    --roi-radius 8\n"
   "  --interior-weight M      one-shot or mps\n"
   "  --max-primitives 256\n"
   "  --no-freeze --no-tsdf --no-body-seeds   ablations of the paper\n"
   "  --dihedral-quantile 90   --smoothing-iterations 1\n"
-  "  --min-patch-size 0.001   --max-patch-size 0.003   (fractions of the mesh area)\n"
-  "  --vote-temperature 1     voxels of the finest grid\n";
+  "  --min-patch-size 0.001   --max-patch-size 0.0005  (fractions of the mesh area)\n"
+  "  --vote-temperature 1     voxels of the finest grid\n"
+  "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n";
 
 double to_number(const std::string& option, const std::string& text)
 {
@@ -224,6 +226,7 @@ Options parse(int argc, char** argv)
     }
     else if(a == "--max-primitives") o.max_primitives = to_count(a, value());
     else if(a == "--no-freeze") o.use_freeze = false;
+    else if(a == "--no-sheet-merge") o.merge_sheets = false;
     else if(a == "--no-tsdf") o.use_tsdf = false;
     else if(a == "--no-body-seeds") o.use_body_seeds = false;
     else if(a == "--dihedral-quantile") o.dihedral_quantile = to_number(a, value());
@@ -326,6 +329,7 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_quantile(o.dihedral_quantile),
                  PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
                  PDP::maximum_patch_size(o.max_patch_size), PDP::vote_temperature(o.vote_temperature),
+                 PDP::merge_thin_sheets(o.merge_sheets),
                  PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
                  PDP::stage_timings(&r.timings)));
   r.face_part.assign(part.begin(), part.end());

@@ -17,8 +17,7 @@
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <cstdlib>
-#include <map>
+#include <CGAL/Part_decomposition/internal/sheet_merging.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -243,8 +242,9 @@ public:
   }
 
   /*!
-  assigns every patch to a primitive with `Part_decomposition::assign_parts()`, writes the part
-  id (0 to `K-1`) of every face to `face_part_map` and returns `K`. Part `k` is explained by
+  assigns every patch to a primitive with `Part_decomposition::assign_parts()`, merges the thin
+  sheets unless the named parameter `merge_thin_sheets` is `false` (see `decompose()`), writes the
+  part id (0 to `K-1`) of every face to `face_part_map` and returns `K`. Part `k` is explained by
   `part_primitives()[k]`.
   \tparam FacePartMap a model of `WritablePropertyMap` with
   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
@@ -260,8 +260,15 @@ public:
     m_part_to_primitive = Part_decomposition::assign_parts<ConcurrencyTag>(
       m_tm, patch_map(np), m_fitting.labels, m_normalization, face_part_map,
       with_mesh(np));
-    if(const char* env = std::getenv("PD_SHEET"))
-      merge_sheets(face_part_map, np, std::atof(env));
+    if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::merge_thin_sheets),
+                                         defaults::merge_thin_sheets))
+    {
+      const auto fim = CGAL::get_initialized_face_index_map(m_tm, np);
+      std::vector<std::size_t> part(num_faces(m_tm));
+      for(auto f : faces(m_tm)) part[get(fim, f)] = get(face_part_map, f);
+      internal::merge_thin_sheet_parts(m_tm, m_vpm, fim, m_tsdf, m_fitting, part, m_part_to_primitive);
+      for(auto f : faces(m_tm)) put(face_part_map, f, part[get(fim, f)]);
+    }
     make_part_primitives(face_part_map);
     return m_part_to_primitive.size();
   }
@@ -290,107 +297,6 @@ public:
   /// @}
 
 private:
-  template <typename FacePartMap, typename NamedParameters>
-  void merge_sheets(FacePartMap face_part_map, const NamedParameters& np, double ratio)
-  {
-    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-    const auto fim = CGAL::get_initialized_face_index_map(m_tm, np);
-    const std::size_t nf = num_faces(m_tm);
-    std::vector<std::size_t> part(nf);
-    std::vector<std::array<double, 3> > normal(nf);
-    for(face_descriptor f : faces(m_tm))
-    {
-      const std::size_t i = get(fim, f);
-      part[i] = get(face_part_map, f);
-      std::array<std::array<double, 3>, 3> p;
-      int k = 0;
-      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
-      {
-        const auto& q = get(m_vpm, v);
-        p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-      }
-      double e1[3], e2[3];
-      for(int a = 0; a < 3; ++a) { e1[a] = p[1][a] - p[0][a]; e2[a] = p[2][a] - p[0][a]; }
-      double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      for(int a = 0; a < 3; ++a) normal[i][a] = len > 0. ? n[a] / len : 0.;
-    }
-    struct E { std::size_t a, b; double angle, length; };
-    std::vector<E> seam;
-    std::vector<double> angles;
-    for(auto e : CGAL::edges(m_tm))
-    {
-      const auto h = halfedge(e, m_tm);
-      if(is_border_edge(h, m_tm)) continue;
-      const std::size_t a = get(fim, face(h, m_tm)), b = get(fim, face(opposite(h, m_tm), m_tm));
-      const double d = normal[a][0] * normal[b][0] + normal[a][1] * normal[b][1] + normal[a][2] * normal[b][2];
-      const double angle = std::acos((std::max)(-1., (std::min)(1., d))) * 180. / CGAL_PI;
-      angles.push_back(angle);
-      if(part[a] == part[b]) continue;
-      const auto& p = get(m_vpm, source(h, m_tm));
-      const auto& q = get(m_vpm, target(h, m_tm));
-      const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x()), dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
-                   dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
-      seam.push_back({a, b, angle, std::sqrt(dx * dx + dy * dy + dz * dz)});
-    }
-    if(angles.empty()) return;
-    std::sort(angles.begin(), angles.end());
-    const double cut = angles[std::size_t(0.9 * double(angles.size() - 1))];
-    const std::size_t K = m_part_to_primitive.size();
-    std::vector<char> sheet(K, 0);
-    static const double thick = std::getenv("PD_THICK") ? std::atof(std::getenv("PD_THICK")) : 1e9;
-    Voxel_grid<std::uint8_t> outside(m_tsdf.values.resolution(), 0);
-    for(std::size_t v = 0; v < outside.size(); ++v) outside[v] = m_tsdf.values[v] > 0.;
-    const Voxel_grid<double> depth2 = internal::squared_distance_transform<CGAL::Sequential_tag>(outside);
-    for(std::size_t k = 0; k < K; ++k)
-    {
-      const std::size_t prim = m_part_to_primitive[k];
-      if(prim >= m_fitting.primitives.size()) continue;
-      std::array<double, 3> a = m_fitting.primitives[prim].scales();
-      std::sort(a.begin(), a.end());
-      double maxd2 = 0.;
-      for(std::size_t v : m_fitting.claimed_voxels[prim]) maxd2 = (std::max)(maxd2, depth2[v]);
-      sheet[k] = a[0] * ratio < a[1] && std::sqrt(maxd2) <= thick;
-    }
-    // union-find over sheet pairs whose seam is mostly smooth
-    std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > stats; // (sharp length, length)
-    for(const E& e : seam)
-    {
-      const std::size_t p = part[e.a], q = part[e.b];
-      if(!sheet[p] || !sheet[q]) continue;
-      auto& st = stats[std::make_pair((std::min)(p, q), (std::max)(p, q))];
-      st.second += e.length;
-      if(e.angle >= cut) st.first += e.length;
-    }
-    std::vector<std::size_t> leader(K);
-    for(std::size_t k = 0; k < K; ++k) leader[k] = k;
-    auto find = [&](std::size_t x) { while(leader[x] != x) x = leader[x] = leader[leader[x]]; return x; };
-    for(const auto& st : stats)
-      if(st.second.first < 0.5 * st.second.second)
-      {
-        const std::size_t a = find(st.first.first), b = find(st.first.second);
-        if(a != b) leader[(std::max)(a, b)] = (std::min)(a, b);
-      }
-    std::vector<std::size_t> old_to_new(K), new_id(K, std::size_t(-1));
-    std::size_t K2 = 0;
-    for(std::size_t k = 0; k < K; ++k)
-    {
-      const std::size_t r = find(k);
-      if(new_id[r] == std::size_t(-1)) new_id[r] = K2++;
-      old_to_new[k] = new_id[r];
-    }
-    std::vector<std::size_t> primitive(K2, no_primitive);
-    std::vector<std::size_t> volume(K2, 0);
-    for(std::size_t p = 0; p < K; ++p)
-    {
-      const std::size_t q = old_to_new[p], prim = m_part_to_primitive[p];
-      const std::size_t vol = prim < m_fitting.claimed_voxels.size() ? m_fitting.claimed_voxels[prim].size() + 1 : 0;
-      if(primitive[q] == no_primitive || vol > volume[q]) { primitive[q] = prim; volume[q] = vol; }
-    }
-    m_part_to_primitive = primitive;
-    for(face_descriptor f : faces(m_tm)) put(face_part_map, f, old_to_new[part[get(fim, f)]]);
-  }
-
   // the patches as a face property map, through the face index map the stages use
   template <typename NamedParameters>
   auto patch_map(const NamedParameters& np)
@@ -576,7 +482,7 @@ are chained with `parameters::combine()`)
   \cgalParamNBegin{coverage_target}
     \cgalParamDescription{the fraction of the valid volume claimed before a fitting stage ends}
     \cgalParamType{`double`, in \f$(0,1]\f$}
-    \cgalParamDefault{`0.95`}
+    \cgalParamDefault{`0.999`}
   \cgalParamNEnd
   \cgalParamNBegin{roi_radius}
     \cgalParamDescription{the radius of the region of interest of a seed, in voxels of the fitting resolution}
@@ -626,12 +532,24 @@ are chained with `parameters::combine()`)
   \cgalParamNBegin{maximum_patch_size}
     \cgalParamDescription{the largest patch area the over-segmentation builds on smooth regions, as a fraction of the mesh area}
     \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.003`}
+    \cgalParamDefault{`0.0005`}
   \cgalParamNEnd
   \cgalParamNBegin{vote_temperature}
     \cgalParamDescription{\f$\tau_v\f$: the temperature of the patch vote, in voxels of the finest grid}
     \cgalParamType{`double`, positive}
     \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{merge_thin_sheets}
+    \cgalParamDescription{if `true`, adjacent parts whose primitives are flat (smallest semi-axis
+                          below half the middle one) and thin (no claimed voxel deeper than two
+                          voxels of the finest grid inside the shape) are merged when less than half
+                          of the length of their common boundary runs over sharp edges (dihedral
+                          angle at or above the 90-th percentile): a thin curved shell, such as the
+                          wall of a cup or the skin of a wing, is tiled by several flat primitives
+                          and is one part. A merged part keeps the primitive that claimed the most
+                          voxels. This step is not in the paper.}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}

@@ -58,6 +58,7 @@ namespace Part_decomposition {
   X(minimum_patch_size_t, minimum_patch_size, minimum_patch_size)                    \
   X(maximum_patch_size_t, maximum_patch_size, maximum_patch_size)                    \
   X(vote_temperature_t, vote_temperature, vote_temperature)                          \
+  X(merge_thin_sheets_t, merge_thin_sheets, merge_thin_sheets)                       \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -97,8 +98,9 @@ constexpr double minimum_body_volume = 5.;
 constexpr double minimum_surface_volume = 3.;
 /// \f$\mu_{ext}\f$, the exterior intrusion penalty
 constexpr double exterior_penalty = 5.;
-/// the coverage of the valid volume that ends a fitting stage
-constexpr double coverage_target = 0.95;
+/// the coverage of the valid volume that ends a fitting stage (the paper's 0.95 leaves thin
+/// limbs without a primitive: see the user manual)
+constexpr double coverage_target = 0.999;
 /// the radius of the region of interest of a seed, in voxels of the fitting resolution
 constexpr double roi_radius = 8.;
 /// the most primitives a fit may accept
@@ -110,9 +112,11 @@ constexpr unsigned int smoothing_iterations = 1;
 /// the area below which a patch is merged into a neighbour, as a fraction of the mesh area
 constexpr double minimum_patch_size = 0.001;
 /// the area above which a patch is split, as a fraction of the mesh area
-constexpr double maximum_patch_size = 0.003;
+constexpr double maximum_patch_size = 0.0005;
 /// \f$\tau_v\f$, the temperature of the patch vote, in voxels of the finest grid
 constexpr double vote_temperature = 1.;
+/// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
+constexpr bool merge_thin_sheets = true;
 } // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
@@ -157,7 +161,7 @@ package's parameters are:
 | `minimum_body_volume()` | `double` | 5 | `fit_superquadrics()` |
 | `minimum_surface_volume()` | `double` | 3 | `fit_superquadrics()` |
 | `exterior_penalty()` | `double` | 5 | `fit_superquadrics()` |
-| `coverage_target()` | `double` | 0.95 | `fit_superquadrics()` |
+| `coverage_target()` | `double` | 0.999 | `fit_superquadrics()` |
 | `roi_radius()` | `double` | 8 | `fit_superquadrics()` |
 | `interior_weight_mode()` | `Interior_weight_mode` | `ONE_SHOT` | `fit_superquadrics()` |
 | `maximum_number_of_primitives()` | `std::size_t` | 256 | `fit_superquadrics()` |
@@ -167,8 +171,9 @@ package's parameters are:
 | `dihedral_quantile()` | `double` | 90 | `over_segment()` |
 | `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
-| `maximum_patch_size()` | `double` | 0.003 | `over_segment()` |
+| `maximum_patch_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
+| `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 
