@@ -544,7 +544,7 @@ are chained with `parameters::combine()`)
                           below half the middle one) and thin (no claimed voxel deeper than two
                           voxels of the finest grid inside the shape) are merged when less than half
                           of the length of their common boundary runs over sharp edges (dihedral
-                          angle at or above the 90-th percentile): a thin curved shell, such as the
+                          angle at or above the 90-th percentile and at least 30 degrees): a thin curved shell, such as the
                           wall of a cup or the skin of a wing, is tiled by several flat primitives
                           and is one part. A merged part keeps the primitive that claimed the most
                           voxels. This step is not in the paper.}

@@ -16,6 +16,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <array>
@@ -39,9 +40,12 @@ struct Sheet_merging_thresholds
   double maximum_depth = 2.;
   // two sheets merge unless this fraction of their seam lies on sharp edges
   double sharp_seam_fraction = 0.5;
-  // sharp: a dihedral angle at or above this percentile of the mesh's interior edges
+  // sharp: a dihedral angle at or above this percentile of the mesh's interior edges and at or
+  // above the minimum angle, in degrees (the sides of a 16-gon prism, 22.5 degrees apart, are smooth)
   double sharp_edge_percentile = 90.;
+  double minimum_sharp_angle = 30.;
 };
+
 
 /*
 Thin shells (the wall of a cup, the skin of a wing, a table top a few voxels thick) are fitted by
@@ -134,7 +138,7 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, VertexPointMap vpm, F
   if(seam.empty()) return K;
   const std::size_t rank = std::size_t(th.sharp_edge_percentile / 100. * double(angles.size() - 1));
   std::nth_element(angles.begin(), angles.begin() + rank, angles.end());
-  const double sharp = angles[rank];
+  const double sharp = (std::max)(angles[rank], th.minimum_sharp_angle * CGAL_PI / 180.);
 
   // (sharp length, total length) of the seam of each pair of sheets
   std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > seams;
