@@ -1,7 +1,11 @@
-// Curvature-aware over-segmentation, SQ-to-mesh assignment (Eq. 9) and the shipped example meshes.
+// Curvature-aware over-segmentation, SQ-to-mesh assignment (Eq. 9), the thin-sheet merge, and the
+// whole decomposition on the shipped example meshes against their true parts.
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/decompose.h>
+#include <CGAL/Part_decomposition/internal/sheet_merging.h>
+#include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -521,5 +525,126 @@ TEST_CASE("the shipped example meshes load and carry one label per face", "[data
     CHECK(int(distinct.size()) <= e.second.second);
     CHECK(*distinct.begin() == 0);
     CHECK(*distinct.rbegin() == int(distinct.size()) - 1);
+  }
+}
+
+namespace {
+
+// A thin box (or slab) split in two parts by the plane x = 0, or with its top face (z = max) as
+// one part and the rest as the other; each part gets a primitive of the given semi-axes and claims
+// the inside voxels of its side.
+struct Sheet_case
+{
+  Mesh mesh;
+  PD::Truncated_signed_distance_field tsdf;
+  PD::Superquadric_fitting_result<K> fitting;
+  std::vector<std::size_t> part;
+  std::vector<std::size_t> part_to_primitive{0, 1};
+};
+
+Sheet_case make_sheet_case(double thickness, bool split_by_top_face, const std::array<double, 3>& scales)
+{
+  Sheet_case c;
+  c.mesh = test_shapes::make_box(Point(-1, -1, -thickness / 2), Point(1, 1, thickness / 2), 16);
+  c.tsdf = PD::compute_tsdf(c.mesh);
+  const PD::Superquadric<K>::Rotation identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for(int k = 0; k < 2; ++k)
+    c.fitting.primitives.push_back(PD::Superquadric<K>(scales, 1., 1., identity, Point(k ? 0.25 : -0.25, 0, 0)));
+  c.fitting.claimed_voxels.resize(2);
+  for(std::size_t v = 0; v < c.tsdf.values.size(); ++v)
+    if(c.tsdf.values[v] < 0.)
+      c.fitting.claimed_voxels[c.tsdf.values.center(v)[0] < 0. ? 0 : 1].push_back(v);
+  for(face_descriptor f : faces(c.mesh))
+  {
+    double x = 0., z = 0.;
+    for(auto v : vertices_around_face(halfedge(f, c.mesh), c.mesh))
+    {
+      x += c.mesh.point(v).x() / 3.;
+      z += c.mesh.point(v).z() / 3.;
+    }
+    c.part.push_back(split_by_top_face ? (z > thickness / 2 - 1e-9 ? 0 : 1) : (x < 0. ? 0 : 1));
+  }
+  return c;
+}
+
+std::size_t merge(Sheet_case& c)
+{
+  return PD::internal::merge_thin_sheet_parts(c.mesh, get(CGAL::vertex_point, c.mesh),
+                                              get(CGAL::face_index, c.mesh), c.tsdf, c.fitting,
+                                              c.part, c.part_to_primitive);
+}
+
+} // namespace
+
+TEST_CASE("flat thin parts that meet along smooth edges become one part", "[sheet_merge]")
+{
+  // 2 x 2 x 0.06: about two voxels thick in the 64^3 grid, the primitives are flat.
+  Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.03}});
+  const std::size_t n0 = c.fitting.claimed_voxels[0].size(), n1 = c.fitting.claimed_voxels[1].size();
+  REQUIRE(n0 > 0);
+  REQUIRE(n1 > 0);
+  CHECK(merge(c) == 1u);
+  CHECK(std::set<std::size_t>(c.part.begin(), c.part.end()) == std::set<std::size_t>{0});
+  REQUIRE(c.part_to_primitive.size() == 1u);
+  CHECK(c.part_to_primitive[0] == (n1 > n0 ? 1u : 0u)); // the primitive of most claimed voxels
+}
+
+TEST_CASE("the sheet merge keeps creases, round primitives and thick parts apart", "[sheet_merge]")
+{
+  SECTION("the seam runs over the rim of the slab, a crease")
+  {
+    Sheet_case c = make_sheet_case(0.06, true, {{0.5, 0.5, 0.03}});
+    const std::vector<std::size_t> before = c.part;
+    CHECK(merge(c) == 2u);
+    CHECK(c.part == before);
+  }
+  SECTION("the primitives are not flat")
+  {
+    Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.4}});
+    CHECK(merge(c) == 2u);
+  }
+  SECTION("the parts are thick: a 2 x 2 x 0.5 box, 8 voxels deep")
+  {
+    Sheet_case c = make_sheet_case(0.5, false, {{0.5, 0.5, 0.1}});
+    CHECK(merge(c) == 2u);
+    CHECK(c.part_to_primitive == std::vector<std::size_t>({0, 1}));
+  }
+}
+
+TEST_CASE("the whole decomposition recovers the true parts of the shipped shapes", "[decompose][data]")
+{
+  // Unions of primitives (examples/Part_decomposition/generate_example_shapes): the .seg files
+  // hold the primitive each face came from. A table (top and 4 legs), a four-legged animal
+  // (body, head, legs, tail) and a dumbbell (two balls and a bar).
+  const std::map<std::string, double> minimum_miou = {{"table", 0.85}, {"animal", 0.8}, {"dumbbell", 0.9}};
+  for(const auto& e : minimum_miou)
+  {
+    INFO(e.first);
+    const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + e.first;
+    Mesh m;
+    PD::IO::read_triangle_mesh(base + ".off", m);
+    std::ifstream in(base + ".seg");
+    std::vector<std::size_t> truth;
+    std::size_t l;
+    while(in >> l) truth.push_back(l);
+    REQUIRE(truth.size() == num_faces(m));
+
+    std::vector<std::size_t> part(num_faces(m), std::size_t(-1));
+    std::vector<PD::Superquadric<K> > primitives;
+    const std::size_t K_parts = PD::decompose(
+        m, CGAL::make_property_map(part),
+        PD::parameters::primitive_output_iterator(std::back_inserter(primitives)));
+    REQUIRE(primitives.size() == K_parts);
+    for(std::size_t p : part) REQUIRE(p < K_parts);
+
+    const PD::Segmentation_scores s =
+        PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part));
+    const std::size_t true_parts = std::set<std::size_t>(truth.begin(), truth.end()).size();
+    INFO(e.first << ": parts " << K_parts << " (true " << true_parts << "), mIoU " << s.mean_iou << ", RI "
+                  << s.rand_index << ", VoI " << s.variation_of_information);
+    CHECK(s.mean_iou >= e.second);
+    CHECK(K_parts >= true_parts - 1);
+    // the region of interest of a seed is shorter than a table leg: legs may come in pieces
+    CHECK(K_parts <= 3 * true_parts);
   }
 }
