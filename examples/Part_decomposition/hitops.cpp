@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -100,7 +101,7 @@ const char* const usage_text =
   "  --threads N              number of threads (default: all cores)\n"
   "batch processing:\n"
   "  --batch LIST             a file with one mesh path per line (# starts a comment)\n"
-  "  --out DIR                writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
+  "  --out DIR                (created if needed) writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
   "                           DIR/summary[.I-of-N].tsv; meshes whose outputs exist are skipped\n"
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
   "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
@@ -452,6 +453,11 @@ int batch(const Options& o)
   // names must be unique in the output folder: repeated stems get their rank appended
   std::map<std::string, std::size_t> stem_count;
   for(const std::string& p : paths) ++stem_count[stem(p)];
+
+  // shards on many machines may all create the folder: an existing one is fine
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if(ec) throw Usage_error("cannot create the output folder '" + o.out_dir + "': " + ec.message());
 
   const std::string suffix = o.shards > 1 ? "." + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) : "";
   Atomic_outputs summary_file;

@@ -632,7 +632,7 @@ Flow zone and stopping them at the Freeze zone.
 
 For each stage \f$r\f$ (16, 32, 64), with \f$r_{fit} = \min(r, 32)\f$ (the resolution before the
 finest), the valid set \f$\Omega_{valid} = \{\mathcal{R}_{map} \le r\} \setminus \Omega_{freeze}\f$
-is covered until 95% of it is claimed: a body seed is placed at the maximum of the Euclidean
+is covered until a fraction `coverage_target` (0.999 by default) of it is claimed: a body seed is placed at the maximum of the Euclidean
 distance transform of the unclaimed valid voxels if it reaches `body_seed_threshold` voxels of
 \f$r_{fit}\f$, otherwise a surface seed at the centroid of the largest remaining 6-connected
 component; a superquadric is initialized there (a ball of radius
