@@ -1,0 +1,269 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
+
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <limits>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+/*
+A reader of OFF files (the Geomview variants [ST][C][N][4][n]OFF, ASCII, and binary without
+colours or texture coordinates) that keeps only the vertex coordinates and the vertex indices
+of the faces. It exists because CGAL 5.5's File_scanner_OFF turns hostile files into undefined
+behaviour: it casts any parsed double to an index or a face degree, looks colour indices up in
+a fixed table and reads texture entries past the end of a line, all unchecked.
+
+Nothing is allocated from a count of the header: vertices and faces are appended as they are
+read, so a lying header costs no memory. Tokens are parsed independently of the locale.
+*/
+class Off_soup_reader
+{
+public:
+  // A vertex index that is an integer but no vertex (negative, or too large): the caller reports
+  // it as an out-of-range index.
+  static constexpr std::size_t invalid_index = std::size_t(-1);
+
+  explicit Off_soup_reader(std::istream& in) : m_in(in) {}
+
+  // Appends the points (as {x, y, z}) and the faces of the file to `points` and `polygons`.
+  // Returns false if the file is not OFF, is truncated or holds a token that is not a number.
+  template <typename PointRange, typename PolygonRange>
+  bool read(PointRange& points, PolygonRange& polygons)
+  {
+    if(!next_line()) return false;
+    std::size_t t = 0;
+    if(!m_tokens.empty() && !is_number(m_tokens[0]))
+    {
+      if(!read_keyword(m_tokens[0])) return false;
+      t = 1;
+      if(t < m_tokens.size() && m_tokens[t] == "BINARY")
+      {
+        // the binary part starts right after the header line
+        if(t + 1 != m_tokens.size()) return false;
+        return read_binary(points, polygons);
+      }
+    }
+    if(m_dimension_follows && !take_count(t, m_dimension)) return false;
+    if(m_dimension != 3) return false;
+    std::size_t nv = 0, nf = 0;
+    if(!take_count(t, nv) || !take_count(t, nf)) return false;
+    // the edge count, when present, is ignored
+
+    const std::size_t coordinates = m_homogeneous ? 4 : 3;
+    for(std::size_t i = 0; i < nv; ++i)
+    {
+      if(!next_line() || m_tokens.size() < coordinates) return false;
+      double c[4] = {0., 0., 0., 1.};
+      for(std::size_t k = 0; k < coordinates; ++k)
+        if(!to_double(m_tokens[k], c[k])) return false;
+      push_point(points, c);
+    }
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      if(!next_line()) return false;
+      double degree = 0.;
+      // trailing tokens are the face colour
+      if(!to_double(m_tokens[0], degree) || !is_count(degree) || degree >= double(m_tokens.size())) return false;
+      typename PolygonRange::value_type polygon;
+      for(std::size_t k = 1; k <= std::size_t(degree); ++k)
+      {
+        double id = 0.;
+        if(!to_double(m_tokens[k], id) || std::floor(id) != id) return false;
+        polygon.push_back(index_of(id, nv));
+      }
+      polygons.push_back(std::move(polygon));
+    }
+    return true;
+  }
+
+private:
+  std::istream& m_in;
+  std::string m_line;
+  std::vector<std::string> m_tokens;
+  bool m_homogeneous = false, m_dimension_follows = false, m_normals = false, m_colors = false, m_texture = false;
+  std::size_t m_dimension = 3;
+
+  static bool is_space(char c)
+  {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+  }
+
+  // The tokens of the next line that has any, comments (from '#') removed.
+  bool next_line()
+  {
+    while(std::getline(m_in, m_line))
+    {
+      const std::size_t hash = m_line.find('#');
+      if(hash != std::string::npos) m_line.resize(hash);
+      m_tokens.clear();
+      for(std::size_t i = 0; i < m_line.size();)
+      {
+        while(i < m_line.size() && is_space(m_line[i])) ++i;
+        const std::size_t start = i;
+        while(i < m_line.size() && !is_space(m_line[i])) ++i;
+        if(i > start) m_tokens.emplace_back(m_line, start, i - start);
+      }
+      if(!m_tokens.empty()) return true;
+    }
+    return false;
+  }
+
+  // [ST][C][N][4][n]OFF
+  bool read_keyword(const std::string& k)
+  {
+    const std::size_t n = k.size();
+    if(n < 3 || k.compare(n - 3, 3, "OFF") != 0) return false;
+    std::size_t i = 0;
+    auto take = [&](const char* p) {
+      const std::size_t l = std::strlen(p);
+      if(i + l > n - 3 || k.compare(i, l, p) != 0) return false;
+      i += l;
+      return true;
+    };
+    m_texture = take("ST");
+    m_colors = take("C");
+    m_normals = take("N"); // skipped, like any trailing token of an ASCII line
+    m_homogeneous = take("4");
+    m_dimension_follows = take("n");
+    return i == n - 3;
+  }
+
+  static bool is_number(const std::string& s)
+  {
+    double d;
+    return to_double(s, d);
+  }
+
+  // A whole token as a double, whatever the locale; overflow gives an infinity (a non-finite
+  // coordinate error downstream) and underflow a zero.
+  static bool to_double(const std::string& s, double& d)
+  {
+    const char* first = s.data();
+    const char* last = first + s.size();
+    if(first != last && *first == '+') ++first;
+    const std::from_chars_result r = std::from_chars(first, last, d);
+    if(r.ptr != last || first == last) return false;
+    if(r.ec == std::errc::result_out_of_range)
+    {
+      const std::size_t e = s.find_first_of("eE");
+      const bool negative = s[0] == '-';
+      if(e != std::string::npos && e + 1 < s.size() && s[e + 1] == '-') d = negative ? -0. : 0.;
+      else d = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    }
+    else if(r.ec != std::errc())
+      return false;
+    return true;
+  }
+
+  // An integer that a std::size_t holds exactly.
+  static bool is_count(double d) { return d >= 0. && d < 9007199254740992. && std::floor(d) == d; }
+
+  static std::size_t index_of(double id, std::size_t nv)
+  {
+    return (is_count(id) && id < double(nv)) ? std::size_t(id) : invalid_index;
+  }
+
+  bool take_count(std::size_t& t, std::size_t& count)
+  {
+    if(t == m_tokens.size())
+    {
+      if(!next_line()) return false;
+      t = 0;
+    }
+    double d = 0.;
+    if(!to_double(m_tokens[t], d) || !is_count(d)) return false;
+    count = std::size_t(d);
+    ++t;
+    return true;
+  }
+
+  template <typename PointRange>
+  static void push_point(PointRange& points, const double c[4])
+  {
+    typedef typename PointRange::value_type Point;
+    points.push_back(Point(c[0] / c[3], c[1] / c[3], c[2] / c[3]));
+  }
+
+  // Binary OFF: big-endian 32-bit integers and floats after the header line.
+  bool read_int(std::int32_t& v)
+  {
+    unsigned char b[4];
+    if(!m_in.read(reinterpret_cast<char*>(b), 4)) return false;
+    const std::uint32_t u = (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
+    std::memcpy(&v, &u, 4);
+    return true;
+  }
+
+  bool read_float(double& v)
+  {
+    std::int32_t i;
+    if(!read_int(i)) return false;
+    float f;
+    std::memcpy(&f, &i, 4);
+    v = f;
+    return true;
+  }
+
+  template <typename PointRange, typename PolygonRange>
+  bool read_binary(PointRange& points, PolygonRange& polygons)
+  {
+    // colours and texture coordinates have no agreed binary layout
+    if(m_colors || m_texture || m_dimension_follows) return false;
+    std::int32_t nv = 0, nf = 0, ne = 0;
+    if(!read_int(nv) || !read_int(nf) || !read_int(ne) || nv < 0 || nf < 0) return false;
+    const int coordinates = m_homogeneous ? 4 : 3;
+    for(std::int32_t i = 0; i < nv; ++i)
+    {
+      double c[4] = {0., 0., 0., 1.};
+      for(int k = 0; k < coordinates; ++k)
+        if(!read_float(c[k])) return false;
+      double ignored;
+      for(int k = 0; m_normals && k < coordinates; ++k)
+        if(!read_float(ignored)) return false;
+      push_point(points, c);
+    }
+    for(std::int32_t i = 0; i < nf; ++i)
+    {
+      std::int32_t degree = 0, colors = 0;
+      if(!read_int(degree) || degree < 0) return false;
+      typename PolygonRange::value_type polygon;
+      for(std::int32_t k = 0; k < degree; ++k)
+      {
+        std::int32_t id = 0;
+        if(!read_int(id)) return false;
+        polygon.push_back(id >= 0 && id < nv ? std::size_t(id) : invalid_index);
+      }
+      polygons.push_back(std::move(polygon));
+      if(!read_int(colors) || colors < 0 || colors > 4) return false;
+      for(std::int32_t k = 0; k < colors; ++k)
+      {
+        double ignored;
+        if(!read_float(ignored)) return false;
+      }
+    }
+    return true;
+  }
+};
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
