@@ -18,7 +18,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -454,6 +456,51 @@ TEST_CASE("coordinates around 1e8, 1e-8 and far from the origin give the same pa
   for(const Superquadric& q : far.primitives) CHECK(q.center().x() == Approx(1e6).margin(3.));
 }
 
+TEST_CASE("the OFF reader reads the Geomview variants, ASCII and binary, alike", "[robustness][library][io]")
+{
+  auto big_endian = [](std::uint32_t u) {
+    std::string b(4, '\0');
+    for(int k = 0; k < 4; ++k) b[k] = char((u >> (24 - 8 * k)) & 0xff);
+    return b;
+  };
+  auto i32 = [&](std::int32_t i) { return big_endian(std::uint32_t(i)); };
+  auto f32 = [&](float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return big_endian(u);
+  };
+  // a tetrahedron, with normals after the coordinates and one face colour in the binary file
+  const double p[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const int f[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::string ascii = "NOFF\n4 4 0\n", binary = "NOFF BINARY\n" + i32(4) + i32(4) + i32(0);
+  for(const auto& v : p)
+  {
+    ascii += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + " 0 0 1\n";
+    binary += f32(float(v[0])) + f32(float(v[1])) + f32(float(v[2])) + f32(0.f) + f32(0.f) + f32(1.f);
+  }
+  for(const auto& t : f)
+  {
+    ascii += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
+    binary += i32(3) + i32(t[0]) + i32(t[1]) + i32(t[2]) + i32(1) + f32(0.5f);
+  }
+  Temp_dir dir;
+  for(const std::string& content : {ascii, binary})
+  {
+    Mesh m;
+    const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(dir.file("tet.off", content), m);
+    CHECK(info.number_of_input_faces == 4u);
+    CHECK(num_vertices(m) == 4u);
+    CHECK(CGAL::is_closed(m));
+    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(m));
+  }
+  // truncated binary files and negative counts are refused
+  Mesh m;
+  CHECK(error_of([&] { PD::IO::read_triangle_mesh(dir.file("cut.off", binary.substr(0, binary.size() - 6)), m); }) ==
+        PD::Input_error::UNREADABLE_FILE);
+  CHECK(error_of([&] { PD::IO::read_triangle_mesh(dir.file("neg.off", "OFF BINARY\n" + i32(-3) + i32(1) + i32(0)), m); }) ==
+        PD::Input_error::UNREADABLE_FILE);
+}
+
 TEST_CASE("meshes that cannot be decomposed give the documented error", "[robustness][library]")
 {
   using E = PD::Input_error;
@@ -724,6 +771,15 @@ TEST_CASE("hitops refuses broken files with one line and exit status 1", "[robus
                              "property float z\nelement face 1000000000\nproperty list uchar int vertex_indices\n"
                              "end_header\n" + tri + "3 0 1 2\n", "cannot parse");
   check_refused("mesh.xyz", tri, "cannot parse");
+  // found by fuzz_decompose: CGAL's parsers had undefined behaviour on these (a property before
+  // any element indexed an empty vector; an index of 2^64 or more was cast from a double, and
+  // read as vertex 0 in practice)
+  check_refused("property_first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\n"
+                                      "property float y\nproperty float z\nend_header\n" + tri, "cannot parse");
+  check_refused("huge_index.off", "OFF\n3 1 0\n" + tri + "3 0 1 333333333333333333336\n", "out-of-range");
+  check_refused("huge_degree.off", "OFF\n3 1 0\n" + tri + "1e20 0 1 2\n", "cannot parse");
+  check_refused("fractional_index.off", "OFF\n3 1 0\n" + tri + "3 0 1 1.5\n", "cannot parse");
+  check_refused("zero_weight.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n3 0 1 2\n", "non-finite");
   check_refused("huge.off", box_off(1e31), "range");
   check_refused("tiny.off", box_off(1e-31), "range");
 
@@ -752,6 +808,15 @@ TEST_CASE("hitops decomposes ugly but meaningful files, one label per file face"
   {
     CHECK(check_decomposed("triangle.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1) ==
           std::vector<std::size_t>{0});
+  }
+  SECTION("OFF variants whose colour and texture entries are ignored")
+  {
+    // a colour index far outside any colour map, a texture line too short, normals, weights
+    const std::string faces = "3 0 1 2 1e10\n3 0 2 3\n3 0 3 1\n3 1 3 2\n";
+    check_decomposed("colors.off", "COFF\n4 4 0\n0 0 0 1e300\n1 0 0 -7\n0 1 0\n0 0 1 1 2 3 4 5\n" + faces, 4);
+    check_decomposed("texture.off", "STOFF\n4 4 0\n0 0 0\n1 0 0 1\n0 1 0\n0 0 1\n" + faces, 4);
+    check_decomposed("normals.off", "NOFF 4 4 0\n0 0 0 0 0 -1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n" + faces, 4);
+    check_decomposed("weights.off", "4OFF\n4 4 0\n0 0 0 2\n2 0 0 2\n0 2 0 2\n0 0 2 2\n" + faces, 4);
   }
   SECTION("quads and n-gons: an octagonal prism")
   {
