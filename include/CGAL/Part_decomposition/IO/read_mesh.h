@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
+#include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -30,7 +31,6 @@
 #include <map>
 #include <memory>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,27 +82,6 @@ struct Bounded_allocator
   template <typename U>
   bool operator!=(const Bounded_allocator<U>&) const { return false; }
 };
-
-// Whether CGAL's PLY reader can parse the header of `filename` without undefined behaviour: it
-// adds a `property` line to the last element read, and a property before any `element` line
-// (a truncated or mutated header) indexes an empty vector. Lines are split as that reader does.
-inline bool ply_header_has_element_before_properties(const std::string& filename)
-{
-  std::ifstream in(filename, std::ios::binary);
-  std::string line;
-  bool element = false;
-  for(std::size_t line_number = 1; std::getline(in, line); ++line_number)
-  {
-    if(line_number <= 2) continue; // signature and format: checked by the reader
-    std::istringstream iss(line);
-    std::string keyword;
-    if(!(iss >> keyword)) continue;
-    if(keyword == "end_header") break;
-    if(keyword == "element") element = true;
-    else if(keyword == "property" && !element) return false;
-  }
-  return true;
-}
 
 } // namespace internal
 /// \endcond
@@ -194,17 +173,16 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
     std::vector<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> >,
                 internal::Bounded_allocator<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> > > >
       bounded_polygons;
-    // CGAL's OFF and PLY parsers have undefined behaviour on some broken files: OFF is read by
-    // our own parser, a PLY header is checked first.
+    // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
+    // broken files: these two formats are read by our own parsers.
     const std::string extension = CGAL::IO::internal::get_file_extension(filename);
+    std::ifstream in(filename, std::ios::binary);
     if(extension == "off")
-    {
-      std::ifstream in(filename, std::ios::binary);
       ok = internal::Off_soup_reader(in).read(bounded_points, bounded_polygons);
-    }
+    else if(extension == "ply")
+      ok = internal::Ply_soup_reader(in).read(bounded_points, bounded_polygons);
     else
-      ok = (extension != "ply" || internal::ply_header_has_element_before_properties(filename)) &&
-           CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
+      ok = CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
     if(ok)
     {
       file_points.assign(bounded_points.begin(), bounded_points.end());

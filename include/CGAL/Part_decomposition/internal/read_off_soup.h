@@ -23,6 +23,41 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
+// A whole token of a mesh file as a double, whatever the locale; overflow gives an infinity (a
+// non-finite coordinate error downstream) and underflow a zero.
+inline bool to_double(const std::string& s, double& d)
+{
+  const char* first = s.data();
+  const char* last = first + s.size();
+  if(first != last && *first == '+') ++first;
+  if(first == last) return false;
+  const std::from_chars_result r = std::from_chars(first, last, d);
+  if(r.ptr != last) return false;
+  if(r.ec == std::errc::result_out_of_range)
+  {
+    const std::size_t e = s.find_first_of("eE");
+    const bool negative = s[0] == '-';
+    if(e != std::string::npos && e + 1 < s.size() && s[e + 1] == '-') d = negative ? -0. : 0.;
+    else d = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  }
+  else if(r.ec != std::errc())
+    return false;
+  return true;
+}
+
+// Whether `d` is an integer that a std::size_t holds exactly.
+inline bool is_count(double d) { return d >= 0. && d < 9007199254740992. && std::floor(d) == d; }
+
+// A vertex index that is an integer but no vertex (negative, or too large): the caller of the
+// readers reports it as an out-of-range index.
+constexpr std::size_t invalid_vertex_index = std::size_t(-1);
+
+// The index `id` read from a file with `nv` vertices, or invalid_vertex_index.
+inline std::size_t vertex_index(double id, std::size_t nv)
+{
+  return (is_count(id) && id < double(nv)) ? std::size_t(id) : invalid_vertex_index;
+}
+
 /*
 A reader of OFF files (the Geomview variants [ST][C][N][4][n]OFF, ASCII, and binary without
 colours or texture coordinates) that keeps only the vertex coordinates and the vertex indices
@@ -36,10 +71,6 @@ read, so a lying header costs no memory. Tokens are parsed independently of the 
 class Off_soup_reader
 {
 public:
-  // A vertex index that is an integer but no vertex (negative, or too large): the caller reports
-  // it as an out-of-range index.
-  static constexpr std::size_t invalid_index = std::size_t(-1);
-
   explicit Off_soup_reader(std::istream& in) : m_in(in) {}
 
   // Appends the points (as {x, y, z}) and the faces of the file to `points` and `polygons`.
@@ -86,7 +117,7 @@ public:
       {
         double id = 0.;
         if(!to_double(m_tokens[k], id) || std::floor(id) != id) return false;
-        polygon.push_back(index_of(id, nv));
+        polygon.push_back(vertex_index(id, nv));
       }
       polygons.push_back(std::move(polygon));
     }
@@ -149,35 +180,6 @@ private:
   {
     double d;
     return to_double(s, d);
-  }
-
-  // A whole token as a double, whatever the locale; overflow gives an infinity (a non-finite
-  // coordinate error downstream) and underflow a zero.
-  static bool to_double(const std::string& s, double& d)
-  {
-    const char* first = s.data();
-    const char* last = first + s.size();
-    if(first != last && *first == '+') ++first;
-    const std::from_chars_result r = std::from_chars(first, last, d);
-    if(r.ptr != last || first == last) return false;
-    if(r.ec == std::errc::result_out_of_range)
-    {
-      const std::size_t e = s.find_first_of("eE");
-      const bool negative = s[0] == '-';
-      if(e != std::string::npos && e + 1 < s.size() && s[e + 1] == '-') d = negative ? -0. : 0.;
-      else d = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
-    }
-    else if(r.ec != std::errc())
-      return false;
-    return true;
-  }
-
-  // An integer that a std::size_t holds exactly.
-  static bool is_count(double d) { return d >= 0. && d < 9007199254740992. && std::floor(d) == d; }
-
-  static std::size_t index_of(double id, std::size_t nv)
-  {
-    return (is_count(id) && id < double(nv)) ? std::size_t(id) : invalid_index;
   }
 
   bool take_count(std::size_t& t, std::size_t& count)
@@ -248,7 +250,7 @@ private:
       {
         std::int32_t id = 0;
         if(!read_int(id)) return false;
-        polygon.push_back(id >= 0 && id < nv ? std::size_t(id) : invalid_index);
+        polygon.push_back(vertex_index(double(id), std::size_t(nv)));
       }
       polygons.push_back(std::move(polygon));
       if(!read_int(colors) || colors < 0 || colors > 4) return false;
