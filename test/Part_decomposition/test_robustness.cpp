@@ -776,6 +776,13 @@ TEST_CASE("hitops refuses broken files with one line and exit status 1", "[robus
   // read as vertex 0 in practice)
   check_refused("property_first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\n"
                                       "property float y\nproperty float z\nend_header\n" + tri, "cannot parse");
+  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list uint int vertex_indices\n";
+  // a list length of 2^32 - 1 in a few bytes, a negative element count (2^64 - 5 items of an
+  // element without properties: an endless loop in CGAL's reader), a non-integer list length
+  check_refused("lying_length.ply", ply_header + "end_header\n" + tri + "4294967295 0 1 2\n", "cannot parse");
+  check_refused("negative_count.ply", ply_header + "element junk -5\nend_header\n" + tri + "3 0 1 2\n", "cannot parse");
+  check_refused("fractional_length.ply", ply_header + "end_header\n" + tri + "2.5 0 1 2\n", "cannot parse");
   check_refused("huge_index.off", "OFF\n3 1 0\n" + tri + "3 0 1 333333333333333333336\n", "out-of-range");
   check_refused("huge_degree.off", "OFF\n3 1 0\n" + tri + "1e20 0 1 2\n", "cannot parse");
   check_refused("fractional_index.off", "OFF\n3 1 0\n" + tri + "3 0 1 1.5\n", "cannot parse");
@@ -817,6 +824,29 @@ TEST_CASE("hitops decomposes ugly but meaningful files, one label per file face"
     check_decomposed("texture.off", "STOFF\n4 4 0\n0 0 0\n1 0 0 1\n0 1 0\n0 0 1\n" + faces, 4);
     check_decomposed("normals.off", "NOFF 4 4 0\n0 0 0 0 0 -1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n" + faces, 4);
     check_decomposed("weights.off", "4OFF\n4 4 0\n0 0 0 2\n2 0 0 2\n0 2 0 2\n0 0 2 2\n" + faces, 4);
+  }
+  SECTION("PLY: binary big endian, elements without properties, faces before vertices")
+  {
+    auto be32 = [](std::uint32_t u) {
+      std::string b(4, '\0');
+      for(int k = 0; k < 4; ++k) b[k] = char((u >> (24 - 8 * k)) & 0xff);
+      return b;
+    };
+    auto f32 = [&](float f) {
+      std::uint32_t u;
+      std::memcpy(&u, &f, 4);
+      return be32(u);
+    };
+    std::string ply = "ply\nformat binary_big_endian 1.0\nelement nothing 1000000000000\nelement face 4\n"
+                      "property list uchar uint vertex_indices\nelement vertex 4\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n";
+    for(const auto& t : {std::array<std::uint32_t, 3>{{0, 2, 1}}, std::array<std::uint32_t, 3>{{0, 1, 3}},
+                         std::array<std::uint32_t, 3>{{0, 3, 2}}, std::array<std::uint32_t, 3>{{1, 2, 3}}})
+      ply += std::string(1, '\3') + be32(t[0]) + be32(t[1]) + be32(t[2]);
+    for(const auto& v : {std::array<float, 3>{{0, 0, 0}}, std::array<float, 3>{{1, 0, 0}}, std::array<float, 3>{{0, 1, 0}},
+                         std::array<float, 3>{{0, 0, 1}}})
+      ply += f32(v[0]) + f32(v[1]) + f32(v[2]);
+    check_decomposed("tet.ply", ply, 4);
   }
   SECTION("quads and n-gons: an octagonal prism")
   {
