@@ -3,14 +3,18 @@
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include "test_shapes.h"
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace PD = CGAL::Part_decomposition;
 using test_shapes::Mesh;
@@ -159,4 +163,37 @@ TEST_CASE("unreadable or broken files give a clear error", "[io]")
   CHECK((range == PD::Input_error::INVALID_FACE || range == PD::Input_error::UNREADABLE_FILE));
   CHECK(read_error(write_temp("degenerate.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n")) ==
         PD::Input_error::NO_FACES);
+}
+
+TEST_CASE("the oriented-manifold check lets only clean soups skip the orienter", "[io]")
+{
+  using PD::internal::is_oriented_manifold_soup;
+  typedef std::vector<std::array<std::size_t, 3> > Triangles;
+  const Mesh box = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 3);
+  Triangles tris;
+  for(auto f : faces(box))
+  {
+    std::array<std::size_t, 3> t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, box), box)) t[k++] = std::size_t(v);
+    tris.push_back(t);
+  }
+  const std::size_t n = num_vertices(box);
+  CHECK(is_oriented_manifold_soup(tris, n));
+
+  Triangles open(tris.begin() + 1, tris.end()); // a hole: still an oriented manifold
+  CHECK(is_oriented_manifold_soup(open, n));
+
+  Triangles flipped = tris; // one triangle against its neighbours
+  std::swap(flipped[5][0], flipped[5][1]);
+  CHECK(!is_oriented_manifold_soup(flipped, n));
+
+  // three triangles on the edge (0, 1)
+  CHECK(!is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}}, 5));
+  // two fans that share only their apex 0 (a bowtie): each edge is fine, the vertex is not
+  CHECK(is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}}, 7));
+  CHECK(!is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 4, 5}}, {{0, 5, 6}}}, 7));
+  // a closed fan (cycle) around vertex 0 and a cycle with a dangling fan at the same vertex
+  CHECK(is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}}, 4));
+  CHECK(!is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}, {{0, 4, 5}}}, 6));
 }

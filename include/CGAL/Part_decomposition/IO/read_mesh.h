@@ -11,6 +11,7 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
+#include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -136,7 +137,8 @@ three distinct vertices are left out of `tm` and reported in the returned inform
 \par Complexity
 \f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices), plus the ear clipping of
 the polygons, quadratic in the number of vertices of each polygon, and the orientation of the soup
-by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`.
+by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the triangles
+already form a consistently oriented manifold (checked in \f$O(n \log n)\f$).
 
 \throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
 (`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
@@ -273,7 +275,8 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
   std::vector<Point> soup_points;
   soup_points.reserve(points.size());
   for(const std::array<double, 3>& c : points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, triangles);
+  if(!internal::is_oriented_manifold_soup(triangles, soup_points.size()))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, triangles);
   info.number_of_duplicated_vertices = soup_points.size() - n_points_before;
 
   // Build the mesh face by face so that a face refused by add_face cannot shift the order;
