@@ -33,6 +33,19 @@ typedef Mesh::Face_index face_descriptor;
 
 namespace {
 
+// A shipped example mesh (examples/Part_decomposition/data/NAME.off) and its true part per face.
+std::vector<std::size_t> read_shipped_shape(const std::string& name, Mesh& m)
+{
+  const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + name;
+  PD::IO::read_triangle_mesh(base + ".off", m);
+  std::ifstream in(base + ".seg");
+  std::vector<std::size_t> truth;
+  std::size_t l;
+  while(in >> l) truth.push_back(l);
+  REQUIRE(truth.size() == num_faces(m));
+  return truth;
+}
+
 std::vector<std::size_t> patches_of(Mesh& m, std::size_t& count, double quantile = 90.,
                                     double min_size = 0.001, double max_size = 0.003, int smoothing = 1)
 {
@@ -468,13 +481,7 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   // The dumbbell is the union of two balls (radius 0.3 at x = -0.7 and 0.7) and a bar (capsule of
   // radius 0.1 between them); its .seg holds the true part of each face (0, 1, 2 from left).
   Mesh m;
-  const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/dumbbell";
-  PD::IO::read_triangle_mesh(base + ".off", m);
-  std::ifstream in(base + ".seg");
-  std::vector<std::size_t> truth;
-  std::size_t l;
-  while(in >> l) truth.push_back(l);
-  REQUIRE(truth.size() == num_faces(m));
+  const std::vector<std::size_t> truth = read_shipped_shape("dumbbell", m);
 
   // Claimed voxels: the inside of each primitive (the balls win over the bar), at r = 64.
   const PD::Normalization n = PD::compute_normalization(m);
@@ -620,14 +627,8 @@ TEST_CASE("the whole decomposition recovers the true parts of the shipped shapes
   for(const auto& e : minimum_miou)
   {
     INFO(e.first);
-    const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + e.first;
     Mesh m;
-    PD::IO::read_triangle_mesh(base + ".off", m);
-    std::ifstream in(base + ".seg");
-    std::vector<std::size_t> truth;
-    std::size_t l;
-    while(in >> l) truth.push_back(l);
-    REQUIRE(truth.size() == num_faces(m));
+    const std::vector<std::size_t> truth = read_shipped_shape(e.first, m);
 
     std::vector<std::size_t> part(num_faces(m), std::size_t(-1));
     std::vector<PD::Superquadric<K> > primitives;
