@@ -248,8 +248,11 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     const Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(r_fit);
     const Voxel_grid<double>& edt_flow = zones.flow_zone_distance.at(r_fit);
     const double scale3 = std::pow(double(R) / double(r_fit), 3);
-    const std::size_t vmin_body = std::size_t(std::ceil(body_volume * scale3 - 1e-9));
-    const std::size_t vmin_surface = std::size_t(std::ceil(surface_volume * scale3 - 1e-9));
+    // A volume above the grid's is never reached: clamped to N + 1 voxels, the same comparisons
+    // without a cast out of the range of std::size_t (undefined) for huge parameters.
+    const double no_volume = double(N) + 1.;
+    const std::size_t vmin_body = std::size_t(std::ceil((std::min)(body_volume * scale3, no_volume) - 1e-9));
+    const std::size_t vmin_surface = std::size_t(std::ceil((std::min)(surface_volume * scale3, no_volume) - 1e-9));
 
     auto t0 = clock();
     // Omega_valid = {R_map <= r} \ Omega_freeze (R_map = 0 inside: valid from the first stage),
@@ -335,7 +338,8 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
           const double rad = body_seed ? (std::max)(1., std::sqrt(seed_sqd))
                                        : (std::max)(1., (surface_exclusion_fraction * rho) / delta);
           const std::array<int, 3> s = prior.classes.coordinates(seed);
-          const int ir = int(std::floor(rad));
+          // a ball wider than the grid covers it all: the loop bound is clamped before the cast
+          const int ir = int(std::floor((std::min)(rad, 2. * R)));
           for(int k = (std::max)(0, s[2] - ir); k <= (std::min)(R - 1, s[2] + ir); ++k)
             for(int j = (std::max)(0, s[1] - ir); j <= (std::min)(R - 1, s[1] + ir); ++j)
               for(int i = (std::max)(0, s[0] - ir); i <= (std::min)(R - 1, s[0] + ir); ++i)
@@ -386,7 +390,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
       }
       else
       {
-        const int ball = int(std::ceil(rho / delta));
+        const int ball = int(std::ceil((std::min)(rho / delta, 2. * R))); // as above: the grid at most
         for(int k = (std::max)(0, sijk[2] - ball); k <= (std::min)(R - 1, sijk[2] + ball); ++k)
           for(int j = (std::max)(0, sijk[1] - ball); j <= (std::min)(R - 1, sijk[1] + ball); ++j)
             for(int i = (std::max)(0, sijk[0] - ball); i <= (std::min)(R - 1, sijk[0] + ball); ++i)
@@ -580,7 +584,8 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
   if(!result.primitives.empty())
   {
     const int r_fit_last = fit_resolutions.empty() ? R : fit_resolutions.back();
-    const std::size_t vmin = std::size_t(std::ceil(surface_volume * std::pow(double(R) / double(r_fit_last), 3) - 1e-9));
+    const std::size_t vmin = std::size_t(
+      std::ceil((std::min)(surface_volume * std::pow(double(R) / double(r_fit_last), 3), double(N) + 1.) - 1e-9));
     Voxel_grid<std::uint8_t> residual(R, 0);
     for(std::size_t v = 0; v < N; ++v) residual[v] = (!freeze[v] && labels[v] < 0) ? 1 : 0;
     const Grid_components comps = connected_components(residual);
