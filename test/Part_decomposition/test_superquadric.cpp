@@ -337,9 +337,9 @@ namespace {
 struct Recording_problem
 {
   typedef PDI::Bounded_least_squares<4>::Vector Vector;
+  typedef PDI::Bounded_least_squares<4>::Matrix Matrix;
   Vector t;
   std::vector<Vector> evaluated;
-  std::size_t number_of_residuals() const { return 7; }
   double residuals(const Vector& x, double* f)
   {
     evaluated.push_back(x);
@@ -359,6 +359,21 @@ struct Recording_problem
       J[4 * (4 + i) + i] = x[i + 1];
       J[4 * (4 + i) + i + 1] = x[i];
     }
+    return F;
+  }
+  double cost(const Vector& x)
+  {
+    double f[7];
+    return residuals(x, f);
+  }
+  double cost_and_normal_equations(const Vector& x, Matrix& A, Vector& g)
+  {
+    double f[7], J[28];
+    const double F = residuals_and_jacobian(x, f, J);
+    const Eigen::Map<const Eigen::Matrix<double, 7, 4, Eigen::RowMajor> > Jm(J);
+    const Eigen::Map<const Eigen::Matrix<double, 7, 1> > fm(f);
+    A = Jm.transpose() * Jm;
+    g = Jm.transpose() * fm;
     return F;
   }
   void accept(Vector&) {}

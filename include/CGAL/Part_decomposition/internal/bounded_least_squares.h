@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -32,10 +31,11 @@ namespace internal {
 // the damping follows Nielsen's rule. A trial after an accepted step also evaluates the Jacobian
 // (one pass per accepted step); a trial after a rejection evaluates residuals only.
 //
-// Problem interface:
-//   std::size_t number_of_residuals() const;
-//   double residuals(const Vector& x, double* f);                  // returns 1/2 |f|^2
-//   double residuals_and_jacobian(const Vector& x, double* f, double* J);  // J row-major m x N
+// Problem interface (the problem forms the normal equations itself, so that it can sum them over
+// fixed blocks of residuals in parallel without the solver storing the m x N Jacobian):
+//   double cost(const Vector& x);                                  // 1/2 |f(x)|^2
+//   double cost_and_normal_equations(const Vector& x, Matrix& A, Vector& g);
+//                                  // also A = J^T J (both triangles) and g = J^T f at x
 //   void accept(Vector& x);  // after an accepted step; may re-parametrize x at the same point
 template <int N>
 class Bounded_least_squares
@@ -68,14 +68,11 @@ public:
   Report solve(Problem& problem, Vector& x, const Vector& lb, const Vector& ub, const Options& options)
   {
     Report report;
-    const std::size_t m = problem.number_of_residuals();
-    m_f.resize(m);
-    m_f_trial.resize(m);
-    m_J.resize(m * std::size_t(N));
-    m_J_trial.resize(m * std::size_t(N));
     for(int i = 0; i < N; ++i) x[i] = (std::min)(ub[i], (std::max)(lb[i], x[i]));
 
-    double F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
+    Matrix A, A_trial;
+    Vector g, g_trial;
+    double F = problem.cost_and_normal_equations(x, A, g);
     ++report.evaluations;
     ++report.jacobian_evaluations;
     report.initial_cost = report.final_cost = F;
@@ -84,10 +81,6 @@ public:
       report.finite = false;
       return report;
     }
-    if(m == 0) return report;
-    Matrix A;
-    Vector g;
-    normal_equations(m, A, g);
 
     double mu = options.initial_damping, nu = 2.;
     bool last_accepted = true;
@@ -135,9 +128,8 @@ public:
       // After an accepted step the next one is likely accepted too: evaluate the Jacobian with
       // the trial (it is the Jacobian of the new point). After a rejection, residuals only.
       const bool with_jacobian = last_accepted;
-      const double F_trial = with_jacobian
-                               ? problem.residuals_and_jacobian(x_trial, m_f_trial.data(), m_J_trial.data())
-                               : problem.residuals(x_trial, m_f_trial.data());
+      const double F_trial = with_jacobian ? problem.cost_and_normal_equations(x_trial, A_trial, g_trial)
+                                           : problem.cost(x_trial);
       ++report.evaluations;
       if(with_jacobian) ++report.jacobian_evaluations;
       const double actual = F - F_trial;
@@ -157,17 +149,16 @@ public:
         if(small_decrease || small_step || report.evaluations >= options.maximum_evaluations) break;
         if(with_jacobian)
         {
-          m_f.swap(m_f_trial);
-          m_J.swap(m_J_trial);
+          A = A_trial;
+          g = g_trial;
         }
         else
         {
-          F = problem.residuals_and_jacobian(x, m_f.data(), m_J.data());
+          F = problem.cost_and_normal_equations(x, A, g);
           ++report.evaluations;
           ++report.jacobian_evaluations;
           report.final_cost = F;
         }
-        normal_equations(m, A, g);
       }
       else
       {
@@ -180,19 +171,6 @@ public:
     return report;
   }
 
-private:
-  void normal_equations(std::size_t m, Matrix& A, Vector& g) const
-  {
-    typedef Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor> Jacobian;
-    Eigen::Map<const Jacobian> J(m_J.data(), Eigen::Index(m), N);
-    Eigen::Map<const Eigen::VectorXd> f(m_f.data(), Eigen::Index(m));
-    A.setZero();
-    A.template selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
-    A = A.template selfadjointView<Eigen::Lower>();
-    g.noalias() = J.transpose() * f;
-  }
-
-  std::vector<double> m_f, m_f_trial, m_J, m_J_trial;
 };
 
 } // namespace internal

@@ -117,20 +117,34 @@ inline Superquadric_vector to_vector(const Superquadric_data& q)
   return x;
 }
 
-// The weighted, two-stage clipped TSDF residuals of Alg. A.3 over the active samples.
+// Per-block sums of one evaluation: 1/2 |f|^2 and, with the Jacobian, J^T J (lower triangle) and
+// J^T f of the block's residuals.
+struct Fit_sdf_block_sums
+{
+  double cost = 0.;
+  Superquadric_solver::Matrix A;
+  Superquadric_vector g;
+};
+
+// The weighted, two-stage clipped TSDF residuals of Alg. A.3 over the active samples. The samples
+// are cut into fixed blocks of `block_size` whose sums are added in block order: the result does
+// not depend on the number of threads, and the blocks are small enough to keep two threads busy
+// on the few hundred samples of a small region of interest.
 template <typename ConcurrencyTag>
 class Fit_sdf_problem
 {
 public:
+  typedef Superquadric_solver::Matrix Matrix;
+  static constexpr std::size_t block_size = 128;
+
   Fit_sdf_problem(const std::vector<double>& px, const std::vector<double>& py, const std::vector<double>& pz,
                   const std::vector<double>& d, const std::vector<double>& sqrt_w,
-                  const std::vector<double>& clip, std::vector<double>& block_sums, const double R[9])
+                  const std::vector<double>& clip, std::vector<Fit_sdf_block_sums>& block_sums,
+                  const double R[9])
     : m_px(px), m_py(py), m_pz(pz), m_d(d), m_sw(sqrt_w), m_clip(clip), m_block_sums(block_sums)
   {
     std::copy(R, R + 9, m_R);
   }
-
-  std::size_t number_of_residuals() const { return m_d.size(); }
 
   Superquadric_data shape(const Superquadric_vector& x) const
   {
@@ -145,8 +159,11 @@ public:
     return q;
   }
 
-  double residuals(const Superquadric_vector& x, double* f) { return evaluate(x, f, nullptr); }
-  double residuals_and_jacobian(const Superquadric_vector& x, double* f, double* J) { return evaluate(x, f, J); }
+  double cost(const Superquadric_vector& x) { return evaluate(x, nullptr, nullptr); }
+  double cost_and_normal_equations(const Superquadric_vector& x, Matrix& A, Superquadric_vector& g)
+  {
+    return evaluate(x, &A, &g);
+  }
 
   void accept(Superquadric_vector& x)
   {
@@ -158,46 +175,64 @@ public:
   const double* rotation() const { return m_R; }
 
 private:
-  static constexpr std::size_t block_size = 512;
+  static constexpr int n = superquadric_number_of_parameters;
 
-  double evaluate(const Superquadric_vector& x, double* f, double* J)
+  double evaluate(const Superquadric_vector& x, Matrix* A, Superquadric_vector* g)
   {
+    typedef Eigen::Matrix<double, Eigen::Dynamic, n, Eigen::RowMajor> Rows;
     const Superquadric_data q = shape(x);
     const std::size_t m = m_d.size();
     const std::size_t blocks = (m + block_size - 1) / block_size;
-    m_block_sums.assign(blocks, 0.);
+    if(m_block_sums.size() < blocks) m_block_sums.resize(blocks);
+    const bool normal_equations = A != nullptr;
     auto run = [&](std::size_t b, std::size_t begin, std::size_t end) {
+      // the unclipped rows of the block (a clipped residual is constant: zero row)
+      double rows[block_size * n];
+      double values[block_size];
+      Eigen::Index kept = 0;
       double sum = 0.;
       for(std::size_t i = begin; i < end; ++i)
       {
         const double p[3] = {m_px[i], m_py[i], m_pz[i]};
-        double row[11];
-        const double dt = J ? superquadric_radial_distance_and_gradient(q, p, row)
-                            : superquadric_radial_distance(q, p);
+        double* row = rows + n * kept;
+        const double dt = normal_equations ? superquadric_radial_distance_and_gradient(q, p, row)
+                                           : superquadric_radial_distance(q, p);
         const double r = dt - m_d[i];
-        const double b = m_clip[i];
-        double fi;
-        if(std::abs(r) < b)
-        {
-          fi = m_sw[i] * r;
-          if(J)
-            for(int k = 0; k < 11; ++k) J[11 * i + k] = m_sw[i] * row[k];
-        }
-        else
-        {
-          // the clipped residual is constant: zero row
-          fi = m_sw[i] * (r > 0. ? b : -b);
-          if(J)
-            for(int k = 0; k < 11; ++k) J[11 * i + k] = 0.;
-        }
-        f[i] = fi;
+        const double c = m_clip[i];
+        const double fi = m_sw[i] * (std::abs(r) < c ? r : (r > 0. ? c : -c));
         sum += fi * fi;
+        if(normal_equations && std::abs(r) < c)
+        {
+          for(int k = 0; k < n; ++k) row[k] *= m_sw[i];
+          values[kept++] = fi;
+        }
       }
-      m_block_sums[b] = sum;
+      Fit_sdf_block_sums& out = m_block_sums[b];
+      out.cost = sum;
+      if(!normal_equations) return;
+      const Eigen::Map<const Rows> J(rows, kept, n);
+      const Eigen::Map<const Eigen::VectorXd> f(values, kept);
+      out.A.setZero();
+      out.A.template selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
+      out.g.noalias() = J.transpose() * f;
     };
     sq_for_each_block<ConcurrencyTag>(m, block_size, run);
     double total = 0.;
-    for(double s : m_block_sums) total += s;
+    if(normal_equations)
+    {
+      A->setZero();
+      g->setZero();
+    }
+    for(std::size_t b = 0; b < blocks; ++b)
+    {
+      total += m_block_sums[b].cost;
+      if(normal_equations)
+      {
+        *A += m_block_sums[b].A;
+        *g += m_block_sums[b].g;
+      }
+    }
+    if(normal_equations) *A = A->template selfadjointView<Eigen::Lower>();
     return 0.5 * total;
   }
 
@@ -207,14 +242,15 @@ private:
   const std::vector<double>& m_d;
   const std::vector<double>& m_sw;
   const std::vector<double>& m_clip;
-  std::vector<double>& m_block_sums;
+  std::vector<Fit_sdf_block_sums>& m_block_sums;
   double m_R[9];
 };
 
 // Buffers reused across fits (one per thread when fits run concurrently).
 struct Fit_sdf_workspace
 {
-  std::vector<double> px, py, pz, d, sqrt_w, clip, d0, block_sums;
+  std::vector<double> px, py, pz, d, sqrt_w, clip, d0;
+  std::vector<Fit_sdf_block_sums> block_sums;
   std::vector<unsigned char> interior; // interior regime: Gaussian weight
   Superquadric_solver solver;
 };
