@@ -619,10 +619,13 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   std::vector<std::size_t> part(num_faces(m));
   // stages out of order: a logic error, not a crash
   CHECK_THROWS_AS(pd.fit_primitives(), std::logic_error);
+  CHECK_THROWS_AS(pd.compute_fitting_zones(), std::logic_error);
   CHECK_THROWS_AS(pd.assign_parts(CGAL::make_property_map(part)), std::logic_error);
   pd.compute_prior(PDP::voxel_resolutions(std::vector<int>{16, 32}));
   pd.compute_distance_field();
   CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER); // 32^3 prior, 64^3 field
+  CHECK(pd.compute_fitting_zones().flow_zone.count(16) == 1); // r_fit of {16, 32}: 16 only
+  CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER);
 
   // the free functions on results that do not match
   const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);

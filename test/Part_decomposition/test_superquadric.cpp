@@ -728,7 +728,17 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
   CHECK(no_tsdf.primitives.size() >= 1);
   const auto no_freeze = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_freeze_zone(false));
   CHECK(no_freeze.primitives.size() >= 1);
+  REQUIRE(PD::fitting_resolutions(prior.resolutions) == std::vector<int>{16, 32});
+  CHECK(PD::fitting_resolutions({8}) == std::vector<int>{4});
+  CHECK(PD::fitting_resolutions({16, 64}) == std::vector<int>{16});
   const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, {16, 32});
+  // zones computed beforehand give the same fit; zones that miss a resolution are refused
+  const auto with_zones = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, zones);
+  CHECK(with_zones.labels == seq.labels);
+  CHECK(with_zones.primitives.size() == seq.primitives.size());
+  CHECK(with_zones.number_of_evaluations == seq.number_of_evaluations);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, PD::compute_fitting_zones(prior.classes, {16})),
+                  PD::Invalid_input);
   for(const auto* res : {&no_body, &no_tsdf, &no_freeze})
     for(std::size_t v = 0; v < res->labels.size(); ++v)
       if(res->labels[v] >= 0) CHECK(zones.exterior[v] == 0);

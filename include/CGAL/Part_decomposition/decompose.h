@@ -9,6 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_DECOMPOSE_H
 
 #include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
@@ -52,6 +53,7 @@ struct Stage_timings
   double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
   double tsdf = 0.;              ///< truncated signed distance field
   double fitting = 0.;           ///< fitting zones and superquadric fitting
+  double fitting_zones = 0.;     ///< of which the fitting zones (run next to the distance field when stages overlap)
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
   double total = 0.;             ///< the whole call, input checks included
@@ -128,7 +130,8 @@ Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<doub
 The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1):
 `compute_prior()`, `compute_distance_field()`, `fit_primitives()`, `over_segment()` and
 `assign_parts()`, in this order, each keeping its result for inspection. `decompose()` runs them
-all in one call.
+all in one call. `compute_fitting_zones()`, between the prior and the fit, is optional: it lets
+the zones of the fitter be computed next to the distance field.
 
 Every stage function takes its own named parameters (those of the function it calls, listed in
 its documentation); the mesh, vertex point map and normalization of the decomposer are added to
@@ -198,7 +201,26 @@ public:
   {
     m_prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_prior = true;
+    m_has_zones = false;
     return m_prior;
+  }
+
+  /// computes the zones of the fitter from the prior with `compute_fitting_zones()` at the
+  /// `fitting_resolutions()` of the prior; `fit_primitives()` uses them (it computes them itself
+  /// if this function was not called after `compute_prior()`). Pass the same `flow_zone_tolerance`
+  /// and `use_freeze_zone` as to `fit_primitives()`.
+  /// \pre `compute_prior()` was called.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    CGAL_precondition(m_has_prior);
+    if(!m_has_prior)
+      throw std::logic_error("Part_decomposer::compute_fitting_zones() needs the prior");
+    m_zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
+      m_prior.classes, fitting_resolutions(m_prior.resolutions), np);
+    m_has_zones = true;
+    return m_zones;
   }
 
   /// computes the truncated signed distance field with `compute_tsdf()`, on the finest grid of
@@ -224,7 +246,8 @@ public:
     if(m_tsdf.values.resolution() != m_prior.classes.resolution())
       throw Invalid_input(Input_error::INVALID_PARAMETER,
                           "the distance field and the prior were computed at different resolutions");
-    m_fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, np);
+    m_fitting = m_has_zones ? fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, m_zones, np)
+                            : fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, np);
     m_has_fitting = true;
     return m_fitting;
   }
@@ -281,6 +304,8 @@ public:
   const Normalization& normalization() const { return m_normalization; }
   /// the prior. \pre `compute_prior()` was called.
   const Hierarchical_prior& prior() const { return m_prior; }
+  /// the zones of the fitter. \pre `compute_fitting_zones()` was called.
+  const Fitting_zones& fitting_zones() const { return m_zones; }
   /// the distance field. \pre `compute_distance_field()` was called.
   const Truncated_signed_distance_field& distance_field() const { return m_tsdf; }
   /// the fitted primitives and claimed voxels. \pre `fit_primitives()` was called.
@@ -344,12 +369,13 @@ private:
   Normalization m_normalization;
   Hierarchical_prior m_prior;
   Truncated_signed_distance_field m_tsdf;
+  Fitting_zones m_zones;
   Superquadric_fitting_result<Geom_traits> m_fitting;
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
   std::vector<std::size_t> m_part_to_primitive;
   std::vector<Primitive> m_part_primitives;
-  bool m_has_prior = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false;
+  bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false;
 };
 
 /*!
@@ -613,6 +639,10 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
           const auto t = std::chrono::steady_clock::now();
           decomposer.template compute_prior<ConcurrencyTag>(np);
           timings.prior = internal::seconds_since(t);
+          // the zones need the prior only: they are computed while the distance field is
+          const auto tz = std::chrono::steady_clock::now();
+          decomposer.template compute_fitting_zones<ConcurrencyTag>(np);
+          timings.fitting_zones = internal::seconds_since(tz);
         },
         [&] {
           const auto t = std::chrono::steady_clock::now();
@@ -621,7 +651,7 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
         });
       const auto t = std::chrono::steady_clock::now();
       decomposer.template fit_primitives<ConcurrencyTag>(np);
-      timings.fitting = internal::seconds_since(t);
+      timings.fitting = timings.fitting_zones + internal::seconds_since(t);
     },
     [&] {
       const auto t = std::chrono::steady_clock::now();

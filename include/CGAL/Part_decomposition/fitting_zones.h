@@ -15,6 +15,7 @@
 
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -45,6 +46,36 @@ struct Fitting_zones
   /// Flow zone to the nearest voxel outside it; 0 outside the zone.
   std::map<int, Voxel_grid<double> > flow_zone_distance;
 };
+
+namespace internal {
+
+// r_fit of each stage: min(r, the resolution before the finest), or half the only resolution.
+inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolutions)
+{
+  std::vector<int> out;
+  if(resolutions.empty()) return out;
+  const int cap = resolutions.size() >= 2 ? resolutions[resolutions.size() - 2]
+                                          : (std::max)(1, resolutions.back() / 2);
+  for(int r : resolutions) out.push_back((std::min)(r, cap));
+  return out;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+returns the fitting resolutions \f$r_{fit}\f$ of the stages of a prior computed at `resolutions`
+(coarse to fine), without repetition, in stage order: \f$r_{fit} = \min(r, r_{L-1})\f$ with
+\f$r_{L-1}\f$ the resolution before the finest (paper: `{16, 32}` for `{16, 32, 64}`), or half the
+resolution if there is only one. These are the resolutions `fit_superquadrics()` needs zones at.
+*/
+inline std::vector<int> fitting_resolutions(const std::vector<int>& resolutions)
+{
+  std::vector<int> distinct;
+  for(int r_fit : internal::stage_fitting_resolutions(resolutions))
+    if(std::find(distinct.begin(), distinct.end(), r_fit) == distinct.end()) distinct.push_back(r_fit);
+  return distinct;
+}
 
 /*!
 \ingroup PkgPartDecompositionRef

@@ -627,6 +627,79 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
   return result;
 }
 
+// fit_superquadrics() with the zones given (checked against the prior) or computed if null
+template <typename ConcurrencyTag, typename GeomTraits, typename NamedParameters>
+Superquadric_fitting_result<GeomTraits> fit_superquadrics_with_zones(const Hierarchical_prior& prior,
+                                                                     const Truncated_signed_distance_field& tsdf,
+                                                                     const Fitting_zones* zones,
+                                                                     const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  auto fail = [](const char* what) { throw Invalid_input(Input_error::INVALID_PARAMETER, what); };
+  const std::vector<double> etas =
+    choose_parameter(get_parameter(np, internal_np::trust_region_scales), std::vector<double>{1., 0.5, 0.25});
+  const double body_threshold = choose_parameter(get_parameter(np, internal_np::body_seed_threshold), 1.5);
+  const double body_volume = choose_parameter(get_parameter(np, internal_np::minimum_body_volume), 5.);
+  const double surface_volume = choose_parameter(get_parameter(np, internal_np::minimum_surface_volume), 3.);
+  const double exterior_penalty = choose_parameter(get_parameter(np, internal_np::exterior_penalty), 5.);
+  const double coverage = choose_parameter(get_parameter(np, internal_np::coverage_target), defaults::coverage_target);
+  const double roi = choose_parameter(get_parameter(np, internal_np::roi_radius), 8.);
+  const Interior_weight_mode mode =
+    choose_parameter(get_parameter(np, internal_np::interior_weight_mode), Interior_weight_mode::ONE_SHOT);
+  const std::size_t cap = choose_parameter(get_parameter(np, internal_np::maximum_number_of_primitives), std::size_t(256));
+  const bool use_freeze = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), true);
+  const bool use_tsdf = choose_parameter(get_parameter(np, internal_np::use_tsdf_guidance), true);
+  const bool use_body = choose_parameter(get_parameter(np, internal_np::use_body_seeds), true);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+
+  if(etas.empty()) fail("trust_region_scales must not be empty");
+  for(double e : etas)
+    if(!(e > 0.) || !std::isfinite(e)) fail("trust_region_scales must be positive");
+  if(!(body_threshold > 0.) || !std::isfinite(body_threshold)) fail("body_seed_threshold must be positive");
+  if(!(body_volume >= 0.) || !(surface_volume >= 0.) || !std::isfinite(body_volume) || !std::isfinite(surface_volume))
+    fail("minimum_body_volume and minimum_surface_volume must be non-negative");
+  if(!(exterior_penalty >= 0.) || !std::isfinite(exterior_penalty)) fail("exterior_penalty must be non-negative");
+  if(!(coverage > 0. && coverage <= 1.)) fail("coverage_target must be in (0, 1]");
+  if(!(roi > 0.) || !std::isfinite(roi)) fail("roi_radius must be positive");
+  if(cap == 0) fail("maximum_number_of_primitives must be positive");
+
+  // Results of other calls: checked at run time, a mismatch would index out of the grids.
+  bool consistent = !prior.resolutions.empty() && prior.resolutions.front() >= 1 &&
+                    prior.resolutions.back() == prior.classes.resolution() &&
+                    tsdf.values.resolution() == prior.classes.resolution();
+  for(std::size_t l = 1; consistent && l < prior.resolutions.size(); ++l)
+    consistent = prior.resolutions[l - 1] < prior.resolutions[l];
+  if(!consistent)
+    fail("the prior and the distance field must be computed with the same voxel_resolutions");
+
+  const std::vector<int>& stages = prior.resolutions;
+  const std::vector<int> fit_res = internal::stage_fitting_resolutions(stages);
+  Fitting_zones own_zones;
+  if(zones == nullptr)
+  {
+    own_zones = compute_fitting_zones<ConcurrencyTag>(prior.classes, fitting_resolutions(stages), np);
+    zones = &own_zones;
+  }
+  else
+  {
+    bool match = zones->freeze_zone.resolution() == prior.classes.resolution() &&
+                 zones->exterior.resolution() == prior.classes.resolution();
+    for(int r_fit : fit_res)
+      match = match && zones->flow_zone.count(r_fit) == 1 && zones->flow_zone_distance.count(r_fit) == 1 &&
+              zones->flow_zone.at(r_fit).resolution() == prior.classes.resolution() &&
+              zones->flow_zone_distance.at(r_fit).resolution() == prior.classes.resolution();
+    if(!match) fail("the fitting zones must be computed from this prior at its fitting_resolutions()");
+  }
+  return internal::fit_superquadrics_in_zones<ConcurrencyTag, GeomTraits>(
+    prior, tsdf, *zones, stages, fit_res, etas, body_threshold, body_volume, surface_volume, exterior_penalty,
+    coverage, roi, mode, cap, use_freeze, use_tsdf, use_body, verbose);
+}
+
 } // namespace internal
 
 /*!
@@ -786,62 +859,27 @@ Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_pri
                                                           const Truncated_signed_distance_field& tsdf,
                                                           const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-#ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  auto fail = [](const char* what) { throw Invalid_input(Input_error::INVALID_PARAMETER, what); };
-  const std::vector<double> etas =
-    choose_parameter(get_parameter(np, internal_np::trust_region_scales), std::vector<double>{1., 0.5, 0.25});
-  const double body_threshold = choose_parameter(get_parameter(np, internal_np::body_seed_threshold), 1.5);
-  const double body_volume = choose_parameter(get_parameter(np, internal_np::minimum_body_volume), 5.);
-  const double surface_volume = choose_parameter(get_parameter(np, internal_np::minimum_surface_volume), 3.);
-  const double exterior_penalty = choose_parameter(get_parameter(np, internal_np::exterior_penalty), 5.);
-  const double coverage = choose_parameter(get_parameter(np, internal_np::coverage_target), defaults::coverage_target);
-  const double roi = choose_parameter(get_parameter(np, internal_np::roi_radius), 8.);
-  const Interior_weight_mode mode =
-    choose_parameter(get_parameter(np, internal_np::interior_weight_mode), Interior_weight_mode::ONE_SHOT);
-  const std::size_t cap = choose_parameter(get_parameter(np, internal_np::maximum_number_of_primitives), std::size_t(256));
-  const bool use_freeze = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), true);
-  const bool use_tsdf = choose_parameter(get_parameter(np, internal_np::use_tsdf_guidance), true);
-  const bool use_body = choose_parameter(get_parameter(np, internal_np::use_body_seeds), true);
-  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  return internal::fit_superquadrics_with_zones<ConcurrencyTag, GeomTraits>(prior, tsdf, nullptr, np);
+}
 
-  if(etas.empty()) fail("trust_region_scales must not be empty");
-  for(double e : etas)
-    if(!(e > 0.) || !std::isfinite(e)) fail("trust_region_scales must be positive");
-  if(!(body_threshold > 0.) || !std::isfinite(body_threshold)) fail("body_seed_threshold must be positive");
-  if(!(body_volume >= 0.) || !(surface_volume >= 0.) || !std::isfinite(body_volume) || !std::isfinite(surface_volume))
-    fail("minimum_body_volume and minimum_surface_volume must be non-negative");
-  if(!(exterior_penalty >= 0.) || !std::isfinite(exterior_penalty)) fail("exterior_penalty must be non-negative");
-  if(!(coverage > 0. && coverage <= 1.)) fail("coverage_target must be in (0, 1]");
-  if(!(roi > 0.) || !std::isfinite(roi)) fail("roi_radius must be positive");
-  if(cap == 0) fail("maximum_number_of_primitives must be positive");
-
-  // Results of other calls: checked at run time, a mismatch would index out of the grids.
-  bool consistent = !prior.resolutions.empty() && prior.resolutions.front() >= 1 &&
-                    prior.resolutions.back() == prior.classes.resolution() &&
-                    tsdf.values.resolution() == prior.classes.resolution();
-  for(std::size_t l = 1; consistent && l < prior.resolutions.size(); ++l)
-    consistent = prior.resolutions[l - 1] < prior.resolutions[l];
-  if(!consistent)
-    fail("the prior and the distance field must be computed with the same voxel_resolutions");
-
-  // r_fit = min(r, cap) with cap the resolution before the finest (32 for 16, 32, 64).
-  const std::vector<int>& stages = prior.resolutions;
-  const int fit_cap = stages.size() >= 2 ? stages[stages.size() - 2] : (std::max)(1, stages.back() / 2);
-  std::vector<int> fit_res, distinct;
-  for(int r : stages)
-  {
-    fit_res.push_back((std::min)(r, fit_cap));
-    if(std::find(distinct.begin(), distinct.end(), fit_res.back()) == distinct.end()) distinct.push_back(fit_res.back());
-  }
-  const Fitting_zones zones = compute_fitting_zones<ConcurrencyTag>(prior.classes, distinct, np);
-  return internal::fit_superquadrics_in_zones<ConcurrencyTag, GeomTraits>(
-    prior, tsdf, zones, stages, fit_res, etas, body_threshold, body_volume, surface_volume, exterior_penalty,
-    coverage, roi, mode, cap, use_freeze, use_tsdf, use_body, verbose);
+/*!
+\ingroup PkgPartDecompositionRef
+the same as `fit_superquadrics(prior, tsdf, np)` with the zones computed beforehand, for instance
+next to the distance field, by
+`compute_fitting_zones(prior.classes, fitting_resolutions(prior.resolutions), np)` with the same
+`flow_zone_tolerance` and `use_freeze_zone`.
+\throws Invalid_input (`INVALID_PARAMETER`) as `fit_superquadrics(prior, tsdf, np)`, and if
+`zones` are not on the grid of `prior.classes` or miss one of its fitting resolutions.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_prior& prior,
+                                                          const Truncated_signed_distance_field& tsdf,
+                                                          const Fitting_zones& zones,
+                                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::fit_superquadrics_with_zones<ConcurrencyTag, GeomTraits>(prior, tsdf, &zones, np);
 }
 
 } // namespace Part_decomposition
