@@ -634,8 +634,10 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
   if(!ours.empty() || !ours1.empty())
   {
     out << "\n## Our stages, median seconds\n\n"
-        << "Stages that run at the same time (the prior, the distance field and the over-segmentation, then "
-           "the fitting next to what is left of the over-segmentation) overlap: their sum exceeds the total.\n\n"
+        << "With two threads or more, stages that run at the same time overlap and their sum exceeds the "
+           "total: the prior followed by the fitting zones, the distance field and the over-segmentation, then "
+           "the superquadric fits next to what is left of the over-segmentation. \"fitting\" includes the "
+           "zones.\n\n"
         << "| run | read | prior | TSDF | fitting | over-segmentation | assignment | method | end-to-end |\n"
         << "|---|---|---|---|---|---|---|---|---|\n";
     for(const auto* m : {&ours, &ours1})
