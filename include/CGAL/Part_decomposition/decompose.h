@@ -567,7 +567,7 @@ are chained with `parameters::combine()`)
   \cgalParamNEnd
   \cgalParamNBegin{merge_thin_sheets}
     \cgalParamDescription{if `true`, adjacent parts whose primitives are flat (smallest semi-axis
-                          below half the middle one) and thin (no claimed voxel deeper than two
+                          below half the middle one) and thin (no claimed voxel deeper than 2.5
                           voxels of the finest grid inside the shape) are merged when less than half
                           of the length of their common boundary runs over sharp edges (dihedral
                           angle at or above the 90-th percentile and at least 30 degrees): a thin curved shell, such as the

@@ -623,7 +623,9 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
   if(verbose)
     std::cerr << "time (ms): stage setup " << 1e3 * t_setup << ", seeds " << 1e3 * t_seed << ", ROI/samples "
               << 1e3 * t_roi << ", FitSDF " << 1e3 * t_fit << ", Flow-zone test " << 1e3 * t_test << ", claims "
-              << 1e3 * t_claim << ", merge " << 1e3 * t_merge << ", total " << 1e3 * result.seconds << "\n";
+              << 1e3 * t_claim << ", merge " << 1e3 * t_merge << ", total " << 1e3 * result.seconds << "; "
+              << result.number_of_seeds << " seeds, " << result.number_of_solves << " solves, "
+              << result.number_of_evaluations << " evaluations of " << result.number_of_samples << " samples\n";
   return result;
 }
 

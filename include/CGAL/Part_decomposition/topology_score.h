@@ -304,7 +304,11 @@ computes the voxel cues, the topology score \f$S_B\f$ and its Flow/Freeze cut at
 (paper Sec.\ 3.2, Eq.\ 3-5, App.\ B).
 
 Every face gets the `number_of_points_per_face` samples of `barycentric_sample_grid()`; they are
-mapped to the normalized cube by `normalization` and binned with `voxel_coordinate()`. One
+mapped to the normalized cube by `normalization` and binned with `voxel_coordinate()`. A face whose
+samples would lie more than half a voxel apart (an edge longer than \f$\sqrt{N_{face}}/2\f$ voxels
+of the finest resolution) is cut by longest-edge bisection until none is; each piece gets the
+samples, weighted by its share of the face's area, and the face adds its weight rounded to an
+integer, at least 1, to every voxel it reaches: large triangles leave no hole in the active set. One
 accumulation pass gives, per voxel, the number of samples \f$n\f$, the mean \f$\mu^\kappa\f$ and
 standard deviation \f$\sigma^\kappa = \sqrt{\max(0, E[c^2] - \mu^2)}\f$ of the face curvature cue,
 and the mean normal deviation \f$\phi_{norm}\f$ (each sample carries the values of its face).

@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -96,6 +97,10 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
                         std::vector<Voxel_sums>& sums)
 {
   const std::size_t nf = faces.size(), ns = barycentric.size();
+  // Samples at most half a voxel apart: n per side over an edge of at most n/2 voxels.
+  const double dense_edge = 0.5 * std::sqrt(double(ns));
+  // A piece never gets smaller than 2^-30 of its face: the cut is bounded for any triangle.
+  const double minimum_piece_weight = std::ldexp(1., -30);
   const std::size_t block_size = 1024;
   const std::size_t number_of_blocks = (nf + block_size - 1) / block_size;
   std::vector<std::vector<Face_voxel_count> > blocks(number_of_blocks);
@@ -103,6 +108,13 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
     std::vector<Face_voxel_count>& out = blocks[begin / block_size];
     out.reserve(2 * (end - begin));
     std::vector<std::uint32_t> voxel(ns), count(ns);
+    struct Piece
+    {
+      std::array<Vec3, 3> corners;
+      double weight; // share of the face's area
+    };
+    std::vector<Piece> pieces;
+    std::vector<std::pair<std::uint32_t, double> > weighted;
     for(std::size_t f = begin; f < end; ++f)
     {
       const Vec3& a = unit_points[faces[f][0]];
@@ -126,6 +138,73 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
         out.push_back(Face_voxel_count{std::uint32_t(f),
                                        std::uint32_t(fixed[0]) + urf * (std::uint32_t(fixed[1]) + urf * std::uint32_t(fixed[2])),
                                        std::uint32_t(ns)});
+        continue;
+      }
+      // A face whose samples would lie more than half a voxel apart (the large, long triangles of
+      // CAD meshes) would leave holes in the occupancy, through which the exterior flood fill of
+      // the zones enters the shape. It is cut by longest-edge bisection until its samples are
+      // dense enough; each piece gets the same barycentric samples, weighted by its share of the
+      // face's area, so that the face still counts `ns` samples in total (at least one in every
+      // voxel it reaches).
+      auto longest_edge = [&](const Vec3& p, const Vec3& q, const Vec3& t) {
+        double m = 0.;
+        for(const auto& e : {std::make_pair(&p, &q), std::make_pair(&q, &t), std::make_pair(&t, &p)})
+        {
+          double l2 = 0.;
+          for(int x = 0; x < 3; ++x) l2 += ((*e.first)[x] - (*e.second)[x]) * ((*e.first)[x] - (*e.second)[x]);
+          m = (std::max)(m, l2);
+        }
+        return std::sqrt(m) * double(rf);
+      };
+      if(longest_edge(a, b, d) > dense_edge)
+      {
+        pieces.clear();
+        weighted.clear();
+        pieces.push_back(Piece{{{a, b, d}}, 1.});
+        while(!pieces.empty())
+        {
+          const Piece piece = pieces.back();
+          pieces.pop_back();
+          const Vec3 &p = piece.corners[0], &q = piece.corners[1], &t = piece.corners[2];
+          if(longest_edge(p, q, t) > dense_edge && piece.weight > minimum_piece_weight)
+          {
+            // split the longest edge at its midpoint: two halves of equal area
+            double l[3] = {0., 0., 0.};
+            for(int e = 0; e < 3; ++e)
+              for(int x = 0; x < 3; ++x)
+              {
+                const double dx = piece.corners[e][x] - piece.corners[(e + 1) % 3][x];
+                l[e] += dx * dx;
+              }
+            const int e = l[0] >= l[1] && l[0] >= l[2] ? 0 : (l[1] >= l[2] ? 1 : 2);
+            const Vec3& u = piece.corners[e];
+            const Vec3& v = piece.corners[(e + 1) % 3];
+            const Vec3& o = piece.corners[(e + 2) % 3];
+            const Vec3 mid = {{0.5 * (u[0] + v[0]), 0.5 * (u[1] + v[1]), 0.5 * (u[2] + v[2])}};
+            pieces.push_back(Piece{{{u, mid, o}}, 0.5 * piece.weight});
+            pieces.push_back(Piece{{{mid, v, o}}, 0.5 * piece.weight});
+            continue;
+          }
+          for(const auto& w : barycentric)
+          {
+            const int i = fast_voxel_coordinate(w[0] * p[0] + w[1] * q[0] + w[2] * t[0], rf);
+            const int j = fast_voxel_coordinate(w[0] * p[1] + w[1] * q[1] + w[2] * t[1], rf);
+            const int k = fast_voxel_coordinate(w[0] * p[2] + w[1] * q[2] + w[2] * t[2], rf);
+            weighted.push_back(std::make_pair(std::uint32_t(i) + urf * (std::uint32_t(j) + urf * std::uint32_t(k)),
+                                              piece.weight));
+          }
+        }
+        std::sort(weighted.begin(), weighted.end());
+        for(std::size_t s = 0; s < weighted.size();)
+        {
+          double total = 0.;
+          std::size_t e = s;
+          for(; e < weighted.size() && weighted[e].first == weighted[s].first; ++e) total += weighted[e].second;
+          const double rounded = std::floor(total + 0.5);
+          out.push_back(Face_voxel_count{std::uint32_t(f), weighted[s].first,
+                                         rounded < 1. ? 1u : std::uint32_t(rounded)});
+          s = e;
+        }
         continue;
       }
       std::size_t distinct = 0;

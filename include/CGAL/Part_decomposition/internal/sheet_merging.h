@@ -37,7 +37,8 @@ struct Sheet_merging_thresholds
   // a primitive is flat when its smallest semi-axis times this is below its middle one
   double flatness_ratio = 2.;
   // and thin when no voxel it claims lies deeper than this inside the shape, in finest voxels
-  double maximum_depth = 2.;
+  // (a wall up to five voxels thick: the wall of a cup at 64^3)
+  double maximum_depth = 2.5;
   // two sheets merge unless this fraction of their seam lies on sharp edges
   double sharp_seam_fraction = 0.5;
   // sharp: a dihedral angle at or above this percentile of the mesh's interior edges and at or
