@@ -229,6 +229,14 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
   std::vector<std::size_t> queue, candidates, roi_voxels, claim, claim_new_body;
   std::vector<std::uint8_t> excluded(N, 0), valid(N, 0), spec(N, 0), body(N, 0);
 
+  // V_min, given in voxels of r_fit, in voxels of the finest grid. A volume above the grid's is
+  // never reached: clamped to N + 1 voxels, the same comparisons without a cast out of the range
+  // of std::size_t (undefined) for huge parameters.
+  auto finest_voxels = [&](double volume, int r_fit) {
+    const double v = volume * std::pow(double(R) / double(r_fit), 3);
+    return std::size_t(std::ceil((std::min)(v, double(N) + 1.) - 1e-9));
+  };
+
   auto for_each_neighbor = [&](std::size_t idx, auto&& f) {
     const std::size_t i = idx % RR, j = (idx / RR) % RR, k = idx / (RR * RR);
     if(i > 0) f(idx - 1);
@@ -247,12 +255,8 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
     const double rho = roi_radius * delta_fit;
     const Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(r_fit);
     const Voxel_grid<double>& edt_flow = zones.flow_zone_distance.at(r_fit);
-    const double scale3 = std::pow(double(R) / double(r_fit), 3);
-    // A volume above the grid's is never reached: clamped to N + 1 voxels, the same comparisons
-    // without a cast out of the range of std::size_t (undefined) for huge parameters.
-    const double no_volume = double(N) + 1.;
-    const std::size_t vmin_body = std::size_t(std::ceil((std::min)(body_volume * scale3, no_volume) - 1e-9));
-    const std::size_t vmin_surface = std::size_t(std::ceil((std::min)(surface_volume * scale3, no_volume) - 1e-9));
+    const std::size_t vmin_body = finest_voxels(body_volume, r_fit);
+    const std::size_t vmin_surface = finest_voxels(surface_volume, r_fit);
 
     auto t0 = clock();
     // Omega_valid = {R_map <= r} \ Omega_freeze (R_map = 0 inside: valid from the first stage),
@@ -584,8 +588,7 @@ fit_superquadrics_in_zones(const Hierarchical_prior& prior, const Truncated_sign
   if(!result.primitives.empty())
   {
     const int r_fit_last = fit_resolutions.empty() ? R : fit_resolutions.back();
-    const std::size_t vmin = std::size_t(
-      std::ceil((std::min)(surface_volume * std::pow(double(R) / double(r_fit_last), 3), double(N) + 1.) - 1e-9));
+    const std::size_t vmin = finest_voxels(surface_volume, r_fit_last);
     Voxel_grid<std::uint8_t> residual(R, 0);
     for(std::size_t v = 0; v < N; ++v) residual[v] = (!freeze[v] && labels[v] < 0) ? 1 : 0;
     const Grid_components comps = connected_components(residual);

@@ -115,6 +115,22 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
     };
     std::vector<Piece> pieces;
     std::vector<std::pair<std::uint32_t, double> > weighted;
+    // the longest edge of a triangle: its first corner (it runs to the next one), its length in voxels
+    auto longest_edge = [&](const std::array<Vec3, 3>& corners) {
+      int longest = 0;
+      double longest2 = -1.;
+      for(int e = 0; e < 3; ++e)
+      {
+        double l2 = 0.;
+        for(int x = 0; x < 3; ++x)
+        {
+          const double dx = corners[e][x] - corners[(e + 1) % 3][x];
+          l2 += dx * dx;
+        }
+        if(l2 > longest2) longest = e, longest2 = l2;
+      }
+      return std::make_pair(longest, std::sqrt(longest2) * double(rf));
+    };
     for(std::size_t f = begin; f < end; ++f)
     {
       const Vec3& a = unit_points[faces[f][0]];
@@ -146,17 +162,7 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
       // dense enough; each piece gets the same barycentric samples, weighted by its share of the
       // face's area, so that the face still counts `ns` samples in total (at least one in every
       // voxel it reaches).
-      auto longest_edge = [&](const Vec3& p, const Vec3& q, const Vec3& t) {
-        double m = 0.;
-        for(const auto& e : {std::make_pair(&p, &q), std::make_pair(&q, &t), std::make_pair(&t, &p)})
-        {
-          double l2 = 0.;
-          for(int x = 0; x < 3; ++x) l2 += ((*e.first)[x] - (*e.second)[x]) * ((*e.first)[x] - (*e.second)[x]);
-          m = (std::max)(m, l2);
-        }
-        return std::sqrt(m) * double(rf);
-      };
-      if(longest_edge(a, b, d) > dense_edge)
+      if(longest_edge({{a, b, d}}).second > dense_edge)
       {
         pieces.clear();
         weighted.clear();
@@ -165,18 +171,11 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
         {
           const Piece piece = pieces.back();
           pieces.pop_back();
-          const Vec3 &p = piece.corners[0], &q = piece.corners[1], &t = piece.corners[2];
-          if(longest_edge(p, q, t) > dense_edge && piece.weight > minimum_piece_weight)
+          const std::pair<int, double> edge = longest_edge(piece.corners);
+          if(edge.second > dense_edge && piece.weight > minimum_piece_weight)
           {
             // split the longest edge at its midpoint: two halves of equal area
-            double l[3] = {0., 0., 0.};
-            for(int e = 0; e < 3; ++e)
-              for(int x = 0; x < 3; ++x)
-              {
-                const double dx = piece.corners[e][x] - piece.corners[(e + 1) % 3][x];
-                l[e] += dx * dx;
-              }
-            const int e = l[0] >= l[1] && l[0] >= l[2] ? 0 : (l[1] >= l[2] ? 1 : 2);
+            const int e = edge.first;
             const Vec3& u = piece.corners[e];
             const Vec3& v = piece.corners[(e + 1) % 3];
             const Vec3& o = piece.corners[(e + 2) % 3];
@@ -185,6 +184,7 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
             pieces.push_back(Piece{{{mid, v, o}}, 0.5 * piece.weight});
             continue;
           }
+          const Vec3 &p = piece.corners[0], &q = piece.corners[1], &t = piece.corners[2];
           for(const auto& w : barycentric)
           {
             const int i = fast_voxel_coordinate(w[0] * p[0] + w[1] * q[0] + w[2] * t[0], rf);
