@@ -99,8 +99,8 @@ void run(const std::string& file, double min_size, double max_size, double q, in
   PD::IO::read_triangle_mesh(file, m);
   const auto fim = get(CGAL::face_index, m);
   const auto np = PD::parameters::combine(PD::parameters::minimum_patch_size(min_size),
-                                          PD::parameters::maximum_patch_size(max_size),
-                                          PD::parameters::dihedral_quantile(q),
+                                          PD::parameters::patch_split_size(max_size),
+                                          PD::parameters::dihedral_percentile(q),
                                           PD::parameters::smoothing_iterations(smoothing));
   std::vector<std::size_t> label;
   PD::internal::Over_segmentation_statistics st;

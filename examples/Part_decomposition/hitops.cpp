@@ -77,10 +77,10 @@ struct Options
   std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
   bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
   bool merge_sheets = PD::defaults::merge_thin_sheets;
-  double dihedral_quantile = PD::defaults::dihedral_quantile;
+  double dihedral_percentile = PD::defaults::dihedral_percentile;
   unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
   double min_patch_size = PD::defaults::minimum_patch_size;
-  double max_patch_size = PD::defaults::maximum_patch_size;
+  double patch_split_size = PD::defaults::patch_split_size;
   double vote_temperature = PD::defaults::vote_temperature;
 };
 
@@ -122,8 +122,8 @@ const char* const usage_text =
   "  --interior-weight M      one-shot or mps\n"
   "  --max-primitives 256\n"
   "  --no-freeze --no-tsdf --no-body-seeds   ablations of the paper\n"
-  "  --dihedral-quantile 90   --smoothing-iterations 1\n"
-  "  --min-patch-size 0.001   --max-patch-size 0.0005  (fractions of the mesh area)\n"
+  "  --dihedral-percentile 90   --smoothing-iterations 1\n"
+  "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
   "  --vote-temperature 1     voxels of the finest grid\n"
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n";
 
@@ -230,10 +230,10 @@ Options parse(int argc, char** argv)
     else if(a == "--no-sheet-merge") o.merge_sheets = false;
     else if(a == "--no-tsdf") o.use_tsdf = false;
     else if(a == "--no-body-seeds") o.use_body_seeds = false;
-    else if(a == "--dihedral-quantile") o.dihedral_quantile = to_number(a, value());
+    else if(a == "--dihedral-percentile" || a == "--dihedral-quantile") o.dihedral_percentile = to_number(a, value());
     else if(a == "--smoothing-iterations") o.smoothing_iterations = to_count(a, value());
     else if(a == "--min-patch-size") o.min_patch_size = to_number(a, value());
-    else if(a == "--max-patch-size") o.max_patch_size = to_number(a, value());
+    else if(a == "--patch-split-size" || a == "--max-patch-size") o.patch_split_size = to_number(a, value());
     else if(a == "--vote-temperature") o.vote_temperature = to_number(a, value());
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
@@ -327,9 +327,9 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::coverage_target(o.coverage), PDP::roi_radius(o.roi_radius),
                  PDP::interior_weight_mode(o.interior_weight), PDP::maximum_number_of_primitives(o.max_primitives),
                  PDP::use_freeze_zone(o.use_freeze), PDP::use_tsdf_guidance(o.use_tsdf),
-                 PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_quantile(o.dihedral_quantile),
+                 PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_percentile(o.dihedral_percentile),
                  PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
-                 PDP::maximum_patch_size(o.max_patch_size), PDP::vote_temperature(o.vote_temperature),
+                 PDP::patch_split_size(o.patch_split_size), PDP::vote_temperature(o.vote_temperature),
                  PDP::merge_thin_sheets(o.merge_sheets),
                  PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
                  PDP::stage_timings(&r.timings)));

@@ -51,9 +51,9 @@ std::vector<std::size_t> patches_of(Mesh& m, std::size_t& count, double quantile
 {
   auto map = m.add_property_map<face_descriptor, std::size_t>("f:test_patch", 0).first;
   count = PD::over_segment(m, map,
-                           PD::parameters::combine(PD::parameters::dihedral_quantile(quantile),
+                           PD::parameters::combine(PD::parameters::dihedral_percentile(quantile),
                                                    PD::parameters::minimum_patch_size(min_size),
-                                                   PD::parameters::maximum_patch_size(max_size),
+                                                   PD::parameters::patch_split_size(max_size),
                                                    PD::parameters::smoothing_iterations(smoothing)));
   std::vector<std::size_t> out;
   for(face_descriptor f : faces(m)) out.push_back(map[f]);
@@ -206,7 +206,7 @@ TEST_CASE("a smooth sphere gives a few hundred compact patches", "[over_segmenta
   std::size_t count = 0;
   const std::vector<std::size_t> patch = patches_of(m, count);
   check_patch_structure(m, patch, count);
-  // every patch is below maximum_patch_size + minimum_patch_size of the area (up to a face)
+  // every patch is below patch_split_size + minimum_patch_size of the area (up to a face)
   // and the clean-up leaves none below minimum_patch_size after smoothing by more than a face
   std::map<std::size_t, double> area;
   double total = 0.;
@@ -322,9 +322,9 @@ TEST_CASE("invalid over-segmentation parameters throw", "[over_segmentation]")
 {
   Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
   auto map = m.add_property_map<face_descriptor, std::size_t>("f:x", 0).first;
-  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::dihedral_quantile(101.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::dihedral_percentile(101.)), PD::Invalid_input);
   CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::minimum_patch_size(-0.1)), PD::Invalid_input);
-  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::maximum_patch_size(0.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::patch_split_size(0.)), PD::Invalid_input);
   CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::smoothing_iterations(-1)), PD::Invalid_input);
 }
 

@@ -569,9 +569,9 @@ TEST_CASE("out-of-range named parameters give INVALID_PARAMETER before any work"
   for(double c : {0., 1.5, k_nan}) CHECK(bad(PDP::coverage_target(c)));
   for(double r : {0., -2., k_nan, k_inf}) CHECK(bad(PDP::roi_radius(r)));
   CHECK(bad(PDP::maximum_number_of_primitives(std::size_t(0))));
-  for(double q : {-1., 101., k_nan}) CHECK(bad(PDP::dihedral_quantile(q)));
+  for(double q : {-1., 101., k_nan}) CHECK(bad(PDP::dihedral_percentile(q)));
   for(double s : {-0.1, 2., k_nan}) CHECK(bad(PDP::minimum_patch_size(s)));
-  for(double s : {0., 2., k_nan}) CHECK(bad(PDP::maximum_patch_size(s)));
+  for(double s : {0., 2., k_nan}) CHECK(bad(PDP::patch_split_size(s)));
   CHECK(bad(PDP::smoothing_iterations(-1)));
   for(double t : {0., -1., k_nan, k_inf}) CHECK(bad(PDP::vote_temperature(t)));
 }
@@ -587,8 +587,8 @@ TEST_CASE("extreme but valid named parameters give a valid decomposition", "[rob
   valid("two coarse grids", PDP::voxel_resolutions(std::vector<int>{2, 4}));
   valid("one sample per face", CGAL::parameters::number_of_points_per_face(1u));
   valid("more neighbours than faces", PDP::number_of_neighbors(100000));
-  valid("lowest percentiles", PDP::combine(PDP::curvature_percentile(0.), PDP::dihedral_quantile(0.)));
-  valid("highest percentiles", PDP::combine(PDP::curvature_percentile(100.), PDP::dihedral_quantile(100.)));
+  valid("lowest percentiles", PDP::combine(PDP::curvature_percentile(0.), PDP::dihedral_percentile(0.)));
+  valid("highest percentiles", PDP::combine(PDP::curvature_percentile(100.), PDP::dihedral_percentile(100.)));
   valid("zero cue weights", PDP::cue_weights(std::array<double, 4>{{0., 0., 0., 0.}}));
   valid("huge cue weights", PDP::cue_weights(std::array<double, 4>{{1e300, 1e300, 1e300, 1e300}}));
   valid("tiny freeze ratio, no margin", PDP::combine(PDP::freeze_ratio(1e-9), PDP::normalization_margin(0.)));
@@ -604,9 +604,9 @@ TEST_CASE("extreme but valid named parameters give a valid decomposition", "[rob
   valid("no penalty, tiny ROI and coverage",
         PDP::combine(PDP::exterior_penalty(0.), PDP::roi_radius(1e-300), PDP::coverage_target(1e-300)));
   valid("one primitive", PDP::combine(PDP::maximum_number_of_primitives(std::size_t(1)), PDP::coverage_target(1.)));
-  valid("one patch", PDP::combine(PDP::minimum_patch_size(1.), PDP::maximum_patch_size(1.)));
+  valid("one patch", PDP::combine(PDP::minimum_patch_size(1.), PDP::patch_split_size(1.)));
   valid("tiny patches, long smoothing",
-        PDP::combine(PDP::minimum_patch_size(0.), PDP::maximum_patch_size(1e-300), PDP::smoothing_iterations(50)));
+        PDP::combine(PDP::minimum_patch_size(0.), PDP::patch_split_size(1e-300), PDP::smoothing_iterations(50)));
   valid("tiny vote temperature", PDP::vote_temperature(1e-300));
   valid("huge vote temperature", PDP::vote_temperature(1e300));
 }

@@ -540,7 +540,7 @@ are chained with `parameters::combine()`)
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
-  \cgalParamNBegin{dihedral_quantile}
+  \cgalParamNBegin{dihedral_percentile}
     \cgalParamDescription{\f$q\f$: the percentile of the dihedral angles above which edges are cut}
     \cgalParamType{`double`}
     \cgalParamDefault{`90`}
@@ -555,7 +555,7 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, in `[0, 1]`}
     \cgalParamDefault{`0.001`}
   \cgalParamNEnd
-  \cgalParamNBegin{maximum_patch_size}
+  \cgalParamNBegin{patch_split_size}
     \cgalParamDescription{the largest patch area the over-segmentation builds on smooth regions, as a fraction of the mesh area}
     \cgalParamType{`double`, in `(0, 1]`}
     \cgalParamDefault{`0.0005`}

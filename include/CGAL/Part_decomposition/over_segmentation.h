@@ -112,18 +112,18 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
                                    get_const_property_map(CGAL::vertex_point, tm));
   const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
 
-  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_quantile), defaults::dihedral_quantile);
+  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_percentile), defaults::dihedral_percentile);
   const double min_size =
       choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), defaults::minimum_patch_size);
   const double max_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::maximum_patch_size), defaults::maximum_patch_size);
+      choose_parameter(get_parameter(np, Part_decomposition::internal_np::patch_split_size), defaults::patch_split_size);
   const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), int(defaults::smoothing_iterations));
   if(!(q >= 0. && q <= 100.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_quantile must be in [0, 100]");
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_percentile must be in [0, 100]");
   if(!(min_size >= 0. && min_size <= 1.))
     throw Invalid_input(Input_error::INVALID_PARAMETER, "minimum_patch_size must be in [0, 1]");
   if(!(max_size > 0. && max_size <= 1.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "maximum_patch_size must be in (0, 1]");
+    throw Invalid_input(Input_error::INVALID_PARAMETER, "patch_split_size must be in (0, 1]");
   if(smoothing < 0)
     throw Invalid_input(Input_error::INVALID_PARAMETER, "smoothing_iterations must be non-negative");
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
@@ -203,20 +203,20 @@ The steps are:
 1. <b>Dihedral angles.</b> Each interior edge between faces of unit normals \f$n_1, n_2\f$ gets
    \f$s = \arccos\langle n_1, n_2\rangle\f$ in degrees, in \f$[0, 180]\f$. An edge incident to a
    face of zero area (no normal) gets \f$s = 180\f$ and takes no part in the distribution below.
-2. <b>Threshold.</b> \f$t\f$ is the `dihedral_quantile`-th percentile of the angles of the interior
+2. <b>Threshold.</b> \f$t\f$ is the `dihedral_percentile`-th percentile of the angles of the interior
    edges (each edge once), with linear interpolation between the closest ranks (position
    \f$(n-1)\,q/100\f$ in the sorted list).
 3. <b>Cut.</b> An edge is cut if \f$s \ge t\f$ (up to \f$10^{-6}\f$ degree of rounding) and
    \f$s > 0.05\f$ degree: ties at the quantile are cut (on a cube tessellated with two triangles per
    side, 12 of the 18 edges are creases and the 90-th percentile is 90 degrees), and flat edges
-   never are, even when more than `100 - dihedral_quantile` percent of the edges are flat. Edges
+   never are, even when more than `100 - dihedral_percentile` percent of the edges are flat. Edges
    incident to a face of zero area are always cut.
 4. <b>Flood fill.</b> The connected components of the faces across edges that are not cut
    (`CGAL::Polygon_mesh_processing::connected_components()`); border edges are never crossed.
 5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
    flood fill alone leaves one patch over most of an organic shape (measured: 1 to 55 patches on
    the Princeton benchmark shapes, where the paper reports 200 to 500). A component larger than
-   `maximum_patch_size` (\f$a_{max}\f$) times the area of the mesh is split by an ordered flood
+   `patch_split_size` (\f$a_{max}\f$) times the area of the mesh is split by an ordered flood
    fill: its uncut edges are crossed by increasing dihedral angle, joining the two sides unless
    the joined piece would have an area above \f$a_{max}\f$ or a squared radius of gyration (of
    its face centroids, area-weighted) above \f$0.2\,a_{max}\f$, so that compact pieces meet
@@ -272,7 +272,7 @@ clean-up, logarithmic in the number of patches.
                    `std::size_t` as value type}
     \cgalParamDefault{an automatically indexed internal map}
   \cgalParamNEnd
-  \cgalParamNBegin{dihedral_quantile}
+  \cgalParamNBegin{dihedral_percentile}
     \cgalParamDescription{the percentile \f$q\f$ of the dihedral angles above which edges are cut}
     \cgalParamType{`double`, in `[0, 100]`}
     \cgalParamDefault{`90`}
@@ -283,7 +283,7 @@ clean-up, logarithmic in the number of patches.
     \cgalParamType{`double`, in `[0, 1]`}
     \cgalParamDefault{`0.001`}
   \cgalParamNEnd
-  \cgalParamNBegin{maximum_patch_size}
+  \cgalParamNBegin{patch_split_size}
     \cgalParamDescription{the largest patch area the size cap lets the ordered flood fill build,
                           as a fraction of the area of the mesh; `1` disables the cap}
     \cgalParamType{`double`, in `(0, 1]`}

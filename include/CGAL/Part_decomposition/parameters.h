@@ -32,6 +32,7 @@ namespace Part_decomposition {
   X(curvature_percentile_t, curvature_percentile, curvature_percentile)              \
   X(cue_weights_t, cue_weights, cue_weights)                                         \
   X(freeze_ratio_t, freeze_ratio, freeze_ratio)                                      \
+  X(use_density_t, use_density, use_density)                                        \
   /* normalization and TSDF (App. E.2) */                                            \
   X(normalization_t, normalization, normalization)                                   \
   X(normalization_margin_t, normalization_margin, normalization_margin)              \
@@ -52,11 +53,17 @@ namespace Part_decomposition {
   X(use_freeze_zone_t, use_freeze_zone, use_freeze_zone)                             \
   X(use_tsdf_guidance_t, use_tsdf_guidance, use_tsdf_guidance)                       \
   X(use_body_seeds_t, use_body_seeds, use_body_seeds)                                \
+  X(fitting_resolution_cap_t, fitting_resolution_cap, fitting_resolution_cap)        \
+  X(use_exterior_band_samples_t, use_exterior_band_samples, use_exterior_band_samples) \
+  X(use_reachable_regions_t, use_reachable_regions, use_reachable_regions)          \
+  X(use_seed_exclusion_t, use_seed_exclusion, use_seed_exclusion)                    \
+  X(maximum_solver_evaluations_t, maximum_solver_evaluations, maximum_solver_evaluations) \
+  X(maximum_rejections_in_a_row_t, maximum_rejections_in_a_row, maximum_rejections_in_a_row) \
   /* over-segmentation and assignment (App. E.3, E.4) */                             \
-  X(dihedral_quantile_t, dihedral_quantile, dihedral_quantile)                       \
+  X(dihedral_percentile_t, dihedral_percentile, dihedral_percentile)                 \
   X(smoothing_iterations_t, smoothing_iterations, smoothing_iterations)              \
   X(minimum_patch_size_t, minimum_patch_size, minimum_patch_size)                    \
-  X(maximum_patch_size_t, maximum_patch_size, maximum_patch_size)                    \
+  X(patch_split_size_t, patch_split_size, patch_split_size)                          \
   X(vote_temperature_t, vote_temperature, vote_temperature)                          \
   X(merge_thin_sheets_t, merge_thin_sheets, merge_thin_sheets)                       \
   /* the one-call decomposition */                                                   \
@@ -82,6 +89,8 @@ constexpr double curvature_percentile = 99.5;
 constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
 /// \f$\alpha\f$, the Freeze ratio
 constexpr double freeze_ratio = 0.15;
+/// whether the topology score is weighted by the density term \f$\sqrt{n_i}\f$
+constexpr bool use_density = true;
 /// the free margin of the normalization, two voxels of the \f$64^3\f$ grid
 constexpr double normalization_margin = 2. / 64.;
 /// \f$\tau\f$, the truncation of the distance field, in voxels of the finest grid
@@ -105,14 +114,33 @@ constexpr double coverage_target = 0.999;
 constexpr double roi_radius = 8.;
 /// the most primitives a fit may accept
 constexpr std::size_t maximum_number_of_primitives = 256;
+/// whether the Freeze zone, TSDF guidance and body seeds are used (the paper's full method)
+constexpr bool use_freeze_zone = true;
+/// see `use_freeze_zone`
+constexpr bool use_tsdf_guidance = true;
+/// see `use_freeze_zone`
+constexpr bool use_body_seeds = true;
+/// the cap of the fitting resolution, \f$r_{fit} = \min(r, cap)\f$; 0 stands for the resolution
+/// before the finest (the paper's 32 for its resolutions 16, 32, 64)
+constexpr int fitting_resolution_cap = 0;
+/// whether the exterior voxels of the thin outer band are samples of the fit
+constexpr bool use_exterior_band_samples = true;
+/// whether regions of interest and claims stop at Freeze walls
+constexpr bool use_reachable_regions = true;
+/// whether a rejected seed excludes a ball around it from later seeds of its stage
+constexpr bool use_seed_exclusion = true;
+/// the residual evaluations of one least-squares solve
+constexpr int maximum_solver_evaluations = 40;
+/// the rejected seeds in a row that end a fitting stage (0: never)
+constexpr std::size_t maximum_rejections_in_a_row = 4;
 /// \f$q\f$, the dihedral percentile of the over-segmentation cut
-constexpr double dihedral_quantile = 90.;
+constexpr double dihedral_percentile = 90.;
 /// the boundary-smoothing iterations of the over-segmentation
 constexpr unsigned int smoothing_iterations = 1;
 /// the area below which a patch is merged into a neighbour, as a fraction of the mesh area
 constexpr double minimum_patch_size = 0.001;
-/// the area above which a patch is split, as a fraction of the mesh area
-constexpr double maximum_patch_size = 0.0005;
+/// the area above which a patch of smooth surface is split, as a fraction of the mesh area
+constexpr double patch_split_size = 0.0005;
 /// \f$\tau_v\f$, the temperature of the patch vote, in voxels of the finest grid
 constexpr double vote_temperature = 1.;
 /// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
@@ -151,6 +179,7 @@ package's parameters are:
 | `curvature_percentile()` | `double` | 99.5 | `compute_face_curvature_cue()` |
 | `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
 | `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
+| `use_density()` | `bool` | `true` | `compute_topology_score()` |
 | `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
 | `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
 | `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |
@@ -168,16 +197,24 @@ package's parameters are:
 | `use_freeze_zone()` | `bool` | `true` | `compute_fitting_zones()`, `fit_superquadrics()` |
 | `use_tsdf_guidance()` | `bool` | `true` | `fit_superquadrics()` |
 | `use_body_seeds()` | `bool` | `true` | `fit_superquadrics()` |
-| `dihedral_quantile()` | `double` | 90 | `over_segment()` |
+| `fitting_resolution_cap()` | `int` | 0 (the resolution before the finest) | `fitting_resolutions()`, `fit_superquadrics()` |
+| `use_exterior_band_samples()` | `bool` | `true` | `fit_superquadrics()` |
+| `use_reachable_regions()` | `bool` | `true` | `fit_superquadrics()` |
+| `use_seed_exclusion()` | `bool` | `true` | `fit_superquadrics()` |
+| `maximum_solver_evaluations()` | `int` | 40 | `fit_superquadrics()` |
+| `maximum_rejections_in_a_row()` | `std::size_t` | 4 | `fit_superquadrics()` |
+| `dihedral_percentile()` | `double` | 90 | `over_segment()` |
 | `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
-| `maximum_patch_size()` | `double` | 0.0005 | `over_segment()` |
+| `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
 | `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
+`dihedral_quantile()` and `maximum_patch_size()`, the former names of `dihedral_percentile()` and
+`patch_split_size()`, are deprecated and will be removed in the next release.
 \cgal's own parameters keep their names: `vertex_point_map`, `vertex_index_map`,
 `face_index_map`, `geom_traits`, `number_of_points_per_face` (36), `verbose`, and, for
 `evaluate_segmentation()`, `number_of_points_on_faces` and `random_seed`.
@@ -193,6 +230,20 @@ namespace parameters {
   }
 CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
 #undef CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION
+
+// Former names, kept for one release.
+template <typename T>
+[[deprecated("renamed dihedral_percentile()")]]
+CGAL::Named_function_parameters<T, internal_np::dihedral_percentile_t> dihedral_quantile(const T& t)
+{
+  return CGAL::Named_function_parameters<T, internal_np::dihedral_percentile_t>(t);
+}
+template <typename T>
+[[deprecated("renamed patch_split_size()")]]
+CGAL::Named_function_parameters<T, internal_np::patch_split_size_t> maximum_patch_size(const T& t)
+{
+  return CGAL::Named_function_parameters<T, internal_np::patch_split_size_t>(t);
+}
 /// \endcond
 
 /// returns `np` unchanged: the end of a `combine()` chain.

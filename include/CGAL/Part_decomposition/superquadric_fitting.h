@@ -8,6 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_SUPERQUADRIC_FITTING_H
 #define CGAL_PART_DECOMPOSITION_SUPERQUADRIC_FITTING_H
 
+#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/fitting_zones.h>
@@ -36,82 +37,7 @@
 namespace CGAL {
 namespace Part_decomposition {
 
-/*!
-\ingroup PkgPartDecompositionRef
-How FitSDF (paper Alg.\ A.3) sets the variance \f$\sigma^2\f$ of the Gaussian inlier weight of
-interior samples, \f$w = p/(C+p)\f$ with \f$p = e^{-r^2/2\sigma^2}\f$ and
-\f$C = w_o\sqrt{2\pi\sigma^2}/((1-w_o)\tau)\f$, \f$w_o = 0.99\f$ (inherited from MPS; the paper
-does not say how \f$\sigma^2\f$ is set).
-*/
-enum class Interior_weight_mode
-{
-  /// as MPS: after each of up to 4 solves (an outer pass stops early when the cost changes by
-  /// less than 0.1%), \f$\sigma^2 = \sum w r^2 / \sum w\f$ over the active samples and the
-  /// interior weights are recomputed at the new parameters. The first \f$\sigma^2\f$ is the
-  /// mean squared clipped residual at the initial parameters.
-  MPS_REESTIMATED,
-  /// \f$\sigma^2\f$ (the mean squared clipped residual) and the weights are computed once at the
-  /// initial parameters; one solve.
-  ONE_SHOT
-};
 
-/*!
-\ingroup PkgPartDecompositionRef
-The output of `fit_superquadrics()`: the accepted superquadrics in acceptance order, what they
-claimed on the finest grid of the prior, and statistics of the run. Primitive `k` is the `k`-th
-entry of every per-primitive vector.
-*/
-template <typename GeomTraits>
-struct Superquadric_fitting_result
-{
-  /// \name Primitives
-  /// @{
-
-  /// the accepted superquadrics in the coordinates of the normalized cube \f$[-0.5,0.5]^3\f$.
-  std::vector<Superquadric<GeomTraits> > primitives;
-  /// the same superquadrics in the input coordinates of the mesh (through `normalization`).
-  std::vector<Superquadric<GeomTraits> > input_primitives;
-  /// the resolution \f$r\f$ of the stage that accepted each primitive.
-  std::vector<int> stage_resolution;
-  /// whether each primitive grew from a body seed (EDT maximum) or a surface seed (component centroid).
-  std::vector<bool> body_seeded;
-  /// the seed voxel (linear index in the finest grid) of each primitive.
-  std::vector<std::size_t> seed_voxel;
-  /// the trust-region scale \f$\eta\f$ of the fit that passed the Flow-zone test.
-  std::vector<double> semi_axis_scale;
-  /// the FitSDF cost \f$\sum w r^2 / |P_a|\f$ of each accepted fit.
-  std::vector<double> fit_cost;
-  /// the finest-grid voxels of each primitive in `labels` (claimed, then merged residuals), in
-  /// increasing index.
-  std::vector<std::vector<std::size_t> > claimed_voxels;
-  /// @}
-
-  /// \name Grids
-  /// @{
-
-  /// on the finest grid of the prior: the primitive that claimed each voxel (hard-clipped claims
-  /// plus small residual regions merged into the nearest primitive), or -1.
-  Voxel_grid<std::int32_t> labels;
-  /// the map from input coordinates to the normalized cube (from the prior).
-  Normalization normalization;
-  /// @}
-
-  /// \name Statistics
-  /// @{
-  std::size_t number_of_seeds = 0;          ///< seeds tried
-  std::size_t number_of_body_seeds = 0;     ///< of which body seeds
-  std::size_t number_of_rejected_seeds = 0; ///< seeds rejected (all three sub-cases below)
-  std::size_t rejected_by_flow_zone = 0;    ///< every retry left the Flow zone
-  std::size_t rejected_by_volume = 0;       ///< the net claim was below \f$V_{min}\f$
-  std::size_t rejected_degenerate = 0;      ///< fewer active samples than parameters
-  std::size_t number_of_solves = 0;         ///< least-squares solves (FitSDF calls times outer passes)
-  std::size_t number_of_evaluations = 0;    ///< residual evaluations in all solves
-  std::size_t number_of_samples = 0;        ///< samples over all FitSDF calls
-  std::size_t merged_voxels = 0;            ///< residual voxels merged into a primitive
-  std::vector<double> stage_coverage;       ///< coverage of \f$\Omega_{valid}\f$ at the end of each stage
-  double seconds = 0.;                      ///< wall-clock time of the call
-  /// @}
-};
 
 namespace internal {
 

@@ -8,6 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_TSDF_H
 #define CGAL_PART_DECOMPOSITION_TSDF_H
 
+#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
@@ -41,58 +42,7 @@
 namespace CGAL {
 namespace Part_decomposition {
 
-/*!
-\ingroup PkgPartDecompositionRef
-How the sign of the distance field is decided, i.e.\ which voxel centres are inside the shape.
 
-The \em surface voxels below are the voxels whose (closed) box meets a triangle.
-
-- `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
-  number of times. Exact for closed meshes; meaningless for open ones, and a region covered
-  twice by self-intersecting parts counts as outside.
-- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al.\ 2013); a point is
-  inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
-  (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
-  integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
-  open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
-  the voxels next to the surface voxels; the other voxels take, by a flood fill that does not
-  cross surface voxels, the sign of the nearest evaluated voxel, and the surface voxels the sign
-  of an adjacent voxel centre they see without crossing a triangle (or their own evaluation):
-  holes are bridged as the winding number bridges them. Needs a consistent orientation of each
-  connected part.
-- `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
-  outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
-  centres it is joined to by a chain of at most three segments between adjacent centres that meet
-  no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
-  voxel but leaks through larger ones; closed hollow shells become solid.
-- `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
-  no costly self-intersection test, and robust on open ones.
-*/
-enum class Tsdf_sign_method
-{
-  AUTOMATIC,      ///< `WINDING_NUMBER`
-  INSIDE_TEST,    ///< ray parity (closed meshes only)
-  WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
-  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels
-};
-
-/*!
-\ingroup PkgPartDecompositionRef
-A truncated signed distance field \f$d_\mathcal{M}\f$ of a mesh sampled at the voxel centres of a
-grid of the normalized cube: negative inside, positive outside, clipped to
-\f$[-\tau, \tau]\f$.
-*/
-struct Truncated_signed_distance_field
-{
-  /// the signed distances in normalized units, clipped to `[-truncation, truncation]`.
-  Voxel_grid<double> values;
-  /// \f$\tau\f$ in normalized units.
-  double truncation = 0.;
-  /// the map from input coordinates to the normalized cube.
-  Normalization normalization;
-  /// the sign method actually used (never `AUTOMATIC`).
-  Tsdf_sign_method sign_method = Tsdf_sign_method::AUTOMATIC;
-};
 
 namespace internal {
 

@@ -1,0 +1,52 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PARAMETER_CHECKS_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_PARAMETER_CHECKS_H
+
+// The checks of the named parameters: one message format, "NAME must be RULE", for every stage.
+
+#include <CGAL/Part_decomposition/input_validation.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Throws Invalid_input (INVALID_PARAMETER) "NAME must be RULE" unless `ok`.
+inline void check_parameter(bool ok, const char* name, const char* rule)
+{
+  if(!ok) throw Invalid_input(Input_error::INVALID_PARAMETER, std::string(name) + " must be " + rule);
+}
+
+inline void check_positive(double x, const char* name)
+{
+  check_parameter(x > 0. && std::isfinite(x), name, "positive and finite");
+}
+
+inline void check_non_negative(double x, const char* name)
+{
+  check_parameter(x >= 0. && std::isfinite(x), name, "non-negative and finite");
+}
+
+// The one rule of `voxel_resolutions`: powers of two from 1 to 256, each twice the previous.
+inline void check_voxel_resolutions(const std::vector<int>& r)
+{
+  bool ok = !r.empty();
+  for(std::size_t l = 0; ok && l < r.size(); ++l)
+    ok = r[l] >= 1 && r[l] <= 256 && (r[l] & (r[l] - 1)) == 0 && (l == 0 || r[l] == 2 * r[l - 1]);
+  check_parameter(ok, "voxel_resolutions", "a non-empty list of powers of two from 1 to 256, each twice the previous");
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_PARAMETER_CHECKS_H

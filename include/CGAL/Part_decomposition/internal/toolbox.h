@@ -1,0 +1,171 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_TOOLBOX_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_TOOLBOX_H
+
+// The small tools every stage uses: parallel loops, a 3D vector, quantiles, voxel neighbours.
+
+#include <CGAL/assertions.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#endif
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// ---- Parallel loops
+
+template <typename ConcurrencyTag>
+constexpr bool is_parallel_tag()
+{
+  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+}
+
+template <typename ConcurrencyTag>
+void static_check_concurrency_tag()
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  CGAL_static_assertion_msg(!is_parallel_tag<ConcurrencyTag>(),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+}
+
+// Calls f(begin, end) on chunks of [0, n) whose split is left to TBB (at least `grain` items
+// each): for loops whose items write only to slots they own, so the split does not matter.
+template <typename ConcurrencyTag, typename F>
+void for_each_range(std::size_t n, const F& f, std::size_t grain = 1)
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+  if(n == 0) return;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel_tag<ConcurrencyTag>() && n > grain)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, (std::max)(grain, std::size_t(1))),
+                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  f(std::size_t(0), n);
+}
+
+// Calls f(begin, end) on the blocks [b*block_size, min(n, (b+1)*block_size)). The blocks do not
+// depend on the number of threads, so a caller that keeps one result per block and merges the
+// blocks in order gets the same bits with any number of threads.
+template <typename ConcurrencyTag, typename F>
+void for_each_block(std::size_t n, std::size_t block_size, const F& f)
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+  if(n == 0) return;
+  block_size = (std::max)(block_size, std::size_t(1));
+  const std::size_t number_of_blocks = (n + block_size - 1) / block_size;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel_tag<ConcurrencyTag>() && number_of_blocks > 1)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, number_of_blocks, 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for(std::size_t b = range.begin(); b != range.end(); ++b)
+                          f(b * block_size, (std::min)(n, (b + 1) * block_size));
+                      });
+    return;
+  }
+#endif
+  for(std::size_t b = 0; b < number_of_blocks; ++b)
+    f(b * block_size, (std::min)(n, (b + 1) * block_size));
+}
+
+// Runs `f` and `g`, as two tasks when `ConcurrencyTag` is parallel (each may run parallel loops:
+// a thread idle in one joins the other), else `f` then `g`. An exception of either is rethrown.
+template <typename ConcurrencyTag, typename F, typename G>
+void run_side_by_side(const F& f, const G& g)
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel_tag<ConcurrencyTag>())
+  {
+    tbb::parallel_invoke(f, g);
+    return;
+  }
+#endif
+  f();
+  g();
+}
+
+// ---- 3D vectors of doubles (the inner loops work on plain arrays, not on kernel objects)
+
+typedef std::array<double, 3> Vec3;
+
+inline Vec3 sub3(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross3(const Vec3& a, const Vec3& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+
+// ---- Quantiles, with linear interpolation between order statistics (numpy's default)
+
+// The value at fractional rank h in [0, n-1] of `values` (reordered). 0 if empty.
+inline double value_at_rank(std::vector<double>& values, double h)
+{
+  if(values.empty()) return 0.;
+  const std::size_t n = values.size();
+  const std::size_t lo = (std::min)(n - 1, std::size_t(std::floor(h)));
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(lo), values.end());
+  const double v_lo = values[lo];
+  if(lo + 1 >= n) return v_lo;
+  const double v_hi = *std::min_element(values.begin() + std::ptrdiff_t(lo + 1), values.end());
+  const double t = h - double(lo);
+  // the clamp keeps rounding from putting the result above the next order statistic
+  return t > 0. ? (std::min)(v_hi, v_lo + t * (v_hi - v_lo)) : v_lo;
+}
+
+// The q-quantile, q in [0, 1].
+inline double linear_quantile(std::vector<double>& values, double q)
+{
+  return value_at_rank(values, double(values.empty() ? 0 : values.size() - 1) * q);
+}
+
+// The p-th percentile, p in [0, 100] (rank computed as (n-1) p / 100, not (n-1) (p / 100)).
+inline double percentile(std::vector<double>& values, double p)
+{
+  return value_at_rank(values, double(values.empty() ? 0 : values.size() - 1) * p / 100.);
+}
+
+// ---- Voxel neighbours
+
+// Calls f(neighbour) for the 6-neighbours of voxel `v` of an r^3 grid stored x fastest, in the
+// order -x, +x, -y, +y, -z, +z.
+template <typename F>
+void for_each_face_neighbor(std::size_t v, std::size_t r, const F& f)
+{
+  const std::size_t i = v % r, j = (v / r) % r, k = v / (r * r);
+  if(i > 0) f(v - 1);
+  if(i + 1 < r) f(v + 1);
+  if(j > 0) f(v - r);
+  if(j + 1 < r) f(v + r);
+  if(k > 0) f(v - r * r);
+  if(k + 1 < r) f(v + r * r);
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_TOOLBOX_H

@@ -1,0 +1,238 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_STAGE_RESULTS_H
+#define CGAL_PART_DECOMPOSITION_STAGE_RESULTS_H
+
+// The results of the stages, without the code that computes them: a header that only passes
+// results on (the fitter reads the prior and the distance field) includes this one.
+
+#include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/normalization.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+
+/*!
+\ingroup PkgPartDecompositionRef
+The voxel cues, the topology score \f$S_B\f$ (paper Eq.\ 3) and its Flow/Freeze cut (Eq.\ 4, 5) at
+one resolution `r`. Grids have resolution `r`; empty voxels (no sample) hold 0 and are not part of
+the field.
+*/
+struct Topology_score_field
+{
+  /// the resolution `r`.
+  int resolution = 0;
+  /// \f$n_i\f$: the number of surface samples in each voxel.
+  Voxel_grid<std::uint32_t> sample_count;
+  /// \f$\mu^\kappa_i\f$: the mean of the face curvature cue over the samples of each voxel.
+  Voxel_grid<double> curvature_mean;
+  /// \f$\sigma^\kappa_i\f$: the standard deviation of the face curvature cue in each voxel.
+  Voxel_grid<double> curvature_deviation;
+  /// \f$\Delta^\kappa_i\f$: the magnitude of the gradient of the dense \f$\mu^\kappa\f$ field
+  /// (unit voxel spacing).
+  Voxel_grid<double> curvature_gradient;
+  /// \f$\phi_{norm}\f$: the mean normal deviation of the samples of each voxel.
+  Voxel_grid<double> normal_deviation;
+  /// \f$S_B\f$: the topology score.
+  Voxel_grid<double> score;
+  /// the Flow/Freeze cut: `FREEZE` where \f$S_B \geq \tau_\alpha\f$, `FLOW` elsewhere in the field.
+  Voxel_grid<Voxel_class> classes;
+  /// \f$\tau_\alpha\f$: the \f$(1-\alpha)\f$-quantile of the score over the active voxels.
+  double threshold = 0.;
+  /// the number of voxels with at least one sample.
+  std::size_t number_of_active_voxels = 0;
+  /// the number of `FREEZE` voxels.
+  std::size_t number_of_freeze_voxels = 0;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+The hierarchical Flow/Freeze prior (paper Sec.\ 3.2, App.\ E.1): the per-resolution topology
+score fields, fused on an octree and projected on the finest grid.
+*/
+struct Hierarchical_prior
+{
+  /// the resolutions, coarse to fine, each twice the previous one (default 16, 32, 64).
+  std::vector<int> resolutions;
+  /// the score field and Flow/Freeze cut at each resolution, in the order of `resolutions`.
+  std::vector<Topology_score_field> fields;
+  /// the class of the fused leaf that contains each voxel of the finest grid; `EMPTY` outside
+  /// the surface support of the finest grid.
+  Voxel_grid<Voxel_class> classes;
+  /// \f$\mathcal{R}_{map}\f$: the resolution of the fused leaf that contains each voxel of the
+  /// finest grid, 0 for empty voxels.
+  Voxel_grid<std::uint16_t> leaf_resolution;
+  /// the number of `FLOW` leaves of the fused octree at each resolution.
+  std::vector<std::size_t> number_of_flow_leaves;
+  /// the number of `FREEZE` leaves of the fused octree at each resolution.
+  std::vector<std::size_t> number_of_freeze_leaves;
+  /// the map from input coordinates to the normalized cube the grids live in.
+  Normalization normalization;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+How the sign of the distance field is decided, i.e.\ which voxel centres are inside the shape.
+
+The \em surface voxels below are the voxels whose (closed) box meets a triangle.
+
+- `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
+  number of times. Exact for closed meshes; meaningless for open ones, and a region covered
+  twice by self-intersecting parts counts as outside.
+- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al.\ 2013); a point is
+  inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
+  (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
+  integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
+  open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
+  the voxels next to the surface voxels; the other voxels take, by a flood fill that does not
+  cross surface voxels, the sign of the nearest evaluated voxel, and the surface voxels the sign
+  of an adjacent voxel centre they see without crossing a triangle (or their own evaluation):
+  holes are bridged as the winding number bridges them. Needs a consistent orientation of each
+  connected part.
+- `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
+  outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
+  centres it is joined to by a chain of at most three segments between adjacent centres that meet
+  no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
+  voxel but leaks through larger ones; closed hollow shells become solid.
+- `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
+  no costly self-intersection test, and robust on open ones.
+*/
+enum class Tsdf_sign_method
+{
+  AUTOMATIC,      ///< `WINDING_NUMBER`
+  INSIDE_TEST,    ///< ray parity (closed meshes only)
+  WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
+  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+A truncated signed distance field \f$d_\mathcal{M}\f$ of a mesh sampled at the voxel centres of a
+grid of the normalized cube: negative inside, positive outside, clipped to
+\f$[-\tau, \tau]\f$.
+*/
+struct Truncated_signed_distance_field
+{
+  /// the signed distances in normalized units, clipped to `[-truncation, truncation]`.
+  Voxel_grid<double> values;
+  /// \f$\tau\f$ in normalized units.
+  double truncation = 0.;
+  /// the map from input coordinates to the normalized cube.
+  Normalization normalization;
+  /// the sign method actually used (never `AUTOMATIC`).
+  Tsdf_sign_method sign_method = Tsdf_sign_method::AUTOMATIC;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+The volumetric zones that constrain the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2
+lines 1-4), on the finest grid of the prior. Masks hold 1 inside the zone and 0 outside.
+*/
+struct Fitting_zones
+{
+  /// the carrier: `FLOW` or `FREEZE` voxels of the prior.
+  Voxel_grid<std::uint8_t> occupied;
+  /// `ext_void`: the complement of the hole-filled carrier, the exterior of the shape.
+  Voxel_grid<std::uint8_t> exterior;
+  /// \f$\Omega_{freeze}\f$: the `FREEZE` voxels and the exterior.
+  Voxel_grid<std::uint8_t> freeze_zone;
+  /// \f$\Omega_{flow}\f$ for each fitting resolution \f$r_{fit}\f$: the non-exterior voxels
+  /// dilated by the Flow-zone tolerance (in voxels of \f$r_{fit}\f$).
+  std::map<int, Voxel_grid<std::uint8_t> > flow_zone;
+  /// for each fitting resolution, the Euclidean distance (normalized units) from each voxel of the
+  /// Flow zone to the nearest voxel outside it; 0 outside the zone.
+  std::map<int, Voxel_grid<double> > flow_zone_distance;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+How FitSDF (paper Alg.\ A.3) sets the variance \f$\sigma^2\f$ of the Gaussian inlier weight of
+interior samples, \f$w = p/(C+p)\f$ with \f$p = e^{-r^2/2\sigma^2}\f$ and
+\f$C = w_o\sqrt{2\pi\sigma^2}/((1-w_o)\tau)\f$, \f$w_o = 0.99\f$ (inherited from MPS; the paper
+does not say how \f$\sigma^2\f$ is set).
+*/
+enum class Interior_weight_mode
+{
+  /// as MPS: after each of up to 4 solves (an outer pass stops early when the cost changes by
+  /// less than 0.1%), \f$\sigma^2 = \sum w r^2 / \sum w\f$ over the active samples and the
+  /// interior weights are recomputed at the new parameters. The first \f$\sigma^2\f$ is the
+  /// mean squared clipped residual at the initial parameters.
+  MPS_REESTIMATED,
+  /// \f$\sigma^2\f$ (the mean squared clipped residual) and the weights are computed once at the
+  /// initial parameters; one solve.
+  ONE_SHOT
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+The output of `fit_superquadrics()`: the accepted superquadrics in acceptance order, what they
+claimed on the finest grid of the prior, and statistics of the run. Primitive `k` is the `k`-th
+entry of every per-primitive vector.
+*/
+template <typename GeomTraits>
+struct Superquadric_fitting_result
+{
+  /// \name Primitives
+  /// @{
+
+  /// the accepted superquadrics in the coordinates of the normalized cube \f$[-0.5,0.5]^3\f$.
+  std::vector<Superquadric<GeomTraits> > primitives;
+  /// the same superquadrics in the input coordinates of the mesh (through `normalization`).
+  std::vector<Superquadric<GeomTraits> > input_primitives;
+  /// the resolution \f$r\f$ of the stage that accepted each primitive.
+  std::vector<int> stage_resolution;
+  /// whether each primitive grew from a body seed (EDT maximum) or a surface seed (component centroid).
+  std::vector<bool> body_seeded;
+  /// the seed voxel (linear index in the finest grid) of each primitive.
+  std::vector<std::size_t> seed_voxel;
+  /// the trust-region scale \f$\eta\f$ of the fit that passed the Flow-zone test.
+  std::vector<double> semi_axis_scale;
+  /// the FitSDF cost \f$\sum w r^2 / |P_a|\f$ of each accepted fit.
+  std::vector<double> fit_cost;
+  /// the finest-grid voxels of each primitive in `labels` (claimed, then merged residuals), in
+  /// increasing index.
+  std::vector<std::vector<std::size_t> > claimed_voxels;
+  /// @}
+
+  /// \name Grids
+  /// @{
+
+  /// on the finest grid of the prior: the primitive that claimed each voxel (hard-clipped claims
+  /// plus small residual regions merged into the nearest primitive), or -1.
+  Voxel_grid<std::int32_t> labels;
+  /// the map from input coordinates to the normalized cube (from the prior).
+  Normalization normalization;
+  /// @}
+
+  /// \name Statistics
+  /// @{
+  std::size_t number_of_seeds = 0;          ///< seeds tried
+  std::size_t number_of_body_seeds = 0;     ///< of which body seeds
+  std::size_t number_of_rejected_seeds = 0; ///< seeds rejected (all three sub-cases below)
+  std::size_t rejected_by_flow_zone = 0;    ///< every retry left the Flow zone
+  std::size_t rejected_by_volume = 0;       ///< the net claim was below \f$V_{min}\f$
+  std::size_t rejected_degenerate = 0;      ///< fewer active samples than parameters
+  std::size_t number_of_solves = 0;         ///< least-squares solves (FitSDF calls times outer passes)
+  std::size_t number_of_evaluations = 0;    ///< residual evaluations in all solves
+  std::size_t number_of_samples = 0;        ///< samples over all FitSDF calls
+  std::size_t merged_voxels = 0;            ///< residual voxels merged into a primitive
+  std::vector<double> stage_coverage;       ///< coverage of \f$\Omega_{valid}\f$ at the end of each stage
+  double seconds = 0.;                      ///< wall-clock time of the call
+  /// @}
+};
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_STAGE_RESULTS_H
