@@ -77,6 +77,13 @@ struct Options
   std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
   bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
   bool merge_sheets = PD::defaults::merge_thin_sheets;
+  bool use_density = PD::defaults::use_density;
+  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
+  bool exterior_band = PD::defaults::use_exterior_band_samples;
+  bool reachable_regions = PD::defaults::use_reachable_regions;
+  bool seed_exclusion = PD::defaults::use_seed_exclusion;
+  int solver_evaluations = PD::defaults::maximum_solver_evaluations;
+  std::size_t rejections_in_a_row = PD::defaults::maximum_rejections_in_a_row;
   double dihedral_percentile = PD::defaults::dihedral_percentile;
   unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
   double min_patch_size = PD::defaults::minimum_patch_size;
@@ -121,7 +128,10 @@ const char* const usage_text =
   "  --exterior-penalty 5     --coverage 0.999    --roi-radius 8\n"
   "  --interior-weight M      one-shot or mps\n"
   "  --max-primitives 256\n"
-  "  --no-freeze --no-tsdf --no-body-seeds   ablations of the paper\n"
+  "  --no-freeze --no-tsdf --no-body-seeds --no-density   ablations of the paper\n"
+  "  --fitting-resolution-cap 0   r_fit = min(r, cap); 0: the resolution before the finest\n"
+  "  --no-exterior-band --no-reachable-regions --no-seed-exclusion\n"
+  "  --max-solver-evaluations 40   --max-rejections-in-a-row 4 (0: never)\n"
   "  --dihedral-percentile 90   --smoothing-iterations 1\n"
   "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
   "  --vote-temperature 1     voxels of the finest grid\n"
@@ -228,6 +238,13 @@ Options parse(int argc, char** argv)
     else if(a == "--max-primitives") o.max_primitives = to_count(a, value());
     else if(a == "--no-freeze") o.use_freeze = false;
     else if(a == "--no-sheet-merge") o.merge_sheets = false;
+    else if(a == "--no-density") o.use_density = false;
+    else if(a == "--fitting-resolution-cap") o.fitting_resolution_cap = int(to_count(a, value()));
+    else if(a == "--no-exterior-band") o.exterior_band = false;
+    else if(a == "--no-reachable-regions") o.reachable_regions = false;
+    else if(a == "--no-seed-exclusion") o.seed_exclusion = false;
+    else if(a == "--max-solver-evaluations") o.solver_evaluations = int(to_count(a, value()));
+    else if(a == "--max-rejections-in-a-row") o.rejections_in_a_row = to_count(a, value());
     else if(a == "--no-tsdf") o.use_tsdf = false;
     else if(a == "--no-body-seeds") o.use_body_seeds = false;
     else if(a == "--dihedral-percentile" || a == "--dihedral-quantile") o.dihedral_percentile = to_number(a, value());
@@ -330,7 +347,11 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_percentile(o.dihedral_percentile),
                  PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
                  PDP::patch_split_size(o.patch_split_size), PDP::vote_temperature(o.vote_temperature),
-                 PDP::merge_thin_sheets(o.merge_sheets),
+                 PDP::merge_thin_sheets(o.merge_sheets), PDP::use_density(o.use_density),
+                 PDP::fitting_resolution_cap(o.fitting_resolution_cap),
+                 PDP::use_exterior_band_samples(o.exterior_band), PDP::use_reachable_regions(o.reachable_regions),
+                 PDP::use_seed_exclusion(o.seed_exclusion), PDP::maximum_solver_evaluations(o.solver_evaluations),
+                 PDP::maximum_rejections_in_a_row(o.rejections_in_a_row),
                  PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
                  PDP::stage_timings(&r.timings)));
   r.face_part.assign(part.begin(), part.end());
