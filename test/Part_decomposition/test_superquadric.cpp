@@ -595,9 +595,9 @@ PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prio
   tsdf.values = d;
   tsdf.truncation = tau;
   const PD::Fitting_zones zones = synthetic_zones(prior);
-  return PDI::fit_superquadrics_in_zones<CGAL::Sequential_tag, K>(
-    prior, tsdf, zones, {16, 32, 64}, {16, 32, 32}, {1., 0.5, 0.25}, 1.5, 5., 3., 5., 0.95, 8., mode, 256, true, true,
-    true, verbose);
+  namespace P = PD::parameters;
+  return PD::fit_superquadrics<CGAL::Sequential_tag, K>(
+    prior, tsdf, zones, P::combine(P::coverage_target(0.95), P::interior_weight_mode(mode), CGAL::parameters::verbose(verbose)));
 }
 
 } // namespace
