@@ -595,9 +595,9 @@ PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prio
   tsdf.values = d;
   tsdf.truncation = tau;
   const PD::Fitting_zones zones = synthetic_zones(prior);
-  return PDI::fit_superquadrics_in_zones<CGAL::Sequential_tag, K>(
-    prior, tsdf, zones, {16, 32, 64}, {16, 32, 32}, {1., 0.5, 0.25}, 1.5, 5., 3., 5., 0.95, 8., mode, 256, true, true,
-    true, verbose);
+  namespace P = PD::parameters;
+  return PD::fit_superquadrics<CGAL::Sequential_tag, K>(
+    prior, tsdf, zones, P::combine(P::coverage_target(0.95), P::interior_weight_mode(mode), CGAL::parameters::verbose(verbose)));
 }
 
 } // namespace
@@ -751,4 +751,244 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
   CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::roi_radius(0.)), PD::Invalid_input);
   CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::maximum_number_of_primitives(std::size_t(0))), PD::Invalid_input);
   CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, P::exterior_penalty(-1.)), PD::Invalid_input);
+}
+
+namespace {
+
+// A box of half-sizes (0.3, 0.15, 0.15) on a 32-grid, with resolutions {16, 32}: the carrier
+// (voxels within half a diagonal of the surface) is Flow with R_map = 16, the interior has
+// R_map = 0; with `wall`, every voxel of the hull with |x| < 1/32 (a slab two voxels thick, across
+// the whole section) is Freeze with R_map = 32.
+struct Box_case
+{
+  PD::Hierarchical_prior prior;
+  PD::Truncated_signed_distance_field tsdf;
+};
+
+Box_case box_case(bool wall, std::vector<int> resolutions = {16, 32})
+{
+  const int r = 32;
+  const double tau = 8. / r;
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  Box_case out;
+  out.tsdf.values = superquadric_tsdf({SQ({{0.3, 0.15, 0.15}}, 0.1, 0.1, I, Point(0., 0., 0.))}, r, tau);
+  out.tsdf.truncation = tau;
+  const PD::Voxel_grid<double>& d = out.tsdf.values;
+  PD::Hierarchical_prior& prior = out.prior;
+  prior.resolutions = resolutions;
+  prior.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
+  prior.leaf_resolution = PD::Voxel_grid<std::uint16_t>(r, 0);
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    const bool carrier = std::abs(d[i]) <= 0.87 / r;
+    if(wall && d[i] <= 0.87 / r && std::abs(d.center(i)[0]) < 1. / r)
+    {
+      prior.classes[i] = PD::Voxel_class::FREEZE;
+      prior.leaf_resolution[i] = std::uint16_t(r);
+    }
+    else if(carrier)
+    {
+      prior.classes[i] = PD::Voxel_class::FLOW;
+      prior.leaf_resolution[i] = std::uint16_t(resolutions.front());
+    }
+  }
+  return out;
+}
+
+typedef PD::Superquadric_fitting_result<K> Fit;
+
+void check_same_fit(const Fit& a, const Fit& b)
+{
+  CHECK(a.labels == b.labels);
+  REQUIRE(a.primitives.size() == b.primitives.size());
+  for(std::size_t k = 0; k < a.primitives.size(); ++k)
+  {
+    CHECK(a.primitives[k].scales() == b.primitives[k].scales());
+    CHECK(a.primitives[k].rotation() == b.primitives[k].rotation());
+    CHECK(a.primitives[k].center() == b.primitives[k].center());
+  }
+  CHECK(a.stage_resolution == b.stage_resolution);
+  CHECK(a.body_seeded == b.body_seeded);
+  CHECK(a.seed_voxel == b.seed_voxel);
+  CHECK(a.semi_axis_scale == b.semi_axis_scale);
+  CHECK(a.fit_cost == b.fit_cost);
+  CHECK(a.claimed_voxels == b.claimed_voxels);
+  CHECK(a.number_of_seeds == b.number_of_seeds);
+  CHECK(a.number_of_body_seeds == b.number_of_body_seeds);
+  CHECK(a.number_of_rejected_seeds == b.number_of_rejected_seeds);
+  CHECK(a.rejected_by_flow_zone == b.rejected_by_flow_zone);
+  CHECK(a.rejected_by_volume == b.rejected_by_volume);
+  CHECK(a.rejected_degenerate == b.rejected_degenerate);
+  CHECK(a.number_of_solves == b.number_of_solves);
+  CHECK(a.number_of_evaluations == b.number_of_evaluations);
+  CHECK(a.number_of_samples == b.number_of_samples);
+  CHECK(a.merged_voxels == b.merged_voxels);
+  CHECK(a.stage_coverage == b.stage_coverage);
+}
+
+// Whether some primitive claims voxels on both sides of the plane x = 0.
+bool some_claim_crosses_the_wall(const Fit& fit)
+{
+  for(const std::vector<std::size_t>& voxels : fit.claimed_voxels)
+  {
+    bool left = false, right = false;
+    for(std::size_t v : voxels) (fit.labels.center(v)[0] < 0. ? left : right) = true;
+    if(left && right) return true;
+  }
+  return false;
+}
+
+} // namespace
+
+TEST_CASE("fit_superquadrics and compute_fitting_zones: default named parameters are the defaults", "[sdfsqfit]")
+{
+  namespace P = PD::parameters;
+  namespace D = PD::defaults;
+  const Box_case c = box_case(true);
+  const auto explicit_zone_parameters = P::combine(P::flow_zone_tolerance(D::flow_zone_tolerance),
+                                                   P::use_freeze_zone(D::use_freeze_zone));
+  const std::vector<int> fit_res = PD::fitting_resolutions(c.prior.resolutions);
+  const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior.classes, fit_res);
+  const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior.classes, fit_res, explicit_zone_parameters);
+  CHECK(z1.occupied == z2.occupied);
+  CHECK(z1.exterior == z2.exterior);
+  CHECK(z1.freeze_zone == z2.freeze_zone);
+  CHECK(z1.flow_zone == z2.flow_zone);
+  CHECK(z1.flow_zone_distance == z2.flow_zone_distance);
+
+  const Fit by_default = PD::fit_superquadrics<CGAL::Sequential_tag, K>(c.prior, c.tsdf);
+  const Fit given = PD::fit_superquadrics<CGAL::Sequential_tag, K>(
+    c.prior, c.tsdf,
+    P::combine(explicit_zone_parameters, P::trust_region_scales(D::trust_region_scales()),
+               P::body_seed_threshold(D::body_seed_threshold), P::minimum_body_volume(D::minimum_body_volume),
+               P::minimum_surface_volume(D::minimum_surface_volume), P::exterior_penalty(D::exterior_penalty),
+               P::coverage_target(D::coverage_target), P::roi_radius(D::roi_radius),
+               P::interior_weight_mode(PD::Interior_weight_mode::ONE_SHOT),
+               P::maximum_number_of_primitives(D::maximum_number_of_primitives),
+               P::use_tsdf_guidance(D::use_tsdf_guidance), P::use_body_seeds(D::use_body_seeds),
+               P::fitting_resolution_cap(D::fitting_resolution_cap),
+               P::use_exterior_band_samples(D::use_exterior_band_samples),
+               P::use_reachable_regions(D::use_reachable_regions), P::use_seed_exclusion(D::use_seed_exclusion),
+               P::maximum_solver_evaluations(D::maximum_solver_evaluations),
+               P::maximum_rejections_in_a_row(D::maximum_rejections_in_a_row), CGAL::parameters::verbose(false)));
+  REQUIRE(by_default.primitives.size() >= 2);
+  check_same_fit(by_default, given);
+}
+
+TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sdfsqfit]")
+{
+  namespace P = PD::parameters;
+  typedef CGAL::Sequential_tag Seq;
+
+  SECTION("use_reachable_regions: only the plain ball lets a claim cross a Freeze wall")
+  {
+    // The distance field sees one box; the Freeze slab splits it. The ball of the first seed
+    // holds both halves: without the reachable region, the fit sees the whole box.
+    const Box_case c = box_case(true);
+    const Fit reachable = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
+    const Fit ball = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::use_reachable_regions(false));
+    REQUIRE(reachable.primitives.size() >= 2);
+    CHECK_FALSE(some_claim_crosses_the_wall(reachable));
+    CHECK(some_claim_crosses_the_wall(ball));
+  }
+
+  // Every seed rejected (V_min above the grid's volume), one stage: the run is a sequence of body
+  // seeds at the EDT maxima of a fixed Omega_Body, and nothing else changes between seeds (the
+  // fits, cut short to keep the test fast, do not matter).
+  const Box_case c = box_case(false, {32});
+  auto all_rejected = [](const auto&... np) {
+    return P::combine(P::minimum_body_volume(1e9), P::minimum_surface_volume(1e9),
+                      P::trust_region_scales(std::vector<double>{1.}), P::maximum_solver_evaluations(1), np...);
+  };
+
+  SECTION("maximum_rejections_in_a_row and use_seed_exclusion")
+  {
+    const Fit never = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0)));
+    const Fit four = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(4)));
+    const Fit one = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(1)));
+    CHECK(never.primitives.empty());
+    CHECK(never.number_of_rejected_seeds == never.number_of_seeds);
+    REQUIRE(never.number_of_seeds > 4);
+    CHECK(four.number_of_seeds == 4);
+    CHECK(one.number_of_seeds == 1);
+    // Without exclusion balls, each rejection removes the seed voxel only: every voxel deep
+    // enough for a body seed is tried, while an exclusion ball (radius >= 1 voxel) removes at
+    // least the deepest voxel's neighbours, some of which are deep enough (the EDT is 1-Lipschitz
+    // and the box is more than one voxel deeper than the body-seed threshold).
+    const Fit seed_only = PD::fit_superquadrics<Seq, K>(
+      c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0), P::use_seed_exclusion(false)));
+    CHECK(seed_only.number_of_seeds > never.number_of_seeds);
+    CHECK(seed_only.number_of_body_seeds == seed_only.number_of_seeds);
+  }
+
+  SECTION("use_exterior_band_samples: the exterior band voxels are the only difference in the samples")
+  {
+    // One seed (the first is the same in both runs), a region of interest that covers the grid.
+    auto one_seed = [](bool band) {
+      return P::combine(P::maximum_number_of_primitives(1), P::maximum_rejections_in_a_row(1), P::roi_radius(16.),
+                        P::use_exterior_band_samples(band));
+    };
+    const Fit with_band = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(true));
+    const Fit without = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(false));
+    REQUIRE(with_band.number_of_seeds == 1);
+    REQUIRE(without.number_of_seeds == 1);
+    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, PD::fitting_resolutions({32}));
+    std::size_t band = 0;
+    for(std::size_t v = 0; v < zones.exterior.size(); ++v)
+      if(zones.exterior[v] && c.tsdf.values[v] < 1.5 / 32) ++band;
+    REQUIRE(band > 0);
+    CHECK(with_band.number_of_samples == without.number_of_samples + band);
+  }
+
+  SECTION("maximum_solver_evaluations bounds the evaluations of every solve")
+  {
+    const Fit by_default = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
+    const Fit two = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::maximum_solver_evaluations(2));
+    REQUIRE(by_default.number_of_solves > 0);
+    CHECK(by_default.number_of_evaluations > 2 * by_default.number_of_solves); // the bound is not idle
+    CHECK(two.number_of_solves > 0);
+    CHECK(two.number_of_evaluations <= 2 * two.number_of_solves);
+  }
+
+  SECTION("fitting_resolution_cap: r_fit = min(r, cap), in the zones and in the fit")
+  {
+    CHECK(PD::fitting_resolutions({16, 32, 64}, 32) == std::vector<int>{16, 32});
+    CHECK(PD::fitting_resolutions({32, 64, 128}, 32) == std::vector<int>{32});
+    CHECK(PD::fitting_resolutions({16, 32, 64}, 8) == std::vector<int>{8});
+    CHECK(PD::fitting_resolutions({8, 16}, 32) == std::vector<int>{8, 16});
+    CHECK(PD::fitting_resolutions({8, 16}) == std::vector<int>{8});
+    const Box_case b = box_case(true);
+    const PD::Fitting_zones default_zones = PD::compute_fitting_zones(b.prior.classes, PD::fitting_resolutions(b.prior.resolutions));
+    const PD::Fitting_zones capped_zones =
+      PD::compute_fitting_zones(b.prior.classes, PD::fitting_resolutions(b.prior.resolutions, 32));
+    // zones without r_fit = 32 are refused, zones with it give the fit that computes its own
+    CHECK_THROWS_AS(PD::fit_superquadrics(b.prior, b.tsdf, default_zones, P::fitting_resolution_cap(32)),
+                    PD::Invalid_input);
+    const Fit own = PD::fit_superquadrics<Seq, K>(b.prior, b.tsdf, P::fitting_resolution_cap(32));
+    const Fit given = PD::fit_superquadrics<Seq, K>(b.prior, b.tsdf, capped_zones, P::fitting_resolution_cap(32));
+    check_same_fit(own, given);
+    // semi-axes are bounded by rho = roi_radius / r_fit: 8/32 in the stage r = 32
+    for(std::size_t k = 0; k < own.primitives.size(); ++k)
+      for(int i = 0; i < 3; ++i)
+        CHECK(CGAL::to_double(own.primitives[k].scales()[i]) <= 8. / (std::min)(own.stage_resolution[k], 32) + 1e-12);
+  }
+}
+
+TEST_CASE("fit_superquadrics: out-of-range switches are refused by name", "[sdfsqfit]")
+{
+  namespace P = PD::parameters;
+  const Box_case c = box_case(false, {32});
+  auto fit = [&](const auto& np) { return PD::fit_superquadrics(c.prior, c.tsdf, np); };
+  CHECK_THROWS_AS(fit(P::fitting_resolution_cap(-1)), PD::Invalid_input);
+  CHECK_THROWS_WITH(fit(P::fitting_resolution_cap(-1)), Catch::Contains("fitting_resolution_cap"));
+  CHECK_THROWS_WITH(PD::fitting_resolutions({16, 32}, -2), Catch::Contains("fitting_resolution_cap"));
+  CHECK_THROWS_AS(fit(P::maximum_solver_evaluations(0)), PD::Invalid_input);
+  CHECK_THROWS_WITH(fit(P::maximum_solver_evaluations(0)), Catch::Contains("maximum_solver_evaluations"));
+  CHECK_THROWS_WITH(fit(P::maximum_solver_evaluations(-5)), Catch::Contains("maximum_solver_evaluations"));
+  CHECK_THROWS_AS(fit(P::maximum_rejections_in_a_row(-1)), PD::Invalid_input);
+  CHECK_THROWS_WITH(fit(P::maximum_rejections_in_a_row(-1)), Catch::Contains("maximum_rejections_in_a_row"));
+  CHECK_THROWS_WITH(fit(P::maximum_number_of_primitives(-1)), Catch::Contains("maximum_number_of_primitives"));
+  // the boolean switches have no out-of-range value; the older parameters name themselves too
+  CHECK_THROWS_WITH(fit(P::coverage_target(0.)), Catch::Contains("coverage_target"));
+  CHECK_THROWS_WITH(fit(P::flow_zone_tolerance(-1.)), Catch::Contains("flow_zone_tolerance"));
 }

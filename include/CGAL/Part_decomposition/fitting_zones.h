@@ -10,35 +10,99 @@
 
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
-#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
 
-
 namespace internal {
 
-// r_fit of each stage: min(r, the resolution before the finest), or half the only resolution.
-inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolutions)
+// r_fit of each stage: min(r, cap); a cap of 0 stands for the resolution before the finest, or
+// half the only resolution.
+inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolutions, int cap = 0)
 {
+  check_parameter(cap >= 0, "fitting_resolution_cap", "non-negative");
   std::vector<int> out;
   if(resolutions.empty()) return out;
-  const int cap = resolutions.size() >= 2 ? resolutions[resolutions.size() - 2]
-                                          : (std::max)(1, resolutions.back() / 2);
+  if(cap == 0)
+    cap = resolutions.size() >= 2 ? resolutions[resolutions.size() - 2] : (std::max)(1, resolutions.back() / 2);
   for(int r : resolutions) out.push_back((std::min)(r, cap));
   return out;
+}
+
+// The named parameters of compute_fitting_zones(), also read by fit_superquadrics().
+struct Fitting_zone_parameters
+{
+  double flow_zone_tolerance = defaults::flow_zone_tolerance;
+  bool use_freeze_zone = defaults::use_freeze_zone;
+};
+
+template <typename NamedParameters>
+Fitting_zone_parameters read_fitting_zone_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Fitting_zone_parameters p;
+  p.flow_zone_tolerance =
+    choose_parameter(get_parameter(np, internal_np::flow_zone_tolerance), defaults::flow_zone_tolerance);
+  p.use_freeze_zone = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), defaults::use_freeze_zone);
+  check_non_negative(p.flow_zone_tolerance, "flow_zone_tolerance");
+  return p;
+}
+
+// compute_fitting_zones() with its parameters read.
+template <typename ConcurrencyTag>
+Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes, const std::vector<int>& fitting_resolutions,
+                                    const Fitting_zone_parameters& parameters)
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+  for(int r_fit : fitting_resolutions) check_parameter(r_fit > 0, "fitting_resolutions", "positive");
+
+  const int r = classes.resolution();
+  Fitting_zones zones;
+  zones.occupied = Voxel_grid<std::uint8_t>(r, 0);
+  for(std::size_t i = 0; i < classes.size(); ++i)
+    zones.occupied[i] = classes[i] != Voxel_class::EMPTY ? 1 : 0;
+  zones.exterior = border_connected_complement(zones.occupied);
+  zones.freeze_zone = zones.exterior;
+  if(parameters.use_freeze_zone)
+    for(std::size_t i = 0; i < classes.size(); ++i)
+      if(classes[i] == Voxel_class::FREEZE) zones.freeze_zone[i] = 1;
+
+  // One distance transform of the hull serves every dilation radius.
+  const Voxel_grid<double> to_hull = squared_distance_transform<ConcurrencyTag>(complement(zones.exterior));
+  for(int r_fit : fitting_resolutions)
+  {
+    if(zones.flow_zone.count(r_fit) != 0) continue;
+    const double radius = parameters.flow_zone_tolerance * double(r) / double(r_fit);
+    const double limit = radius * radius * (1. + 1e-12) + 1e-9; // as in internal::dilate()
+    Voxel_grid<std::uint8_t> flow(r, 0), outside(r, 0);
+    for(std::size_t i = 0; i < flow.size(); ++i)
+    {
+      flow[i] = to_hull[i] <= limit ? 1 : 0;
+      outside[i] = 1 - flow[i];
+    }
+    const Voxel_grid<double> d2 = squared_distance_transform<ConcurrencyTag>(outside, true);
+    Voxel_grid<double> distance(r, 0.);
+    for(std::size_t i = 0; i < distance.size(); ++i)
+      if(flow[i] != 0) distance[i] = std::sqrt(d2[i]) / double(r);
+    zones.flow_zone.emplace(r_fit, std::move(flow));
+    zones.flow_zone_distance.emplace(r_fit, std::move(distance));
+  }
+  return zones;
 }
 
 } // namespace internal
@@ -46,14 +110,17 @@ inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolu
 /*!
 \ingroup PkgPartDecompositionRef
 returns the fitting resolutions \f$r_{fit}\f$ of the stages of a prior computed at `resolutions`
-(coarse to fine), without repetition, in stage order: \f$r_{fit} = \min(r, r_{L-1})\f$ with
-\f$r_{L-1}\f$ the resolution before the finest (paper: `{16, 32}` for `{16, 32, 64}`), or half the
-resolution if there is only one. These are the resolutions `fit_superquadrics()` needs zones at.
+(coarse to fine), without repetition, in stage order: \f$r_{fit} = \min(r, cap)\f$. A `cap` of 0
+(the default) stands for \f$r_{L-1}\f$, the resolution before the finest (`{16, 32}` for
+`{16, 32, 64}`), or half the resolution if there is only one; the paper's literal rule is
+`cap = 32`. These are the resolutions `fit_superquadrics()` needs zones at, with the same cap as
+its named parameter `fitting_resolution_cap`.
+\throws Invalid_input (`INVALID_PARAMETER`) if `cap` is negative.
 */
-inline std::vector<int> fitting_resolutions(const std::vector<int>& resolutions)
+inline std::vector<int> fitting_resolutions(const std::vector<int>& resolutions, int cap = 0)
 {
   std::vector<int> distinct;
-  for(int r_fit : internal::stage_fitting_resolutions(resolutions))
+  for(int r_fit : internal::stage_fitting_resolutions(resolutions, cap))
     if(std::find(distinct.begin(), distinct.end(), r_fit) == distinct.end()) distinct.push_back(r_fit);
   return distinct;
 }
@@ -116,52 +183,8 @@ Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes,
                                     const std::vector<int>& fitting_resolutions,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-#ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::flow_zone_tolerance), 2.0);
-  const bool use_freeze = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), true);
-  if(!(tolerance >= 0. && std::isfinite(tolerance)))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "flow_zone_tolerance must be finite and non-negative");
-  for(int r_fit : fitting_resolutions)
-    if(r_fit <= 0) throw Invalid_input(Input_error::INVALID_PARAMETER, "fitting resolutions must be positive");
-
-  const int r = classes.resolution();
-  Fitting_zones zones;
-  zones.occupied = Voxel_grid<std::uint8_t>(r, 0);
-  for(std::size_t i = 0; i < classes.size(); ++i)
-    zones.occupied[i] = classes[i] != Voxel_class::EMPTY ? 1 : 0;
-  zones.exterior = internal::border_connected_complement(zones.occupied);
-  zones.freeze_zone = zones.exterior;
-  if(use_freeze)
-    for(std::size_t i = 0; i < classes.size(); ++i)
-      if(classes[i] == Voxel_class::FREEZE) zones.freeze_zone[i] = 1;
-
-  // One distance transform of the hull serves every dilation radius.
-  const Voxel_grid<double> to_hull =
-    internal::squared_distance_transform<ConcurrencyTag>(internal::complement(zones.exterior));
-  for(int r_fit : fitting_resolutions)
-  {
-    if(zones.flow_zone.count(r_fit) != 0) continue;
-    const double radius = tolerance * double(r) / double(r_fit);
-    const double limit = radius * radius * (1. + 1e-12) + 1e-9; // as in internal::dilate()
-    Voxel_grid<std::uint8_t> flow(r, 0), outside(r, 0);
-    for(std::size_t i = 0; i < flow.size(); ++i)
-    {
-      flow[i] = to_hull[i] <= limit ? 1 : 0;
-      outside[i] = 1 - flow[i];
-    }
-    const Voxel_grid<double> d2 = internal::squared_distance_transform<ConcurrencyTag>(outside, true);
-    Voxel_grid<double> distance(r, 0.);
-    for(std::size_t i = 0; i < distance.size(); ++i)
-      if(flow[i] != 0) distance[i] = std::sqrt(d2[i]) / double(r);
-    zones.flow_zone.emplace(r_fit, std::move(flow));
-    zones.flow_zone_distance.emplace(r_fit, std::move(distance));
-  }
-  return zones;
+  return internal::compute_fitting_zones<ConcurrencyTag>(classes, fitting_resolutions,
+                                                         internal::read_fitting_zone_parameters(np));
 }
 
 } // namespace Part_decomposition

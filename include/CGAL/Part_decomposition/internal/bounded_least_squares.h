@@ -87,32 +87,9 @@ public:
     while(report.evaluations < options.maximum_evaluations)
     {
       bool frozen[N];
-      double pg = 0.;
-      for(int i = 0; i < N; ++i)
-      {
-        frozen[i] = (x[i] <= lb[i] && g[i] > 0.) || (x[i] >= ub[i] && g[i] < 0.);
-        if(!frozen[i]) pg = (std::max)(pg, std::abs(g[i]));
-      }
-      if(pg < options.gtol) break;
-
-      Matrix M = A;
-      Vector rhs = -g;
-      for(int i = 0; i < N; ++i)
-      {
-        const double s = options.scale[i];
-        M(i, i) += mu * (std::max)(A(i, i), 1e-12) / (s * s);
-      }
-      for(int i = 0; i < N; ++i)
-        if(frozen[i])
-        {
-          M.row(i).setZero();
-          M.col(i).setZero();
-          M(i, i) = 1.;
-          rhs[i] = 0.;
-        }
-      Eigen::LDLT<Matrix> ldlt(M);
-      Vector step = ldlt.solve(rhs);
-      if(ldlt.info() != Eigen::Success || !step.allFinite())
+      if(free_gradient_norm(x, g, lb, ub, frozen) < options.gtol) break;
+      Vector step;
+      if(!damped_step(A, g, frozen, mu, options, step))
       {
         mu *= nu;
         nu *= 2.;
@@ -171,6 +148,44 @@ public:
     return report;
   }
 
+private:
+  // Freezes the variables at a bound that the gradient pushes outward; returns the largest
+  // gradient component of the free ones.
+  static double free_gradient_norm(const Vector& x, const Vector& g, const Vector& lb, const Vector& ub, bool frozen[N])
+  {
+    double pg = 0.;
+    for(int i = 0; i < N; ++i)
+    {
+      frozen[i] = (x[i] <= lb[i] && g[i] > 0.) || (x[i] >= ub[i] && g[i] < 0.);
+      if(!frozen[i]) pg = (std::max)(pg, std::abs(g[i]));
+    }
+    return pg;
+  }
+
+  // The step of (A + mu D) step = -g on the free variables (0 on the frozen ones); false if the
+  // system cannot be solved.
+  static bool damped_step(const Matrix& A, const Vector& g, const bool frozen[N], double mu, const Options& options,
+                          Vector& step)
+  {
+    Matrix M = A;
+    Vector rhs = -g;
+    for(int i = 0; i < N; ++i)
+    {
+      const double s = options.scale[i];
+      M(i, i) += mu * (std::max)(A(i, i), 1e-12) / (s * s);
+    }
+    for(int i = 0; i < N; ++i)
+      if(frozen[i])
+      {
+        M.row(i).setZero();
+        M.col(i).setZero();
+        M(i, i) = 1.;
+        rhs[i] = 0.;
+      }
+    Eigen::LDLT<Matrix> ldlt(M);
+    step = ldlt.solve(rhs);
+    return ldlt.info() == Eigen::Success && step.allFinite();
+  }
 };
 
 } // namespace internal

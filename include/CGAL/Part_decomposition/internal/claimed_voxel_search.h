@@ -9,6 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_CLAIMED_VOXEL_SEARCH_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -54,22 +55,16 @@ public:
   {
     m_grid = &claimed;
     m_any = false;
-    const int r = claimed.resolution();
+    const std::size_t r = std::size_t(claimed.resolution());
     m_points.clear();
     for(std::size_t idx = 0; idx < claimed.size(); ++idx)
     {
       if(claimed[idx] < 0) continue;
       m_any = true;
-      const std::array<int, 3> c = claimed.coordinates(idx);
-      bool boundary = false;
-      for(int a = 0; a < 3 && !boundary; ++a)
-        for(int s = -1; s <= 1 && !boundary; s += 2)
-        {
-          std::array<int, 3> n = c;
-          n[a] += s;
-          boundary = n[a] < 0 || n[a] >= r || claimed(n[0], n[1], n[2]) < 0;
-        }
-      if(!boundary) continue;
+      // on the boundary: a face neighbour unclaimed or outside the grid (fewer than 6 claimed)
+      int claimed_neighbors = 0;
+      for_each_face_neighbor(idx, r, [&](std::size_t n) { claimed_neighbors += claimed[n] >= 0 ? 1 : 0; });
+      if(claimed_neighbors == 6) continue;
       const std::array<double, 3> p = claimed.center(idx);
       m_points.push_back(Point(p[0], p[1], p[2]));
     }

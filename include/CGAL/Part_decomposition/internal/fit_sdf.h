@@ -8,8 +8,10 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
 
+#include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
@@ -17,47 +19,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <type_traits>
 #include <vector>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
-
-template <typename ConcurrencyTag>
-constexpr bool sq_is_parallel()
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
-#else
-  return false;
-#endif
-}
-
-// Calls f(block, begin, end) on fixed blocks of [0, n): the blocks never depend on the number of
-// threads, so per-block results merged in block order are bit-identical for any thread count.
-template <typename ConcurrencyTag, typename F>
-void sq_for_each_block(std::size_t n, std::size_t block_size, const F& f)
-{
-  const std::size_t blocks = (n + block_size - 1) / block_size;
-#ifdef CGAL_LINKED_WITH_TBB
-  if(sq_is_parallel<ConcurrencyTag>() && blocks > 1)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for(std::size_t b = range.begin(); b != range.end(); ++b)
-                          f(b, b * block_size, (std::min)(n, (b + 1) * block_size));
-                      });
-    return;
-  }
-#endif
-  for(std::size_t b = 0; b < blocks; ++b) f(b, b * block_size, (std::min)(n, (b + 1) * block_size));
-}
 
 // The samples of one fit (structure of arrays): positions in the normalized cube and d_M.
 struct Fit_samples
@@ -83,13 +49,13 @@ struct Fit_samples
 struct Fit_sdf_settings
 {
   double truncation = 0.125;          // tau
-  double exterior_penalty = 5.;       // mu_ext
+  double exterior_penalty = defaults::exterior_penalty; // mu_ext
   double near_surface_fraction = 0.3; // near-surface band and clip: 0.3 tau
   double active_multiplier = 3.;      // active set |d~(theta0)| < 3 tau
   double outlier_probability = 0.99;  // w_o of the MPS Gaussian inlier weight
   bool reestimate_variance = true;    // MPS rule: sigma^2 = sum w r^2 / sum w after each outer pass
   int maximum_outer_iterations = 4;   // outer passes of the MPS rule
-  int maximum_evaluations = 40;       // per solve (one solve per outer pass)
+  int maximum_evaluations = defaults::maximum_solver_evaluations; // per solve (one per outer pass)
   double function_tolerance = 1e-8;   // stop a solve when an accepted step gains less (relative)
   double relative_cost_tolerance = 1e-3; // stop the outer passes when the cost changes less
   double semi_axis_scale = 1.;        // eta: x_scale of the semi-axes
@@ -185,7 +151,7 @@ private:
     const std::size_t blocks = (m + block_size - 1) / block_size;
     if(m_block_sums.size() < blocks) m_block_sums.resize(blocks);
     const bool normal_equations = A != nullptr;
-    auto run = [&](std::size_t b, std::size_t begin, std::size_t end) {
+    auto run = [&](std::size_t begin, std::size_t end) {
       // the unclipped rows of the block (a clipped residual is constant: zero row)
       double rows[block_size * n];
       double values[block_size];
@@ -207,7 +173,7 @@ private:
           values[kept++] = fi;
         }
       }
-      Fit_sdf_block_sums& out = m_block_sums[b];
+      Fit_sdf_block_sums& out = m_block_sums[begin / block_size];
       out.cost = sum;
       if(!normal_equations) return;
       const Eigen::Map<const Rows> J(rows, kept, n);
@@ -216,7 +182,7 @@ private:
       out.A.template selfadjointView<Eigen::Lower>().rankUpdate(J.transpose());
       out.g.noalias() = J.transpose() * f;
     };
-    sq_for_each_block<ConcurrencyTag>(m, block_size, run);
+    for_each_block<ConcurrencyTag>(m, block_size, run);
     double total = 0.;
     if(normal_equations)
     {
@@ -249,11 +215,43 @@ private:
 // Buffers reused across fits (one per thread when fits run concurrently).
 struct Fit_sdf_workspace
 {
-  std::vector<double> px, py, pz, d, sqrt_w, clip, d0;
+  std::vector<double> px, py, pz, d, sqrt_w, clip;
+  std::vector<double> dt; // d~ of each active sample at the current parameters (theta0 first)
   std::vector<Fit_sdf_block_sums> block_sums;
   std::vector<unsigned char> interior; // interior regime: Gaussian weight
   Superquadric_solver solver;
 };
+
+// The active set P_a = {|d~(theta0)| < 3 tau} of FitSDF in `ws`, with the three weight regimes
+// at theta0 (the interior weights are set afterwards) and the two-stage clip of each sample.
+inline void select_active_samples(const Fit_samples& P, const Superquadric_data& theta0,
+                                  const Fit_sdf_settings& settings, Fit_sdf_workspace& ws)
+{
+  const double tau = settings.truncation;
+  const double near_band = settings.near_surface_fraction * tau;
+  ws.px.clear(); ws.py.clear(); ws.pz.clear(); ws.d.clear();
+  ws.sqrt_w.clear(); ws.clip.clear(); ws.dt.clear(); ws.interior.clear();
+  for(std::size_t i = 0; i < P.size(); ++i)
+  {
+    const double p[3] = {P.x[i], P.y[i], P.z[i]};
+    const double dt = superquadric_radial_distance(theta0, p);
+    if(!(std::abs(dt) < settings.active_multiplier * tau)) continue;
+    const double dm = P.d[i];
+    double w = 1.;
+    bool interior = false;
+    if(dm > 0.)
+      w = 1. + settings.exterior_penalty * (std::max)(0., -dt) / tau;
+    else if(std::abs(dm) < near_band)
+      w = 1.;
+    else
+      interior = true;
+    ws.px.push_back(p[0]); ws.py.push_back(p[1]); ws.pz.push_back(p[2]); ws.d.push_back(dm);
+    ws.sqrt_w.push_back(std::sqrt(w));
+    ws.clip.push_back(std::abs(dm) < near_band ? near_band : tau);
+    ws.dt.push_back(dt);
+    ws.interior.push_back(interior ? 1 : 0);
+  }
+}
 
 // FitSDF (paper Alg. A.3): active set at theta0, the three weight regimes, two-stage residual
 // clipping, bounded least squares with x_scale(a) = eta.
@@ -272,31 +270,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
   Fit_sdf_result result;
   result.theta = theta0;
   const double tau = settings.truncation;
-  const double near_band = settings.near_surface_fraction * tau;
-
-  // Active set and the fixed parts of the weights, at theta0.
-  ws.px.clear(); ws.py.clear(); ws.pz.clear(); ws.d.clear();
-  ws.sqrt_w.clear(); ws.clip.clear(); ws.d0.clear(); ws.interior.clear();
-  for(std::size_t i = 0; i < P.size(); ++i)
-  {
-    const double p[3] = {P.x[i], P.y[i], P.z[i]};
-    const double dt = superquadric_radial_distance(theta0, p);
-    if(!(std::abs(dt) < settings.active_multiplier * tau)) continue;
-    const double dm = P.d[i];
-    double w = 1.;
-    bool interior = false;
-    if(dm > 0.)
-      w = 1. + settings.exterior_penalty * (std::max)(0., -dt) / tau;
-    else if(std::abs(dm) < near_band)
-      w = 1.;
-    else
-      interior = true;
-    ws.px.push_back(p[0]); ws.py.push_back(p[1]); ws.pz.push_back(p[2]); ws.d.push_back(dm);
-    ws.sqrt_w.push_back(std::sqrt(w));
-    ws.clip.push_back(std::abs(dm) < near_band ? near_band : tau);
-    ws.d0.push_back(dt);
-    ws.interior.push_back(interior ? 1 : 0);
-  }
+  select_active_samples(P, theta0, settings, ws);
   const std::size_t m = ws.d.size();
   result.active = m;
   if(m < std::size_t(superquadric_number_of_parameters)) return result;
@@ -310,7 +284,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
   double sigma2 = 0.;
   for(std::size_t i = 0; i < m; ++i)
   {
-    const double r = clipped_residual(i, ws.d0[i]);
+    const double r = clipped_residual(i, ws.dt[i]);
     sigma2 += r * r;
   }
   sigma2 = (std::max)(sigma2 / double(m), 1e-6 * tau * tau);
@@ -326,7 +300,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
         ws.sqrt_w[i] = std::sqrt(p / (C + p));
       }
   };
-  set_interior_weights(ws.d0, sigma2);
+  set_interior_weights(ws.dt, sigma2);
 
   Fit_sdf_problem<ConcurrencyTag> problem(ws.px, ws.py, ws.pz, ws.d, ws.sqrt_w, ws.clip, ws.block_sums,
                                           theta0.R);
@@ -338,7 +312,6 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
 
   const int passes = settings.reestimate_variance ? (std::max)(1, settings.maximum_outer_iterations) : 1;
   double previous_cost = -1.;
-  std::vector<double>& dt = ws.d0; // reused: d~ at the current parameters
   for(int pass = 0; pass < passes; ++pass)
   {
     const auto report = ws.solver.solve(problem, x, lb, ub, options);
@@ -352,8 +325,8 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
     for(std::size_t i = 0; i < m; ++i)
     {
       const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
-      dt[i] = superquadric_radial_distance(q, p);
-      const double r = clipped_residual(i, dt[i]);
+      ws.dt[i] = superquadric_radial_distance(q, p);
+      const double r = clipped_residual(i, ws.dt[i]);
       const double w = ws.sqrt_w[i] * ws.sqrt_w[i];
       swr += w * r * r;
       sw += w;
@@ -362,7 +335,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
     if(previous_cost >= 0. && std::abs(previous_cost - cost) <= settings.relative_cost_tolerance * cost) break;
     previous_cost = cost;
     sigma2 = (std::max)(swr / (std::max)(sw, 1e-300), 1e-6 * tau * tau);
-    set_interior_weights(dt, sigma2);
+    set_interior_weights(ws.dt, sigma2);
   }
 
   result.theta = problem.shape(x);
