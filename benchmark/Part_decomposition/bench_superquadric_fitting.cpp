@@ -1,8 +1,7 @@
 // Times SDFSQFit (fit_superquadrics) on meshes and scores the parts it induces.
 //
 // Usage: bench_superquadric_fitting [--threads N] [--runs R] [--mode mps|oneshot] [--roi X]
-//        [--no-exterior-band] [--no-connected] [--max-samples N] [--max-evals N] [--ftol X]
-//        [--surface-exclusion F] [--rejections K]
+//        [--no-exterior-band] [--no-connected] [--max-evals N] [--rejections K]
 //        [--verbose] mesh...
 // Per mesh: the median fitting time over R runs (prior and TSDF excluded), the number of
 // primitives, seeds, rejections, solves and residual evaluations; then, if NAME_k.seg files lie
@@ -37,7 +36,6 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace PD = CGAL::Part_decomposition;
-namespace PDI = CGAL::Part_decomposition::internal;
 typedef CGAL::Parallel_if_available_tag Tag;
 
 namespace {
@@ -65,9 +63,11 @@ int main(int argc, char** argv)
 {
   int threads = 0, runs = 3;
   bool verbose = false;
-  PD::Interior_weight_mode mode = PD::Interior_weight_mode::ONE_SHOT;
-  double roi = 8.;
-  PDI::Sdfsqfit_options options;
+  PD::Interior_weight_mode mode = PD::defaults::interior_weight_mode;
+  double roi = PD::defaults::roi_radius;
+  bool exterior_band = true, reachable = true;
+  int evaluations = PD::defaults::maximum_solver_evaluations;
+  std::size_t rejections = PD::defaults::maximum_rejections_in_a_row;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
   {
@@ -77,13 +77,10 @@ int main(int argc, char** argv)
     else if(a == "--mode" && i + 1 < argc)
       mode = std::string(argv[++i]) == "mps" ? PD::Interior_weight_mode::MPS_REESTIMATED : PD::Interior_weight_mode::ONE_SHOT;
     else if(a == "--roi" && i + 1 < argc) roi = std::atof(argv[++i]);
-    else if(a == "--no-exterior-band") options.exterior_band_samples = false;
-    else if(a == "--no-connected") options.connected_regions = false;
-    else if(a == "--max-samples" && i + 1 < argc) options.maximum_samples = std::size_t(std::atol(argv[++i]));
-    else if(a == "--max-evals" && i + 1 < argc) options.maximum_evaluations = std::atoi(argv[++i]);
-    else if(a == "--ftol" && i + 1 < argc) options.function_tolerance = std::atof(argv[++i]);
-    else if(a == "--surface-exclusion" && i + 1 < argc) options.surface_exclusion = std::atof(argv[++i]);
-    else if(a == "--rejections" && i + 1 < argc) options.consecutive_rejections = std::size_t(std::atol(argv[++i]));
+    else if(a == "--no-exterior-band") exterior_band = false;
+    else if(a == "--no-connected") reachable = false;
+    else if(a == "--max-evals" && i + 1 < argc) evaluations = std::atoi(argv[++i]);
+    else if(a == "--rejections" && i + 1 < argc) rejections = std::size_t(std::atol(argv[++i]));
     else if(a == "--verbose") verbose = true;
     else files.push_back(a);
   }
@@ -114,21 +111,20 @@ int main(int argc, char** argv)
     const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Tag>(mesh);
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Tag>(mesh);
 
-    // r_fit = min(r, resolution before the finest), as fit_superquadrics() does
-    const std::vector<int> stages = prior.resolutions;
-    const int fit_cap = stages[stages.size() - 2];
-    std::vector<int> fit_res;
-    for(int r : stages) fit_res.push_back(std::min(r, fit_cap));
     std::vector<double> times;
     PD::Superquadric_fitting_result<K> res;
     for(int run = 0; run < runs; ++run)
     {
       const double t0 = now_s();
       // the zones are part of the fitting stage
-      const PD::Fitting_zones zones = PD::compute_fitting_zones<Tag>(prior.classes, {fit_cap / 2, fit_cap});
-      res = PDI::fit_superquadrics_in_zones<Tag, K>(prior, tsdf, zones, stages, fit_res, {1., 0.5, 0.25}, 1.5, 5., 3.,
-                                                   5., 0.95, roi, mode, 256, true, true, true, verbose && run == 0,
-                                                   options);
+      res = PD::fit_superquadrics<Tag, K>(
+        prior, tsdf,
+        PD::parameters::combine(CGAL::parameters::verbose(verbose && run == 0), PD::parameters::roi_radius(roi),
+                                PD::parameters::interior_weight_mode(mode),
+                                PD::parameters::use_exterior_band_samples(exterior_band),
+                                PD::parameters::use_reachable_regions(reachable),
+                                PD::parameters::maximum_solver_evaluations(evaluations),
+                                PD::parameters::maximum_rejections_in_a_row(rejections)));
       times.push_back(now_s() - t0);
     }
     const double t = median(times);

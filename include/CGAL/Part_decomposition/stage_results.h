@@ -81,40 +81,6 @@ struct Hierarchical_prior
   Normalization normalization;
 };
 
-/*!
-\ingroup PkgPartDecompositionRef
-How the sign of the distance field is decided, i.e.\ which voxel centres are inside the shape.
-
-The \em surface voxels below are the voxels whose (closed) box meets a triangle.
-
-- `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
-  number of times. Exact for closed meshes; meaningless for open ones, and a region covered
-  twice by self-intersecting parts counts as outside.
-- `WINDING_NUMBER`: the generalized winding number \f$w\f$ (Jacobson et al.\ 2013); a point is
-  inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
-  (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
-  integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
-  open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
-  the voxels next to the surface voxels; the other voxels take, by a flood fill that does not
-  cross surface voxels, the sign of the nearest evaluated voxel, and the surface voxels the sign
-  of an adjacent voxel centre they see without crossing a triangle (or their own evaluation):
-  holes are bridged as the winding number bridges them. Needs a consistent orientation of each
-  connected part.
-- `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
-  outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
-  centres it is joined to by a chain of at most three segments between adjacent centres that meet
-  no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
-  voxel but leaks through larger ones; closed hollow shells become solid.
-- `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
-  no costly self-intersection test, and robust on open ones.
-*/
-enum class Tsdf_sign_method
-{
-  AUTOMATIC,      ///< `WINDING_NUMBER`
-  INSIDE_TEST,    ///< ray parity (closed meshes only)
-  WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
-  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels
-};
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -155,24 +121,6 @@ struct Fitting_zones
   std::map<int, Voxel_grid<double> > flow_zone_distance;
 };
 
-/*!
-\ingroup PkgPartDecompositionRef
-How FitSDF (paper Alg.\ A.3) sets the variance \f$\sigma^2\f$ of the Gaussian inlier weight of
-interior samples, \f$w = p/(C+p)\f$ with \f$p = e^{-r^2/2\sigma^2}\f$ and
-\f$C = w_o\sqrt{2\pi\sigma^2}/((1-w_o)\tau)\f$, \f$w_o = 0.99\f$ (inherited from MPS; the paper
-does not say how \f$\sigma^2\f$ is set).
-*/
-enum class Interior_weight_mode
-{
-  /// as MPS: after each of up to 4 solves (an outer pass stops early when the cost changes by
-  /// less than 0.1%), \f$\sigma^2 = \sum w r^2 / \sum w\f$ over the active samples and the
-  /// interior weights are recomputed at the new parameters. The first \f$\sigma^2\f$ is the
-  /// mean squared clipped residual at the initial parameters.
-  MPS_REESTIMATED,
-  /// \f$\sigma^2\f$ (the mean squared clipped residual) and the weights are computed once at the
-  /// initial parameters; one solve.
-  ONE_SHOT
-};
 
 /*!
 \ingroup PkgPartDecompositionRef

@@ -64,7 +64,7 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   p.coverage_target = choose_parameter(get_parameter(np, internal_np::coverage_target), defaults::coverage_target);
   p.roi_radius = choose_parameter(get_parameter(np, internal_np::roi_radius), defaults::roi_radius);
   p.interior_weight_mode =
-    choose_parameter(get_parameter(np, internal_np::interior_weight_mode), Interior_weight_mode::ONE_SHOT);
+    choose_parameter(get_parameter(np, internal_np::interior_weight_mode), defaults::interior_weight_mode);
   p.maximum_number_of_primitives = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_primitives), defaults::maximum_number_of_primitives),
     1, "maximum_number_of_primitives", "positive");

@@ -47,7 +47,7 @@ struct Fitting_parameters
   double exterior_penalty = defaults::exterior_penalty;
   double coverage_target = defaults::coverage_target;
   double roi_radius = defaults::roi_radius;
-  Interior_weight_mode interior_weight_mode = Interior_weight_mode::ONE_SHOT;
+  Interior_weight_mode interior_weight_mode = defaults::interior_weight_mode;
   std::size_t maximum_number_of_primitives = defaults::maximum_number_of_primitives;
   bool use_freeze_zone = defaults::use_freeze_zone;
   bool use_tsdf_guidance = defaults::use_tsdf_guidance;
