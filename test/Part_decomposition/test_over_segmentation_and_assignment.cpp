@@ -1,0 +1,555 @@
+// The mesh side of the assignment (paper App. E.3, E.4): the curvature-aware over-segmentation
+// into patches, and the distance-weighted vote (Eq. 9) that turns patches into parts.
+#include <catch2/catch.hpp>
+
+#include <CGAL/Part_decomposition/over_segmentation.h>
+#include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include "shipped_shapes.h"
+#include "test_shapes.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+namespace PDP = CGAL::Part_decomposition::parameters;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using test_shapes::K;
+using test_shapes::Mesh;
+using test_shapes::Point;
+typedef Mesh::Face_index face_descriptor;
+
+namespace {
+
+std::vector<std::size_t> patches_of(Mesh& m, std::size_t& count, double quantile = 90.,
+                                    double min_size = 0.001, double max_size = 0.003, int smoothing = 1)
+{
+  auto map = m.add_property_map<face_descriptor, std::size_t>("f:test_patch", 0).first;
+  count = PD::over_segment(m, map,
+                           PD::parameters::combine(PD::parameters::dihedral_percentile(quantile),
+                                                   PD::parameters::minimum_patch_size(min_size),
+                                                   PD::parameters::patch_split_size(max_size),
+                                                   PD::parameters::smoothing_iterations(smoothing)));
+  std::vector<std::size_t> out;
+  for(face_descriptor f : faces(m)) out.push_back(map[f]);
+  m.remove_property_map(map);
+  return out;
+}
+
+// Patch ids are 0..A-1, each used, numbered by first face, and each patch is edge-connected.
+void check_patch_structure(Mesh& m, const std::vector<std::size_t>& patch, std::size_t count)
+{
+  std::size_t next_new = 0;
+  for(std::size_t l : patch)
+  {
+    REQUIRE(l <= next_new);
+    if(l == next_new) ++next_new;
+  }
+  REQUIRE(next_new == count);
+  // Flood fill inside each patch only: one component per patch.
+  Mesh& mm = m;
+  auto comp = mm.add_property_map<face_descriptor, std::size_t>("f:test_comp", 0).first;
+  auto is_border_of_patch = mm.add_property_map<Mesh::Edge_index, bool>("e:test_cut", false).first;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    if(is_border(e, m)) continue;
+    is_border_of_patch[e] = patch[face(h, m)] != patch[face(opposite(h, m), m)];
+  }
+  const std::size_t n = PMP::connected_components(m, comp, CGAL::parameters::edge_is_constrained_map(is_border_of_patch));
+  mm.remove_property_map(comp);
+  mm.remove_property_map(is_border_of_patch);
+  CHECK(n == count);
+}
+
+Mesh rotated(const Mesh& m)
+{
+  Mesh r = m;
+  const double a = 0.7, b = 0.4;
+  const CGAL::Aff_transformation_3<K> rz(std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1);
+  const CGAL::Aff_transformation_3<K> rx(1, 0, 0, 0, std::cos(b), -std::sin(b), 0, std::sin(b), std::cos(b));
+  for(auto v : vertices(r)) r.point(v) = (rx * rz).transform(r.point(v)) + K::Vector_3(3, -1, 2);
+  return r;
+}
+
+// A flat strip of 2n triangles along x at height z in [x0, x0 + n*w]: faces 2i, 2i+1 in square i.
+Mesh make_strip(double x0, double w, int n, double y0, double h, double z)
+{
+  test_shapes::Soup s;
+  for(int i = 0; i < n; ++i)
+  {
+    const Point a(x0 + i * w, y0, z), b(x0 + (i + 1) * w, y0, z), c(x0 + (i + 1) * w, y0 + h, z),
+        d(x0 + i * w, y0 + h, z);
+    s.triangle(a, b, c);
+    s.triangle(a, c, d);
+  }
+  return s.mesh();
+}
+
+std::vector<std::size_t> assign(Mesh& m, const std::vector<std::size_t>& patch,
+                                const PD::Voxel_grid<std::int32_t>& claimed, std::vector<std::size_t>& part,
+                                double temperature = 1.0)
+{
+  Mesh& mm = m;
+  auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_in", 0).first;
+  auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_out", 0).first;
+  for(face_descriptor f : faces(m)) pmap[f] = patch[f];
+  const std::vector<std::size_t> prim =
+      PD::assign_parts(m, pmap, claimed, PD::Normalization(), qmap, PD::parameters::vote_temperature(temperature));
+  part.clear();
+  for(face_descriptor f : faces(m)) part.push_back(qmap[f]);
+  mm.remove_property_map(pmap);
+  mm.remove_property_map(qmap);
+  return prim;
+}
+
+// Brute-force Eq. 9: nearest claimed voxel centre over the whole grid, weights, argmax.
+std::vector<std::int32_t> brute_force_votes(const Mesh& m, const std::vector<std::size_t>& patch,
+                                            const PD::Voxel_grid<std::int32_t>& claimed, double temperature)
+{
+  std::map<std::size_t, std::map<std::int32_t, double> > votes;
+  const double tau = temperature / claimed.resolution();
+  for(face_descriptor f : faces(m))
+  {
+    const Point c = CGAL::centroid(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
+                                   m.point(target(next(halfedge(f, m), m), m)));
+    double best = 1e30;
+    std::int32_t label = -1;
+    for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+    {
+      if(claimed[idx] < 0) continue;
+      const auto q = claimed.center(idx);
+      const double d = std::sqrt(CGAL::squared_distance(c, Point(q[0], q[1], q[2])));
+      if(d < best) best = d, label = claimed[idx];
+    }
+    votes[patch[f]][label] += std::exp(-best / tau);
+  }
+  std::vector<std::int32_t> out;
+  for(const auto& pv : votes)
+  {
+    std::int32_t arg = -1;
+    double w = -1.;
+    for(const auto& kv : pv.second)
+      if(kv.second > w) w = kv.second, arg = kv.first;
+    out.push_back(arg);
+  }
+  return out;
+}
+
+
+// The ball of radius 0.4 and three primitives claiming slabs of it: 9 for x < -0.1, 5 for
+// -0.1 <= x < 0.15, 2 above.
+PD::Voxel_grid<std::int32_t> three_slab_claims()
+{
+  PD::Voxel_grid<std::int32_t> claimed(16, -1);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  {
+    const auto c = claimed.center(idx);
+    if(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 0.3 * 0.3) continue;
+    claimed[idx] = c[0] < -0.1 ? 9 : (c[0] < 0.15 ? 5 : 2);
+  }
+  return claimed;
+}
+
+} // namespace
+
+TEST_CASE("the dihedral threshold interpolates linearly between the closest ranks", "[over_segmentation]")
+{
+  std::vector<double> v = {30., 0., 20., 10.};
+  CHECK(PD::internal::percentile(v, 50.) == Approx(15.));
+  v = {30., 0., 20., 10.};
+  CHECK(PD::internal::percentile(v, 90.) == Approx(27.));
+  v = {30., 0., 20., 10.};
+  CHECK(PD::internal::percentile(v, 100.) == 30.);
+  v = {30., 0., 20., 10.};
+  CHECK(PD::internal::percentile(v, 0.) == 0.);
+  v = {5.};
+  CHECK(PD::internal::percentile(v, 90.) == 5.);
+}
+
+TEST_CASE("a cube gives its 6 sides, whatever the tessellation and placement", "[over_segmentation]")
+{
+  for(int n : {1, 2, 3, 8})
+    for(bool rotate : {false, true})
+    {
+      INFO("n = " << n << " rotated = " << rotate);
+      Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 2, 1.5), n);
+      if(rotate) m = rotated(m);
+      std::size_t count = 0;
+      const std::vector<std::size_t> patch = patches_of(m, count);
+      REQUIRE(count == 6);
+      check_patch_structure(m, patch, count);
+      // each patch is exactly one side: its faces share one normal, and it holds 2 n^2 faces
+      std::map<std::size_t, std::vector<K::Vector_3> > normals;
+      for(face_descriptor f : faces(m)) normals[patch[f]].push_back(PMP::compute_face_normal(f, m));
+      for(const auto& pn : normals)
+      {
+        CHECK(pn.second.size() == std::size_t(2 * n * n));
+        for(const auto& v : pn.second) CHECK(v * pn.second.front() > 1. - 1e-9);
+      }
+    }
+}
+
+TEST_CASE("a smooth sphere gives a few hundred compact patches", "[over_segmentation]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4); // 5120 faces
+  std::size_t count = 0;
+  const std::vector<std::size_t> patch = patches_of(m, count);
+  check_patch_structure(m, patch, count);
+  // every patch is below patch_split_size + minimum_patch_size of the area (up to a face)
+  // and the clean-up leaves none below minimum_patch_size after smoothing by more than a face
+  std::map<std::size_t, double> area;
+  double total = 0.;
+  for(face_descriptor f : faces(m))
+  {
+    area[patch[f]] += PMP::face_area(f, m);
+    total += PMP::face_area(f, m);
+  }
+  const double face_area = total / 5120.;
+  for(const auto& pa : area)
+  {
+    CHECK(pa.second <= (0.003 + 0.001) * total + 3 * face_area);
+    CHECK(pa.second >= 0.001 * total - 3 * face_area);
+  }
+  CHECK(count >= 250);
+  CHECK(count <= 1000);
+
+  // Without the size cap the paper's flood fill alone leaks through the sparse cuts of a smooth
+  // surface: far fewer patches.
+  std::size_t uncapped = 0;
+  patches_of(m, uncapped, 90., 0.001, 1.0);
+  CHECK(uncapped < count / 4);
+}
+
+TEST_CASE("the result does not depend on the number of threads", "[over_segmentation]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 5); // 20480 faces
+  auto a = m.add_property_map<face_descriptor, std::size_t>("f:a", 0).first;
+  auto b = m.add_property_map<face_descriptor, std::size_t>("f:b", 0).first;
+  const std::size_t na = PD::over_segment<CGAL::Sequential_tag>(m, a);
+  const std::size_t nb = PD::over_segment<CGAL::Parallel_if_available_tag>(m, b);
+  CHECK(na == nb);
+  std::size_t differ = 0;
+  for(face_descriptor f : faces(m)) differ += a[f] != b[f];
+  CHECK(differ == 0);
+}
+
+TEST_CASE("the clean-up merges fragments across their weakest edge, smallest first", "[over_segmentation]")
+{
+  // Hand-made face graph: patch 0 = faces {0, 1}, fragment {2}, patch 2 = faces {3, 4}.
+  // Face 2 touches face 1 across a 40 degree edge and face 3 across a 25 degree edge.
+  PD::internal::Face_adjacency adj;
+  const std::size_t no = PD::internal::Face_adjacency::no_face;
+  adj.number_of_faces = 5;
+  adj.neighbor = {1, no, no, /**/ 0, 2, no, /**/ 1, 3, no, /**/ 2, 4, no, /**/ 3, no, no};
+  adj.angle = {5, 0, 0, /**/ 5, 40, 0, /**/ 40, 25, 0, /**/ 25, 5, 0, /**/ 5, 0, 0};
+  adj.area = {1., 1., 0.05, 1., 1.};
+  adj.degenerate.assign(5, 0);
+  std::vector<std::size_t> label = {0, 0, 1, 2, 2};
+  PD::internal::merge_small_patches(adj, label, 3, 0.5);
+  CHECK(label == std::vector<std::size_t>({0, 0, 2, 2, 2}));
+
+  // A chain of two fragments: the smaller one (face 2) goes first, into face 1 (10 < 30 degrees),
+  // then the merged piece (area 0.3) is still small and follows its weakest remaining edge.
+  adj.angle = {5, 0, 0, /**/ 5, 10, 0, /**/ 10, 30, 0, /**/ 30, 20, 0, /**/ 20, 0, 0};
+  adj.area = {1., 0.2, 0.1, 0.2, 1.};
+  label = {0, 1, 2, 3, 4};
+  PD::internal::merge_small_patches(adj, label, 5, 0.35);
+  // face 2 -> face 1 (area 0.3, still small) -> merges across its weakest edge: 5 deg to face 0;
+  // face 3 (0.2) -> weakest edge 20 deg to face 4.
+  CHECK(label == std::vector<std::size_t>({0, 0, 0, 4, 4}));
+
+  // Through the public function: with minimum_patch_size above 1/6 every side of a two-triangle
+  // cube is a fragment. All edges are 90 degrees: ties go to the smaller neighbour, so sides pair
+  // up first and the last two join the pairs: two patches of three sides.
+  Mesh cube = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
+  std::size_t count = 0;
+  const std::vector<std::size_t> patch = patches_of(cube, count, 90., 0.2);
+  CHECK(count == 2);
+  check_patch_structure(cube, patch, count);
+  std::map<std::size_t, int> sizes;
+  for(std::size_t p : patch) ++sizes[p];
+  for(const auto& s : sizes) CHECK(s.second == 6);
+}
+
+TEST_CASE("boundary smoothing moves a face to the patch of two of its neighbours", "[over_segmentation]")
+{
+  // Face 0 (patch 0) has neighbours 1, 2 in patch 1 and 3 in patch 0: it moves to patch 1.
+  // Face 4 (patch 2) has neighbours 5, 6 in patch 3, but face 5 would move itself (two of its
+  // neighbours are in patch 2): neither counts the other, both keep their patch.
+  PD::internal::Face_adjacency adj;
+  const std::size_t no = PD::internal::Face_adjacency::no_face;
+  adj.number_of_faces = 9;
+  adj.neighbor = {1, 2, 3, /*1*/ 0, no, no, /*2*/ 0, no, no, /*3*/ 0, no, no,
+                  /*4*/ 5, 6, 7, /*5*/ 4, 8, no, /*6*/ 4, no, no, /*7*/ 4, no, no, /*8*/ 5, no, no};
+  adj.angle.assign(27, 10.);
+  adj.area.assign(9, 1.);
+  adj.degenerate.assign(9, 0);
+  std::vector<std::size_t> label = {0, 1, 1, 0, 2, 3, 3, 2, 2};
+  const std::size_t moved = PD::internal::smooth_patch_boundaries<CGAL::Sequential_tag>(adj, label);
+  CHECK(moved == 1);
+  CHECK(label == std::vector<std::size_t>({1, 1, 1, 0, 2, 3, 3, 2, 2}));
+}
+
+TEST_CASE("zero-area faces and open meshes give valid patches", "[over_segmentation]")
+{
+  // a strip with a zero-area triangle glued on its border edge
+  test_shapes::Soup s;
+  s.triangle(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0));
+  s.triangle(Point(0, 0, 0), Point(1, 1, 0), Point(0, 1, 0));
+  s.triangle(Point(1, 0, 0), Point(0, 0, 0), Point(0.5, 0, 0)); // collinear: zero area
+  Mesh m = s.mesh();
+  REQUIRE(num_faces(m) == 3);
+  std::size_t count = 0;
+  const std::vector<std::size_t> patch = patches_of(m, count, 90., 0.0);
+  CHECK(count == 2); // the flat square, and the degenerate face on its own
+  check_patch_structure(m, patch, count);
+  patches_of(m, count); // clean-up on: the zero-area face is merged
+  CHECK(count == 1);
+}
+
+TEST_CASE("invalid over-segmentation parameters throw", "[over_segmentation]")
+{
+  Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
+  auto map = m.add_property_map<face_descriptor, std::size_t>("f:x", 0).first;
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::dihedral_percentile(101.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::minimum_patch_size(-0.1)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::patch_split_size(0.)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::smoothing_iterations(-1)), PD::Invalid_input);
+}
+
+TEST_CASE("over_segment with every default given explicitly gives the default patches", "[over_segmentation][defaults]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4); // 5120 faces
+  std::vector<std::size_t> a(num_faces(m)), b(num_faces(m));
+  const std::size_t na = PD::over_segment(m, CGAL::make_property_map(a));
+  const std::size_t nb = PD::over_segment(
+      m, CGAL::make_property_map(b),
+      PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m))
+                       .face_index_map(get(CGAL::face_index, m))
+                       .geom_traits(K()),
+                   PDP::dihedral_percentile(PD::defaults::dihedral_percentile),
+                   PDP::minimum_patch_size(PD::defaults::minimum_patch_size),
+                   PDP::patch_split_size(PD::defaults::patch_split_size),
+                   PDP::smoothing_iterations(PD::defaults::smoothing_iterations)));
+  CHECK(na == nb);
+  CHECK(a == b);
+  // patches of 0.1 to 0.2 percent of the area
+  CHECK(na >= 400);
+  CHECK(na <= 1000);
+}
+
+TEST_CASE("the former names of dihedral_percentile and patch_split_size still work", "[over_segmentation]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
+  std::vector<std::size_t> renamed(num_faces(m)), former(num_faces(m)), by_default(num_faces(m));
+  const auto np = PDP::combine(PDP::dihedral_percentile(80.), PDP::patch_split_size(0.01));
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  const auto former_np = PDP::combine(PDP::dihedral_quantile(80.), PDP::maximum_patch_size(0.01));
+#pragma GCC diagnostic pop
+  const std::size_t n_renamed = PD::over_segment(m, CGAL::make_property_map(renamed), np);
+  const std::size_t n_former = PD::over_segment(m, CGAL::make_property_map(former), former_np);
+  CHECK(n_former == n_renamed);
+  CHECK(former == renamed);
+  // the values reached the stage: a cap twenty times the default gives fewer patches
+  CHECK(n_renamed < PD::over_segment(m, CGAL::make_property_map(by_default)));
+}
+
+TEST_CASE("the nearest claimed voxel is exact, near and far from the claims", "[assignment]")
+{
+  const int r = 16;
+  PD::Voxel_grid<std::int32_t> claimed(r, -1);
+  CGAL::Random rng(7);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+    if(rng.get_double() < 0.03) claimed[idx] = rng.get_int(0, 5);
+  // a solid block too, so that the kd-tree skips interior voxels
+  for(int k = 2; k < 7; ++k)
+    for(int j = 2; j < 7; ++j)
+      for(int i = 2; i < 7; ++i) claimed(i, j, k) = 9;
+  PD::internal::Claimed_voxel_search search;
+  search.build<CGAL::Sequential_tag>(claimed);
+  REQUIRE(search.any());
+  std::size_t claimed_count = 0;
+  for(std::int32_t l : claimed.values()) claimed_count += l >= 0;
+  CHECK(search.tree_size() <= claimed_count - 27); // the 3x3x3 core of the block is left out
+  for(int n = 0; n < 3000; ++n)
+  {
+    const std::array<double, 3> u = {{rng.get_double(-0.8, 0.8), rng.get_double(-0.8, 0.8), rng.get_double(-0.8, 0.8)}};
+    double best = 1e30;
+    std::int32_t label = -1;
+    for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+    {
+      if(claimed[idx] < 0) continue;
+      const auto c = claimed.center(idx);
+      const double d = std::sqrt((u[0] - c[0]) * (u[0] - c[0]) + (u[1] - c[1]) * (u[1] - c[1]) + (u[2] - c[2]) * (u[2] - c[2]));
+      if(d < best) best = d, label = claimed[idx];
+    }
+    const PD::internal::Claimed_voxel_search::Result res = search.nearest(u);
+    CHECK(res.distance == Approx(best).epsilon(1e-12));
+    CHECK(res.label == label);
+  }
+}
+
+TEST_CASE("a patch takes the distance-weighted majority of its faces", "[assignment]")
+{
+  // Grid r = 8 (voxel 0.125) over the identity normalization. The strip lies at z = 0.01 along x
+  // in [-0.5, 0.5), y in [0, 0.1): 16 squares, 32 faces, in voxels of row (j = 4, k = 4).
+  Mesh m = make_strip(-0.5, 1. / 16., 16, 0., 0.1, 0.01);
+  const int r = 8;
+  PD::Voxel_grid<std::int32_t> claimed(r, -1);
+  // Primitive 7 claims the first voxel along the strip (faces 0..3 lie inside it): faces 0..11
+  // are nearest to it, at 0.5 to 2.3 voxels. Primitive 3 claims the voxels two rows above the
+  // rest of the strip: faces 12..31 are nearest to it, each about 2.4 voxels away. The near
+  // minority outweighs the far majority.
+  claimed(0, 4, 4) = 7;
+  for(int i = 2; i < 8; ++i) claimed(i, 4, 6) = 3;
+  // all faces in one patch
+  std::vector<std::size_t> patch(num_faces(m), 0), part;
+  std::vector<std::size_t> prim = assign(m, patch, claimed, part);
+  REQUIRE(prim.size() == 1);
+  CHECK(prim[0] == 7); // 12 near faces outweigh 20 far ones
+  {
+    // the plain count favours primitive 3
+    std::vector<std::size_t> singletons(patch.size());
+    for(std::size_t i = 0; i < singletons.size(); ++i) singletons[i] = i;
+    const std::vector<std::int32_t> nearest = brute_force_votes(m, singletons, claimed, 1.0);
+    std::size_t n3 = 0, n7 = 0;
+    for(std::int32_t l : nearest) (l == 3 ? n3 : n7) += 1;
+    CHECK(n3 == 20);
+    CHECK(n7 == 12);
+  }
+  CHECK(brute_force_votes(m, patch, claimed, 1.0) == std::vector<std::int32_t>({7}));
+  for(std::size_t p : part) CHECK(p == 0);
+
+  // With a very high temperature every face weighs the same: the plain majority wins.
+  prim = assign(m, patch, claimed, part, 1e6);
+  REQUIRE(prim.size() == 1);
+  CHECK(prim[0] == 3);
+
+  // Two patches: the first 4 squares (all near primitive 7) and the rest, where the 4 faces
+  // nearest to 7 (about 2 voxels away) lose to the 20 faces nearest to 3.
+  for(std::size_t i = 0; i < patch.size(); ++i) patch[i] = i < 8 ? 0 : 1;
+  prim = assign(m, patch, claimed, part);
+  CHECK(prim == std::vector<std::size_t>({3, 7})); // parts by increasing primitive index
+  for(std::size_t i = 0; i < part.size(); ++i) CHECK(part[i] == (i < 8 ? 1u : 0u));
+  CHECK(brute_force_votes(m, patch, claimed, 1.0) == std::vector<std::int32_t>({7, 3}));
+}
+
+TEST_CASE("parts merge the patches of one primitive and follow a brute-force reference", "[assignment]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3); // 1280 faces
+  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  std::size_t count = 0;
+  const std::vector<std::size_t> patch = patches_of(m, count);
+  REQUIRE(count > 20);
+  std::vector<std::size_t> part;
+  const std::vector<std::size_t> prim = assign(m, patch, claimed, part);
+  CHECK(prim == std::vector<std::size_t>({2, 5, 9}));
+  const std::vector<std::int32_t> reference = brute_force_votes(m, patch, claimed, 1.0);
+  REQUIRE(reference.size() == count);
+  for(face_descriptor f : faces(m))
+  {
+    REQUIRE(part[f] < prim.size());
+    CHECK(prim[part[f]] == std::size_t(reference[patch[f]]));
+  }
+  // Faces far on the x < -0.2 side are in primitive 9's part, on the x > 0.25 side in 2's.
+  for(face_descriptor f : faces(m))
+  {
+    const double x = m.point(source(halfedge(f, m), m)).x();
+    if(x < -0.3) CHECK(prim[part[f]] == 9);
+    if(x > 0.3) CHECK(prim[part[f]] == 2);
+  }
+
+  // Same answer with threads and with patch ids that are not consecutive.
+  std::vector<std::size_t> sparse(patch);
+  for(std::size_t& p : sparse) p = p * 1000003 + 17;
+  std::vector<std::size_t> part2;
+  CHECK(assign(m, sparse, claimed, part2) == prim);
+  CHECK(part2 == part);
+  Mesh& mm = m;
+  auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
+  auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:q", 0).first;
+  for(face_descriptor f : faces(m)) pmap[f] = patch[f];
+  CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(m, pmap, claimed, PD::Normalization(), qmap) == prim);
+  for(face_descriptor f : faces(m)) CHECK(qmap[f] == part[f]);
+}
+
+TEST_CASE("without claimed voxels all faces form one part", "[assignment]")
+{
+  Mesh m = test_shapes::make_box(Point(-0.2, -0.2, -0.2), Point(0.2, 0.2, 0.2), 2);
+  std::vector<std::size_t> patch(num_faces(m)), part;
+  for(std::size_t i = 0; i < patch.size(); ++i) patch[i] = i % 5;
+  PD::Voxel_grid<std::int32_t> claimed(8, -1);
+  const std::vector<std::size_t> prim = assign(m, patch, claimed, part);
+  CHECK(prim == std::vector<std::size_t>({PD::no_primitive}));
+  for(std::size_t p : part) CHECK(p == 0);
+  // a point outside the cube still finds the claimed voxel through the kd-tree
+  claimed(0, 0, 0) = 4;
+  Mesh far = test_shapes::make_box(Point(2, 2, 2), Point(3, 3, 3), 1);
+  std::vector<std::size_t> one(num_faces(far), 0);
+  CHECK(assign(far, one, claimed, part) == std::vector<std::size_t>({4}));
+  Mesh any = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
+  Mesh& ma = any;
+  auto pmap = ma.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
+  CHECK_THROWS_AS(PD::assign_parts(any, pmap, claimed, PD::Normalization(), pmap, PD::parameters::vote_temperature(0.)),
+                  PD::Invalid_input);
+}
+
+TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "[assignment][data]")
+{
+  // The dumbbell is the union of two balls (radius 0.3 at x = -0.7 and 0.7) and a bar (capsule of
+  // radius 0.1 between them); its .seg holds the true part of each face (0, 1, 2 from left).
+  Mesh m;
+  const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", m);
+
+  // Claimed voxels: the inside of each primitive (the balls win over the bar), at r = 64.
+  const PD::Normalization n = PD::compute_normalization(m);
+  PD::Voxel_grid<std::int32_t> claimed(64, -1);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  {
+    const auto p = n.from_unit(claimed.center(idx));
+    const double yz = p[1] * p[1] + p[2] * p[2];
+    if((p[0] + 0.7) * (p[0] + 0.7) + yz < 0.09) claimed[idx] = 10;
+    else if((p[0] - 0.7) * (p[0] - 0.7) + yz < 0.09) claimed[idx] = 30;
+    else if(std::abs(p[0]) < 0.7 && yz < 0.01) claimed[idx] = 20;
+  }
+  auto patch = m.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
+  auto part = m.add_property_map<face_descriptor, std::size_t>("f:part", 0).first;
+  const std::size_t count = PD::over_segment(m, patch);
+  check_patch_structure(m, std::vector<std::size_t>(patch.begin(), patch.end()), count);
+  CHECK(count >= 200);
+  CHECK(count <= 800);
+  const std::vector<std::size_t> prim = PD::assign_parts(m, patch, claimed, n, part);
+  CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
+  std::size_t correct = 0;
+  for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
+  CHECK(double(correct) / double(num_faces(m)) > 0.97);
+}
+
+TEST_CASE("assign_parts with every default given explicitly gives the default parts", "[assignment][defaults]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3);
+  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  std::vector<std::size_t> patch(num_faces(m)), a(num_faces(m)), b(num_faces(m));
+  PD::over_segment(m, CGAL::make_property_map(patch));
+  const std::vector<std::size_t> prim_a =
+      PD::assign_parts(m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(a));
+  const std::vector<std::size_t> prim_b = PD::assign_parts(
+      m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(b),
+      PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m)).face_index_map(get(CGAL::face_index, m)),
+                   PDP::vote_temperature(PD::defaults::vote_temperature)));
+  CHECK(prim_a == std::vector<std::size_t>({2, 5, 9}));
+  CHECK(prim_b == prim_a);
+  CHECK(b == a);
+}
