@@ -1,16 +1,14 @@
-// Segmentation metrics (hand-computed answers and brute-force references), area-weighted sampling,
-// and the guards of the SDF peer used by the benchmark.
+// Segmentation metrics (hand-computed answers and brute-force references) and area-weighted
+// sampling.
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 
 #include "test_shapes.h"
-#include "../../benchmark/Part_decomposition/sdf_peer.h"
 
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <string>
 #include <vector>
 
 namespace PD = CGAL::Part_decomposition;
@@ -293,63 +291,4 @@ TEST_CASE("evaluating face labelings of a sphere", "[metrics][sampling]")
   CHECK(t.number_of_samples == 20000);
   CHECK(t.mean_iou == Approx(0.25).margin(0.03));
   CHECK(t.variation_of_information == Approx(std::log(4.)).margin(0.03)); // H(P|G) = ln 4
-}
-
-TEST_CASE("the SDF peer survives the inputs on which CGAL 5.5.1 fails", "[sdf_peer]")
-{
-  SECTION("a tetrahedron: fewer faces, hence SDF values, than clusters")
-  {
-    test_shapes::Soup soup;
-    const Point a(1, 1, 1), b(1, -1, -1), c(-1, 1, -1), d(-1, -1, 1);
-    soup.triangle(a, b, c);
-    soup.triangle(a, c, d);
-    soup.triangle(a, d, b);
-    soup.triangle(b, d, c);
-    const Mesh m = soup.mesh();
-    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
-    CHECK(r.labels.size() == 4);
-    CHECK(r.distinct_sdf_values <= 4);
-    CHECK(r.number_of_clusters == std::min<std::size_t>(4, r.distinct_sdf_values));
-    CHECK(r.number_of_segments >= 1);
-    CHECK((r.note.find("cluster") != std::string::npos || r.note.find("single segment") != std::string::npos));
-  }
-  SECTION("an octahedron: eight faces but three distinct SDF values")
-  {
-    // Unguarded, CGAL 5.5.1 loops forever in k-means++ (Release) or fails an assertion.
-    test_shapes::Soup soup;
-    const Point px(1, 0, 0), nx(-1, 0, 0), py(0, 1, 0), ny(0, -1, 0), pz(0, 0, 1), nz(0, 0, -1);
-    soup.triangle(px, py, pz);
-    soup.triangle(py, nx, pz);
-    soup.triangle(nx, ny, pz);
-    soup.triangle(ny, px, pz);
-    soup.triangle(py, px, nz);
-    soup.triangle(nx, py, nz);
-    soup.triangle(ny, nx, nz);
-    soup.triangle(px, ny, nz);
-    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(soup.mesh());
-    CHECK(r.labels.size() == 8);
-    CHECK(r.distinct_sdf_values < 5);
-    CHECK(r.number_of_clusters == std::max<std::size_t>(1, r.distinct_sdf_values));
-    CHECK((r.note.find("clusters 5->") != std::string::npos || r.note.find("single segment") != std::string::npos));
-  }
-  SECTION("a closed sphere whose faces point inward")
-  {
-    Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 2);
-    CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
-    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
-    CHECK(r.reversed_components == 1);
-    CHECK(r.note.find("reoriented 1") != std::string::npos);
-    CHECK(r.labels.size() == num_faces(m));
-    CHECK(r.distinct_sdf_values > 5); // rays now hit the far side
-    CHECK(r.number_of_clusters == 5);
-  }
-  SECTION("a cube of twelve triangles")
-  {
-    const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
-    const pd_benchmark::Sdf_peer_result r = pd_benchmark::segment_with_sdf(m);
-    CHECK(r.labels.size() == 12);
-    CHECK(r.reversed_components == 0);
-    CHECK(r.number_of_clusters == std::min<std::size_t>(5, r.distinct_sdf_values));
-    for(std::size_t l : r.labels) CHECK(l < r.number_of_segments);
-  }
 }

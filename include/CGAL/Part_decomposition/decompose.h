@@ -17,20 +17,18 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
+#include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/sheet_merging.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Default.h>
-#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
 #include <Eigen/Dense>
 #include <boost/property_map/property_map.hpp>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_invoke.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -38,7 +36,6 @@
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -67,22 +64,6 @@ namespace internal {
 inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Runs `f` and `g`, as two tasks when `ConcurrencyTag` is parallel (each may run parallel loops:
-// a thread idle in one joins the other), else `f` then `g`. An exception of either is rethrown.
-template <typename ConcurrencyTag, typename F, typename G>
-void run_side_by_side(const F& f, const G& g)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_invoke(f, g);
-    return;
-  }
-#endif
-  f();
-  g();
 }
 
 // The box-like superquadric of the principal-axis bounding box of `points`: what a part gets
@@ -129,13 +110,15 @@ Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<doub
 \ingroup PkgPartDecompositionRef
 The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1):
 `compute_prior()`, `compute_distance_field()`, `fit_primitives()`, `over_segment()` and
-`assign_parts()`, in this order, each keeping its result for inspection. `decompose()` runs them
-all in one call. `compute_fitting_zones()`, between the prior and the fit, is optional: it lets
-the zones of the fitter be computed next to the distance field.
+`assign_parts()` (which ends with the thin-sheet merge, `merge_thin_sheets()`), in this order,
+each keeping its result for inspection. `decompose()` runs them all in one call.
+`compute_fitting_zones()`, between the prior and the fit, is optional: it lets the zones of the
+fitter be computed next to the distance field.
 
 Every stage function takes its own named parameters (those of the function it calls, listed in
-its documentation); the mesh, vertex point map and normalization of the decomposer are added to
-them.
+its documentation); the mesh, vertex point map, face index map and normalization of the
+decomposer are added to them. A `normalization` or `normalization_margin` given to a stage must be
+the decomposer's.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam GeomTraits a model of `PartDecompositionTraits`; `CGAL::Default` means the kernel of the
@@ -143,8 +126,13 @@ points of `VertexPointMap`
 \tparam VertexPointMap a model of `ReadablePropertyMap` with
 `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as
 value type; `CGAL::Default` means the internal vertex point map of `TriangleMesh`
+\tparam FaceIndexMap a model of `ReadablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type,
+a bijection onto `[0, num_faces(tm))`; `CGAL::Default` means the (initialized) internal face index
+map of `TriangleMesh`
 */
-template <typename TriangleMesh, typename GeomTraits_ = CGAL::Default, typename VertexPointMap_ = CGAL::Default>
+template <typename TriangleMesh, typename GeomTraits_ = CGAL::Default, typename VertexPointMap_ = CGAL::Default,
+          typename FaceIndexMap_ = CGAL::Default>
 class Part_decomposer
 {
 public:
@@ -155,6 +143,10 @@ public:
   typedef typename CGAL::Default::Get<
     VertexPointMap_, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type
     Vertex_point_map;
+  /// the face index map
+  typedef typename CGAL::Default::Get<
+    FaceIndexMap_, typename GetInitializedFaceIndexMap<TriangleMesh>::const_type>::type
+    Face_index_map;
   /// the geometric traits
   typedef typename CGAL::Default::Get<
     GeomTraits_, typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type
@@ -166,8 +158,8 @@ public:
   /// \name Creation
   /// @{
   /*!
-  prepares the decomposition of `tm`, with its internal vertex point map and the default
-  normalization margin: checks the input and computes its normalization.
+  prepares the decomposition of `tm`, with its internal vertex point map and face index map and
+  the default normalization margin: checks the input and computes its normalization.
   \param tm the mesh; it must outlive the decomposer and stay unchanged
   \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
   */
@@ -176,16 +168,30 @@ public:
   {}
 
   /*!
-  prepares the decomposition of `tm`: checks the input and computes its normalization.
+  prepares the decomposition of `tm` with its internal face index map: checks the input and
+  computes its normalization.
   \param tm the mesh; it must outlive the decomposer and stay unchanged
   \param vpm the vertex point map
   \param margin the free margin of the normalization (see `compute_normalization()`)
   \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
   */
   Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = defaults::normalization_margin)
-    : m_tm(tm), m_vpm(vpm)
+    : Part_decomposer(tm, vpm, CGAL::get_initialized_face_index_map(tm), margin)
+  {}
+
+  /*!
+  prepares the decomposition of `tm`: checks the input and computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \param vpm the vertex point map
+  \param fim the face index map; every stage indexes the faces with it
+  \param margin the free margin of the normalization (see `compute_normalization()`)
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, Face_index_map fim,
+                  double margin = defaults::normalization_margin)
+    : m_tm(tm), m_vpm(vpm), m_fim(fim), m_margin(margin)
   {
-    check_input(tm, CGAL::parameters::vertex_point_map(m_vpm));
+    check_input(tm, CGAL::parameters::vertex_point_map(m_vpm).face_index_map(m_fim));
     m_normalization = compute_normalization(
       tm, parameters::combine(CGAL::parameters::vertex_point_map(m_vpm), parameters::normalization_margin(margin)));
   }
@@ -236,6 +242,8 @@ public:
 
   /// fits the superquadrics with `fit_superquadrics()`.
   /// \pre `compute_prior()` and `compute_distance_field()` were called.
+  /// \throws Invalid_input (`INVALID_PARAMETER`) if the prior and the distance field have different
+  /// resolutions or normalizations.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
@@ -243,9 +251,11 @@ public:
     CGAL_precondition(m_has_prior && m_has_tsdf);
     if(!m_has_prior || !m_has_tsdf)
       throw std::logic_error("Part_decomposer::fit_primitives() needs the prior and the distance field");
-    if(m_tsdf.values.resolution() != m_prior.classes.resolution())
-      throw Invalid_input(Input_error::INVALID_PARAMETER,
-                          "the distance field and the prior were computed at different resolutions");
+    internal::check_parameter(m_tsdf.values.resolution() == m_prior.classes.resolution(),
+                              "the resolution of the distance field", "the finest resolution of the prior");
+    check_frame(m_prior.normalization, "the normalization of the prior");
+    check_frame(m_tsdf.normalization, "the normalization of the distance field");
+    check_frame_parameters(np);
     m_fitting = m_has_zones ? fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, m_zones, np)
                             : fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, np);
     m_has_fitting = true;
@@ -253,22 +263,23 @@ public:
   }
 
   /// computes the curvature-aware over-segmentation with `Part_decomposition::over_segment()`
-  /// and returns the number of patches.
+  /// and returns the number of patches; its face graph and dihedral angles are kept for
+  /// `merge_thin_sheets()`.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_patches.assign(num_faces(m_tm), 0);
-    m_number_of_patches = Part_decomposition::over_segment<ConcurrencyTag>(m_tm, patch_map(np), with_mesh(np));
+    m_number_of_patches =
+      internal::over_segment_labels<ConcurrencyTag>(m_tm, m_fim, m_patches, with_mesh(np), nullptr, &m_adjacency);
     m_has_patches = true;
     return m_number_of_patches;
   }
 
   /*!
   assigns every patch to a primitive with `Part_decomposition::assign_parts()`, merges the thin
-  sheets unless the named parameter `merge_thin_sheets` is `false` (see `decompose()`), writes the
-  part id (0 to `K-1`) of every face to `face_part_map` and returns `K`. Part `k` is explained by
-  `part_primitives()[k]`.
+  sheets with `merge_thin_sheets()` unless the named parameter `merge_thin_sheets` is `false` (see
+  `decompose()`), writes the part id (0 to `K-1`) of every face to `face_part_map`, once, and
+  returns `K`. Part `k` is explained by `part_primitives()[k]`.
   \tparam FacePartMap a model of `WritablePropertyMap` with
   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
   \pre `fit_primitives()` and `over_segment()` were called.
@@ -280,19 +291,36 @@ public:
     CGAL_precondition(m_has_fitting && m_has_patches);
     if(!m_has_fitting || !m_has_patches)
       throw std::logic_error("Part_decomposer::assign_parts() needs the primitives and the patches");
-    m_part_to_primitive = Part_decomposition::assign_parts<ConcurrencyTag>(
-      m_tm, patch_map(np), m_fitting.labels, m_normalization, face_part_map,
-      with_mesh(np));
-    if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::merge_thin_sheets),
-                                         defaults::merge_thin_sheets))
-    {
-      const auto fim = CGAL::get_initialized_face_index_map(m_tm, np);
-      std::vector<std::size_t> part(num_faces(m_tm));
-      for(auto f : faces(m_tm)) part[get(fim, f)] = get(face_part_map, f);
-      internal::merge_thin_sheet_parts(m_tm, m_vpm, fim, m_tsdf, m_fitting, part, m_part_to_primitive);
-      for(auto f : faces(m_tm)) put(face_part_map, f, part[get(fim, f)]);
-    }
-    make_part_primitives(face_part_map);
+    check_frame(m_fitting.normalization, "the normalization of the fitting");
+    check_frame_parameters(np);
+    m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
+      m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, internal::read_assignment_parameters(np),
+      m_parts);
+    m_has_parts = true;
+    if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
+      merge_thin_sheets();
+    else
+      make_part_primitives();
+    for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
+    return m_part_to_primitive.size();
+  }
+
+  /*!
+  merges the parts that tile one thin sheet with `merge_thin_sheet_parts()`, on the face graph and
+  dihedral angles of the over-segmentation, and returns the new number of parts. `assign_parts()`
+  calls it unless `merge_thin_sheets(false)` is given; call it after such an `assign_parts()` to
+  compare `parts()` before and after.
+  \pre `assign_parts()` was called.
+  */
+  std::size_t merge_thin_sheets()
+  {
+    CGAL_precondition(m_has_parts);
+    if(!m_has_parts)
+      throw std::logic_error("Part_decomposer::merge_thin_sheets() needs the parts");
+    check_frame(m_tsdf.normalization, "the normalization of the distance field");
+    internal::merge_thin_sheets_on_faces(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting, m_parts,
+                                         m_part_to_primitive);
+    make_part_primitives();
     return m_part_to_primitive.size();
   }
   /// @}
@@ -302,6 +330,8 @@ public:
 
   /// the normalization of the mesh into the cube of the grids.
   const Normalization& normalization() const { return m_normalization; }
+  /// the face index map that indexes `patches()` and `parts()`.
+  const Face_index_map& face_index_map() const { return m_fim; }
   /// the prior. \pre `compute_prior()` was called.
   const Hierarchical_prior& prior() const { return m_prior; }
   /// the zones of the fitter. \pre `compute_fitting_zones()` was called.
@@ -312,6 +342,8 @@ public:
   const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_fitting; }
   /// the patch of each face, indexed by the face index map. \pre `over_segment()` was called.
   const std::vector<std::size_t>& patches() const { return m_patches; }
+  /// the part of each face, indexed by the face index map. \pre `assign_parts()` was called.
+  const std::vector<std::size_t>& parts() const { return m_parts; }
   /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`
   /// when no primitive was fitted to it. \pre `assign_parts()` was called.
   const std::vector<std::size_t>& part_to_primitive() const { return m_part_to_primitive; }
@@ -322,22 +354,34 @@ public:
   /// @}
 
 private:
-  // the patches as a face property map, through the face index map the stages use
-  template <typename NamedParameters>
-  auto patch_map(const NamedParameters& np)
-  {
-    return boost::make_iterator_property_map(m_patches.begin(), CGAL::get_initialized_face_index_map(m_tm, np));
-  }
-
+  // the stage's parameters with the decomposer's mesh maps and normalization
   template <typename NamedParameters>
   auto with_mesh(const NamedParameters& np) const
   {
-    return parameters::combine(np, CGAL::parameters::vertex_point_map(m_vpm),
+    check_frame_parameters(np);
+    return parameters::combine(np, CGAL::parameters::vertex_point_map(m_vpm), CGAL::parameters::face_index_map(m_fim),
                                parameters::normalization(m_normalization));
   }
 
-  template <typename FacePartMap>
-  void make_part_primitives(FacePartMap face_part_map)
+  // A normalization computed in another frame than the decomposer's: its grids would not match.
+  void check_frame(const Normalization& n, const char* what) const
+  {
+    internal::check_parameter(internal::same_frame(n, m_normalization), what,
+                              "the decomposer's (same center and scale)");
+  }
+
+  // A normalization or margin given to one stage would put its grids in another frame.
+  template <typename NamedParameters>
+  void check_frame_parameters(const NamedParameters& np) const
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    check_frame(choose_parameter(get_parameter(np, internal_np::normalization), m_normalization), "normalization");
+    internal::check_parameter(choose_parameter(get_parameter(np, internal_np::normalization_margin), m_margin) == m_margin,
+                              "normalization_margin", "the decomposer's (given to its constructor)");
+  }
+
+  void make_part_primitives()
   {
     m_part_primitives.clear();
     std::vector<std::vector<std::array<double, 3> > > orphan_points(m_part_to_primitive.size());
@@ -347,7 +391,7 @@ private:
     if(orphans)
       for(auto f : faces(m_tm))
       {
-        const std::size_t k = get(face_part_map, f);
+        const std::size_t k = m_parts[std::size_t(get(m_fim, f))];
         if(k >= m_part_to_primitive.size() || m_part_to_primitive[k] < m_fitting.input_primitives.size()) continue;
         for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
         {
@@ -366,16 +410,21 @@ private:
 
   const TriangleMesh& m_tm;
   Vertex_point_map m_vpm;
+  Face_index_map m_fim;
+  double m_margin;
   Normalization m_normalization;
   Hierarchical_prior m_prior;
   Truncated_signed_distance_field m_tsdf;
   Fitting_zones m_zones;
   Superquadric_fitting_result<Geom_traits> m_fitting;
+  internal::Face_adjacency m_adjacency; // of the over-segmentation, reused by the sheet merge
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
+  std::vector<std::size_t> m_parts;
   std::vector<std::size_t> m_part_to_primitive;
   std::vector<Primitive> m_part_primitives;
-  bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false;
+  bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false,
+       m_has_parts = false;
 };
 
 /*!
@@ -386,9 +435,11 @@ one superquadric, optionally written to an output iterator. The same input and p
 the same output, whatever the number of threads.
 
 The stages, each also available on its own: `compute_flow_freeze_prior()`, `compute_tsdf()`,
-`fit_superquadrics()`, `over_segment()`, `assign_parts()`; `Part_decomposer` runs them one by
-one. Every named parameter of these functions is accepted here and passed to the stage that reads
-it; the table below lists them all.
+`fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`;
+`Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
+and passed to the stage that reads it; the table below lists them all. The normalization is
+computed once from `normalization_margin` (a `normalization` given here must be that one).
+`face_part_map` is written once, at the end.
 
 With a parallel `ConcurrencyTag`, the stages that do not depend on each other also run at the same
 time: the prior and the distance field side by side, followed by the fitting, while the
@@ -491,12 +542,12 @@ are chained with `parameters::combine()`)
     \cgalParamDefault{`1.5`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_body_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of body seeds, in voxels}
+    \cgalParamDescription{\f$V_{min}\f$ of body seeds, in voxels of the fitting resolution \f$r_{fit}\f$}
     \cgalParamType{`double`}
     \cgalParamDefault{`5`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_surface_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of surface seeds, in voxels}
+    \cgalParamDescription{\f$V_{min}\f$ of surface seeds, in voxels of the fitting resolution \f$r_{fit}\f$}
     \cgalParamType{`double`}
     \cgalParamDefault{`3`}
   \cgalParamNEnd
@@ -566,14 +617,11 @@ are chained with `parameters::combine()`)
     \cgalParamDefault{`1`}
   \cgalParamNEnd
   \cgalParamNBegin{merge_thin_sheets}
-    \cgalParamDescription{if `true`, adjacent parts whose primitives are flat (smallest semi-axis
-                          below half the middle one) and thin (no claimed voxel deeper than 2.5
-                          voxels of the finest grid inside the shape) are merged when less than half
-                          of the length of their common boundary runs over sharp edges (dihedral
-                          angle at or above the 90-th percentile and at least 30 degrees): a thin curved shell, such as the
-                          wall of a cup or the skin of a wing, is tiled by several flat primitives
-                          and is one part. A merged part keeps the primitive that claimed the most
-                          voxels. This step is not in the paper.}
+    \cgalParamDescription{if `true`, the parts are merged by `merge_thin_sheet_parts()`: adjacent
+                          parts whose primitives are flat and thin are merged when less than half
+                          of the length of their common boundary runs over sharp edges, so that a
+                          thin curved shell, such as the wall of a cup or the skin of a wing, tiled
+                          by several flat primitives, is one part. This step is not in the paper.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
@@ -607,7 +655,7 @@ resolution \f$r\f$, plus the superquadric fits, whose number and cost depend on 
 \throws Invalid_input if `tm` cannot be decomposed (no face, a face that is not a triangle, a
 non-finite coordinate, all vertices equal, coordinates out of the range of `maximum_coordinate` and
 `minimum_extent`, a `CGAL::Surface_mesh` with garbage: see `check_input()`) or a named parameter is
-out of its range.
+out of its range (`INVALID_PARAMETER`, also for a `normalization` that is not the one computed).
 
 \cgalExample{Part_decomposition/decompose_example.cpp}
 */
@@ -620,15 +668,17 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
   const auto t0 = std::chrono::steady_clock::now();
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
-  Part_decomposer<TriangleMesh, GT, VPM> decomposer(tm, vpm, margin);
+  Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
 
   Stage_timings timings;
-  timings.overlapping = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
   // The fitting's own loops are short (one primitive at a time), so its sequential part is the
   // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
   // distance field next to each other before it.
@@ -659,6 +709,7 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
       timings.over_segmentation = internal::seconds_since(t);
     });
 
+  // the assignment, then the thin-sheet merge unless merge_thin_sheets(false), then the one write
   const auto t = std::chrono::steady_clock::now();
   const std::size_t K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),

@@ -11,7 +11,9 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -23,7 +25,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -86,7 +87,7 @@ struct Face_vector_map
 // Statistics of one over-segmentation, for benchmarks and tests.
 struct Over_segmentation_statistics
 {
-  double threshold = 0.;                 // the dihedral quantile, degrees
+  double threshold = 0.;                 // the dihedral percentile, degrees
   std::size_t number_of_cut_edges = 0;   // interior edges cut (each once)
   std::size_t number_of_components = 0;  // after the flood fill
   std::size_t number_of_split_patches = 0;  // after splitting the large components
@@ -94,52 +95,43 @@ struct Over_segmentation_statistics
   std::size_t number_of_smoothed_faces = 0;
 };
 
-// The over-segmentation as one label per face index; returns the number of patches.
-// `fim` is the face index map of `np` (or the default one), passed to be built only once.
-template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename NamedParameters>
-std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim, std::vector<std::size_t>& label,
-                                const NamedParameters& np, Over_segmentation_statistics* stats = nullptr)
+// The package parameters of `over_segment()`.
+struct Over_segmentation_parameters
+{
+  double dihedral_percentile = defaults::dihedral_percentile;
+  double minimum_patch_size = defaults::minimum_patch_size;
+  double patch_split_size = defaults::patch_split_size;
+  int smoothing_iterations = int(defaults::smoothing_iterations);
+};
+
+template <typename NamedParameters>
+Over_segmentation_parameters read_over_segmentation_parameters(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  namespace PMP = CGAL::Polygon_mesh_processing;
+  namespace inp = Part_decomposition::internal_np;
+  Over_segmentation_parameters p;
+  p.dihedral_percentile = choose_parameter(get_parameter(np, inp::dihedral_percentile), p.dihedral_percentile);
+  p.minimum_patch_size = choose_parameter(get_parameter(np, inp::minimum_patch_size), p.minimum_patch_size);
+  p.patch_split_size = choose_parameter(get_parameter(np, inp::patch_split_size), p.patch_split_size);
+  p.smoothing_iterations = choose_parameter(get_parameter(np, inp::smoothing_iterations), p.smoothing_iterations);
+  check_parameter(p.dihedral_percentile >= 0. && p.dihedral_percentile <= 100., "dihedral_percentile", "in [0, 100]");
+  check_parameter(p.minimum_patch_size >= 0. && p.minimum_patch_size <= 1., "minimum_patch_size", "in [0, 1]");
+  check_parameter(p.patch_split_size > 0. && p.patch_split_size <= 1., "patch_split_size", "in (0, 1]");
+  check_parameter(p.smoothing_iterations >= 0, "smoothing_iterations", "non-negative");
+  return p;
+}
 
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
-  typedef FaceIndexMap FIM;
-
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-
-  const double q = choose_parameter(get_parameter(np, Part_decomposition::internal_np::dihedral_percentile), defaults::dihedral_percentile);
-  const double min_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::minimum_patch_size), defaults::minimum_patch_size);
-  const double max_size =
-      choose_parameter(get_parameter(np, Part_decomposition::internal_np::patch_split_size), defaults::patch_split_size);
-  const int smoothing = choose_parameter(get_parameter(np, Part_decomposition::internal_np::smoothing_iterations), int(defaults::smoothing_iterations));
-  if(!(q >= 0. && q <= 100.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "dihedral_percentile must be in [0, 100]");
-  if(!(min_size >= 0. && min_size <= 1.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "minimum_patch_size must be in [0, 1]");
-  if(!(max_size > 0. && max_size <= 1.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "patch_split_size must be in (0, 1]");
-  if(smoothing < 0)
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "smoothing_iterations must be non-negative");
-  CGAL_precondition(CGAL::is_triangle_mesh(tm));
-
-  const std::size_t nf = num_faces(tm);
-  label.assign(nf, 0);
-  if(nf == 0) return 0;
-
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
-  const Face_adjacency adj = build_face_adjacency<ConcurrencyTag>(tm, fim, vpm, gt, face_of);
-
+// Steps 2 and 3: the cut flag of each slot; `threshold` receives the percentile.
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> cut_sharp_edges(const Face_adjacency& adj, double dihedral_percentile, double& threshold)
+{
   std::vector<double> angles = interior_edge_angles(adj);
-  const double threshold = percentile(angles, q);
+  threshold = percentile(angles, dihedral_percentile);
   const double cut_from = (std::max)(threshold - dihedral_tie_tolerance, 0.);
+  const std::size_t nf = adj.number_of_faces;
   std::vector<std::uint8_t> cut(3 * nf, 0);
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
       for(int k = 0; k < 3; ++k)
       {
@@ -149,46 +141,91 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
         cut[3 * i + k] = (adj.degenerate[i] || adj.degenerate[j] ||
                           (s >= cut_from && s > flat_dihedral_angle)) ? 1 : 0;
       }
-  });
+  }, 1024);
+  return cut;
+}
 
-  const Cut_edge_map<TriangleMesh, FIM> cut_map{&tm, fim, &cut};
-  const Face_vector_map<TriangleMesh, FIM> label_map{fim, &label};
-  const std::size_t components = PMP::connected_components(
-      tm, label_map, CGAL::parameters::edge_is_constrained_map(cut_map).face_index_map(fim));
-
-  double total_area = 0.;
-  for(double a : adj.area) total_area += a;
-  std::size_t patches = components;
-  if(max_size < 1.) patches = split_large_patches<ConcurrencyTag>(adj, cut, label, components, max_size * total_area,
-                                                   patch_gyration_ratio, flat_dihedral_angle);
-  const std::size_t split = patches;
-  merge_small_patches(adj, label, patches, min_size * total_area);
-  std::size_t merged = 0;
-  if(stats) merged = renumber_by_first_face(label);
-
+// Step 7: the smoothing passes; returns the number of faces moved.
+template <typename ConcurrencyTag>
+std::size_t smooth_patches(const Face_adjacency& adj, int iterations, std::vector<std::size_t>& label)
+{
   std::size_t smoothed = 0;
-  for(int it = 0; it < smoothing; ++it)
+  for(int it = 0; it < iterations; ++it)
   {
     const std::size_t moved = smooth_patch_boundaries<ConcurrencyTag>(adj, label);
     smoothed += moved;
     if(moved == 0) break;
   }
+  return smoothed;
+}
+
+inline std::size_t number_of_cut_edges(const Face_adjacency& adj, const std::vector<std::uint8_t>& cut)
+{
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+    for(int k = 0; k < 3; ++k)
+      if(cut[3 * i + k] && adj.neighbor[3 * i + k] > i) ++n;
+  return n;
+}
+
+// The over-segmentation (steps 2 to 8 of `over_segment()`) of the face graph `adj` of `tm`, as
+// one label per face index; returns the number of patches.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap>
+std::size_t over_segment_faces(const TriangleMesh& tm, const FaceIndexMap& fim, const Face_adjacency& adj,
+                               const Over_segmentation_parameters& p, std::vector<std::size_t>& label,
+                               Over_segmentation_statistics* stats = nullptr)
+{
+  const std::size_t nf = adj.number_of_faces;
+  label.assign(nf, 0);
+  if(nf == 0) return 0;
+
+  double threshold = 0.;
+  const std::vector<std::uint8_t> cut = cut_sharp_edges<ConcurrencyTag>(adj, p.dihedral_percentile, threshold);
+  const Cut_edge_map<TriangleMesh, FaceIndexMap> cut_map{&tm, fim, &cut};
+  const Face_vector_map<TriangleMesh, FaceIndexMap> label_map{fim, &label};
+  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(
+      tm, label_map, CGAL::parameters::edge_is_constrained_map(cut_map).face_index_map(fim));
+
+  double total_area = 0.;
+  for(double a : adj.area) total_area += a;
+  std::size_t patches = components;
+  if(p.patch_split_size < 1.)
+    patches = split_large_patches<ConcurrencyTag>(adj, cut, label, components, p.patch_split_size * total_area,
+                                                  patch_gyration_ratio, flat_dihedral_angle);
+  const std::size_t split = patches;
+  merge_small_patches(adj, label, patches, p.minimum_patch_size * total_area);
+  std::size_t merged = 0;
+  if(stats) merged = renumber_by_first_face(label);
+  const std::size_t smoothed = smooth_patches<ConcurrencyTag>(adj, p.smoothing_iterations, label);
   const std::size_t count = renumber_by_first_face(label);
 
   if(stats)
   {
     stats->threshold = threshold;
-    std::size_t n_cut = 0;
-    for(std::size_t i = 0; i < nf; ++i)
-      for(int k = 0; k < 3; ++k)
-        if(cut[3 * i + k] && adj.neighbor[3 * i + k] > i) ++n_cut;
-    stats->number_of_cut_edges = n_cut;
+    stats->number_of_cut_edges = number_of_cut_edges(adj, cut);
     stats->number_of_components = components;
     stats->number_of_split_patches = split;
     stats->number_of_merged_patches = merged;
     stats->number_of_smoothed_faces = smoothed;
   }
   return count;
+}
+
+// The over-segmentation as one label per face index; returns the number of patches.
+// `fim` is the face index map of `np` (or the default one), passed to be built only once.
+// `adjacency`, if given, receives the face graph and dihedral angles it used.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename NamedParameters>
+std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim, std::vector<std::size_t>& label,
+                                const NamedParameters& np, Over_segmentation_statistics* stats = nullptr,
+                                Face_adjacency* adjacency = nullptr)
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+  const Over_segmentation_parameters p = read_over_segmentation_parameters(np);
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+  Face_adjacency local;
+  Face_adjacency& adj = adjacency ? *adjacency : local;
+  adj = face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  return over_segment_faces<ConcurrencyTag>(tm, fim, adj, p, label, stats);
 }
 
 } // namespace internal
@@ -309,15 +346,11 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 std::size_t over_segment(const TriangleMesh& tm, FacePatchMap face_patch_map,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
   typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
   const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   std::vector<std::size_t> label;
-  const std::size_t count =
-      internal::over_segment_labels<ConcurrencyTag>(tm, fim, label, np);
+  const std::size_t count = internal::over_segment_labels<ConcurrencyTag>(tm, fim, label, np);
+  // the one conversion to the caller's map
   for(auto f : faces(tm)) put(face_patch_map, f, label[std::size_t(get(fim, f))]);
   return count;
 }

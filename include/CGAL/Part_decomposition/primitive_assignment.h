@@ -14,6 +14,8 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/claimed_voxel_search.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -26,7 +28,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -47,13 +48,11 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
                             const Claimed_voxel_search& search, const Normalization& normalization,
                             std::vector<std::int32_t>& face_label, std::vector<double>& face_distance)
 {
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   const std::size_t nf = num_faces(tm);
-  std::vector<face_descriptor> face_of(nf);
-  for(face_descriptor f : faces(tm)) face_of[std::size_t(get(fim, f))] = f;
+  const auto face_of = faces_by_index(tm, fim);
   face_label.assign(nf, -1);
   face_distance.assign(nf, 0.);
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {
       double c[3] = {0., 0., 0.};
@@ -71,7 +70,7 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
       face_label[i] = r.label;
       face_distance[i] = r.distance;
     }
-  });
+  }, 1024);
 }
 
 // Eq. 9 on flat arrays: patch[i] in [0, number_of_patches) for each face index i; writes the
@@ -93,7 +92,7 @@ std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patc
     for(std::size_t i = 0; i < nf; ++i) order[fill[patch[i]]++] = i;
   }
   std::vector<std::int32_t> winner(number_of_patches, -1);
-  chunked_for<ConcurrencyTag>(number_of_patches, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(number_of_patches, [&](std::size_t b, std::size_t e) {
     std::vector<std::pair<std::int32_t, double> > votes;
     for(std::size_t p = b; p < e; ++p)
     {
@@ -117,8 +116,94 @@ std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patc
         if(v.second > best.second || (v.second == best.second && v.first < best.first)) best = v;
       winner[p] = best.first;
     }
-  });
+  }, 1024);
   return winner;
+}
+
+// The package parameters of `assign_parts()`.
+struct Assignment_parameters
+{
+  double vote_temperature = defaults::vote_temperature;
+};
+
+template <typename NamedParameters>
+Assignment_parameters read_assignment_parameters(const NamedParameters& np)
+{
+  Assignment_parameters p;
+  p.vote_temperature = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::vote_temperature), p.vote_temperature);
+  check_positive(p.vote_temperature, "vote_temperature");
+  return p;
+}
+
+// Renumbers the patch ids to 0..A-1 in increasing order of the given ids; returns A.
+inline std::size_t make_patch_ids_consecutive(std::vector<std::size_t>& patch)
+{
+  std::size_t max_id = 0;
+  for(std::size_t p : patch) max_id = (std::max)(max_id, p);
+  std::size_t number_of_patches = 0;
+  if(max_id < patch.size())
+  {
+    std::vector<std::size_t> new_id(max_id + 1, 0);
+    for(std::size_t p : patch) new_id[p] = 1;
+    for(std::size_t& n : new_id) { const std::size_t used = n; n = number_of_patches; number_of_patches += used; }
+    for(std::size_t& p : patch) p = new_id[p];
+  }
+  else
+  {
+    std::vector<std::size_t> ids(patch);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for(std::size_t& p : patch) p = std::size_t(std::lower_bound(ids.begin(), ids.end(), p) - ids.begin());
+    number_of_patches = ids.size();
+  }
+  return number_of_patches;
+}
+
+// Step 3: the patches of one primitive form one part, parts by increasing primitive index.
+// `part` receives the part of each face index; returns the primitive of each part.
+inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>& winner,
+                                                 const std::vector<std::size_t>& patch,
+                                                 std::vector<std::size_t>& part)
+{
+  std::vector<std::size_t> primitives;
+  for(std::int32_t w : winner) primitives.push_back(std::size_t(w));
+  std::sort(primitives.begin(), primitives.end());
+  primitives.erase(std::unique(primitives.begin(), primitives.end()), primitives.end());
+  std::vector<std::size_t> part_of_patch(winner.size());
+  for(std::size_t p = 0; p < winner.size(); ++p)
+    part_of_patch[p] = std::size_t(
+        std::lower_bound(primitives.begin(), primitives.end(), std::size_t(winner[p])) - primitives.begin());
+  part.resize(patch.size());
+  for(std::size_t i = 0; i < patch.size(); ++i) part[i] = part_of_patch[patch[i]];
+  return primitives;
+}
+
+// `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of
+// each face (any ids), `part` receives its part; returns the primitive of each part.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, const FaceIndexMap& fim,
+                                                      const VertexPointMap& vpm, std::vector<std::size_t> patch,
+                                                      const Voxel_grid<std::int32_t>& claimed_labels,
+                                                      const Normalization& normalization,
+                                                      const Assignment_parameters& p,
+                                                      std::vector<std::size_t>& part)
+{
+  Claimed_voxel_search search;
+  search.build<ConcurrencyTag>(claimed_labels);
+  if(!search.any())
+  {
+    part.assign(patch.size(), 0);
+    return std::vector<std::size_t>(1, no_primitive);
+  }
+  const std::size_t number_of_patches = make_patch_ids_consecutive(patch);
+  std::vector<std::int32_t> face_label;
+  std::vector<double> face_distance;
+  nearest_claimed_voxels<ConcurrencyTag>(tm, fim, vpm, search, normalization, face_label, face_distance);
+  const double tau = p.vote_temperature * claimed_labels.voxel_size();
+  const std::vector<std::int32_t> winner =
+      vote_patch_labels<ConcurrencyTag>(patch, number_of_patches, face_label, face_distance, tau);
+  return parts_of_winners(winner, patch, part);
 }
 
 } // namespace internal
@@ -204,73 +289,20 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
                                       const Normalization& normalization, FacePartMap face_part_map,
                                       const NamedParameters& np = CGAL::parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  internal::static_check_concurrency_tag<ConcurrencyTag>();
   typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
   const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
-  const double temperature = choose_parameter(get_parameter(np, internal_np::vote_temperature), defaults::vote_temperature);
-  if(!(temperature > 0.) || !std::isfinite(temperature))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "vote_temperature must be positive and finite");
+  const internal::Assignment_parameters p = internal::read_assignment_parameters(np);
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
 
-  internal::Claimed_voxel_search search;
-  search.build<ConcurrencyTag>(claimed_labels);
-  if(!search.any())
-  {
-    for(auto f : faces(tm)) put(face_part_map, f, std::size_t(0));
-    return std::vector<std::size_t>(1, no_primitive);
-  }
-
-  // Patch ids as given, made consecutive in increasing order.
-  const std::size_t nf = num_faces(tm);
-  std::vector<std::size_t> patch(nf);
-  std::size_t max_id = 0;
-  for(auto f : faces(tm))
-  {
-    const std::size_t p = std::size_t(get(face_patch_map, f));
-    patch[std::size_t(get(fim, f))] = p;
-    max_id = (std::max)(max_id, p);
-  }
-  std::size_t number_of_patches = 0;
-  if(max_id < nf)
-  {
-    std::vector<std::size_t> new_id(max_id + 1, 0);
-    for(std::size_t p : patch) new_id[p] = 1;
-    for(std::size_t& n : new_id) { const std::size_t used = n; n = number_of_patches; number_of_patches += used; }
-    for(std::size_t& p : patch) p = new_id[p];
-  }
-  else
-  {
-    std::vector<std::size_t> ids(patch);
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    for(std::size_t& p : patch) p = std::size_t(std::lower_bound(ids.begin(), ids.end(), p) - ids.begin());
-    number_of_patches = ids.size();
-  }
-
-  std::vector<std::int32_t> face_label;
-  std::vector<double> face_distance;
-  internal::nearest_claimed_voxels<ConcurrencyTag>(tm, fim, vpm, search, normalization, face_label, face_distance);
-  const double tau = temperature * claimed_labels.voxel_size();
-  const std::vector<std::int32_t> winner =
-      internal::vote_patch_labels<ConcurrencyTag>(patch, number_of_patches, face_label, face_distance, tau);
-
-  std::vector<std::size_t> primitives;
-  for(std::int32_t w : winner) primitives.push_back(std::size_t(w));
-  std::sort(primitives.begin(), primitives.end());
-  primitives.erase(std::unique(primitives.begin(), primitives.end()), primitives.end());
-  std::vector<std::size_t> part_of_patch(number_of_patches);
-  for(std::size_t p = 0; p < number_of_patches; ++p)
-    part_of_patch[p] = std::size_t(
-        std::lower_bound(primitives.begin(), primitives.end(), std::size_t(winner[p])) - primitives.begin());
-  for(auto f : faces(tm)) put(face_part_map, f, part_of_patch[patch[std::size_t(get(fim, f))]]);
+  // the one conversion from the caller's map, and the one to the other
+  std::vector<std::size_t> patch(num_faces(tm)), part;
+  for(auto f : faces(tm)) patch[std::size_t(get(fim, f))] = std::size_t(get(face_patch_map, f));
+  std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
+      tm, fim, vpm, std::move(patch), claimed_labels, normalization, p, part);
+  for(auto f : faces(tm)) put(face_part_map, f, part[std::size_t(get(fim, f))]);
   return primitives;
 }
 

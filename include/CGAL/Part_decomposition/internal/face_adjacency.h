@@ -8,44 +8,25 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_FACE_ADJACENCY_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_FACE_ADJACENCY_H
 
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
-#include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
+#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
-
-// Calls f(begin, end) on chunks of [0, n): one call when sequential, TBB chunks otherwise.
-// Callers write only to slots they own, so the result does not depend on the chunking.
-template <typename ConcurrencyTag, typename F>
-void chunked_for(std::size_t n, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value && n > 2048)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-    return;
-  }
-#endif
-  f(std::size_t(0), n);
-}
 
 // The face graph of a triangle mesh in flat arrays indexed by the face index map. Slot 3*i+k is
 // the k-th halfedge of face i, counted from halfedge(f, tm) along next().
@@ -72,44 +53,37 @@ int slot_in_face(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
   return h == next(h0, tm) ? 1 : 2;
 }
 
-template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
-          typename GeomTraits>
-Face_adjacency build_face_adjacency(
-    const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm, const GeomTraits& gt,
-    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of)
+// The face of each face index.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+faces_by_index(const TriangleMesh& tm, const FaceIndexMap& fim)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-
-  Face_adjacency adj;
   const std::size_t nf = num_faces(tm);
-  adj.number_of_faces = nf;
-  face_of.assign(nf, face_descriptor());
+  std::vector<face_descriptor> face_of(nf, face_descriptor());
   for(face_descriptor f : faces(tm))
   {
     const std::size_t i = std::size_t(get(fim, f));
     CGAL_precondition(i < nf);
     face_of[i] = f;
   }
-  adj.neighbor.assign(3 * nf, Face_adjacency::no_face);
-  adj.angle.assign(3 * nf, 0.);
-  adj.area.assign(nf, 0.);
-  adj.centroid.assign(3 * nf, 0.);
-  adj.degenerate.assign(nf, 0);
-  std::vector<double> normal(3 * nf, 0.);
+  return face_of;
+}
 
-  // Centroids relative to a vertex of the mesh: moments of far-off meshes stay accurate.
-  double origin[3] = {0., 0., 0.};
-  if(nf > 0)
-  {
-    const auto& p = get(vpm, target(halfedge(face_of[0], tm), tm));
-    origin[0] = CGAL::to_double(p.x());
-    origin[1] = CGAL::to_double(p.y());
-    origin[2] = CGAL::to_double(p.z());
-  }
+// The neighbours, centroid (relative to `origin`), area and degeneracy of each face, and its
+// unit normal in `normal` (3 per face, 0 for a degenerate face).
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename GeomTraits>
+void compute_face_geometry(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+                           const GeomTraits& gt,
+                           const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of,
+                           const Vec3& origin, Face_adjacency& adj, std::vector<double>& normal)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   const auto vector_3 = gt.construct_vector_3_object();
   const auto cross = gt.construct_cross_product_vector_3_object();
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(adj.number_of_faces, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {
       const face_descriptor f = face_of[i];
@@ -138,11 +112,17 @@ Face_adjacency build_face_adjacency(
           adj.neighbor[3 * i + k] = std::size_t(get(fim, g));
       }
     }
-  });
+  }, 1024);
+}
 
-  // The angle depends only on the two normals: compute it on the slot of the smaller face
-  // index, then copy it to the other side (two faces sharing two edges get the same value).
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+// The dihedral angle of every interior slot. It depends only on the two normals: it is computed
+// on the slot of the smaller face index, then copied to the other side (two faces sharing two
+// edges get the same value).
+template <typename ConcurrencyTag>
+void compute_dihedral_angles(const std::vector<double>& normal, Face_adjacency& adj)
+{
+  const std::size_t nf = adj.number_of_faces;
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
       for(int k = 0; k < 3; ++k)
       {
@@ -158,8 +138,8 @@ Face_adjacency build_face_adjacency(
         const double d = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
         adj.angle[3 * i + k] = std::acos((std::max)(-1., (std::min)(1., d))) * (180. / CGAL_PI);
       }
-  });
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  }, 1024);
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
       for(int k = 0; k < 3; ++k)
       {
@@ -172,8 +152,52 @@ Face_adjacency build_face_adjacency(
             break;
           }
       }
-  });
+  }, 1024);
+}
+
+// The face graph of `tm` with its dihedral angles; `face_of` receives the face of each index.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename GeomTraits>
+Face_adjacency build_face_adjacency(
+    const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm, const GeomTraits& gt,
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of)
+{
+  face_of = faces_by_index(tm, fim);
+  const std::size_t nf = face_of.size();
+  Face_adjacency adj;
+  adj.number_of_faces = nf;
+  adj.neighbor.assign(3 * nf, Face_adjacency::no_face);
+  adj.angle.assign(3 * nf, 0.);
+  adj.area.assign(nf, 0.);
+  adj.centroid.assign(3 * nf, 0.);
+  adj.degenerate.assign(nf, 0);
+
+  // Centroids relative to a vertex of the mesh: moments of far-off meshes stay accurate.
+  Vec3 origin = {{0., 0., 0.}};
+  if(nf > 0)
+  {
+    const auto& p = get(vpm, target(halfedge(face_of[0], tm), tm));
+    origin = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  }
+  std::vector<double> normal(3 * nf, 0.);
+  compute_face_geometry<ConcurrencyTag>(tm, fim, vpm, gt, face_of, origin, adj, normal);
+  compute_dihedral_angles<ConcurrencyTag>(normal, adj);
   return adj;
+}
+
+// The face graph of `tm` with the vertex point map and geometric traits of `np` (the graph of
+// the over-segmentation, which the thin-sheet merge reuses).
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename NamedParameters>
+Face_adjacency face_adjacency_of(const TriangleMesh& tm, const FaceIndexMap& fim, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
+  return build_face_adjacency<ConcurrencyTag>(tm, fim, vpm, gt, face_of);
 }
 
 } // namespace internal

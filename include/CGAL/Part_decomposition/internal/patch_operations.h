@@ -9,6 +9,9 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_PATCH_OPERATIONS_H
 
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
+#include <CGAL/Union_find.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_sort.h>
@@ -21,27 +24,12 @@
 #include <cstring>
 #include <functional>
 #include <queue>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
-
-// The q-th percentile (q in [0,100]) of `values` with linear interpolation between the closest
-// ranks (position (n-1) q/100, as numpy's default). `values` is reordered. 0 if empty.
-inline double percentile(std::vector<double>& values, double q)
-{
-  if(values.empty()) return 0.;
-  const double h = double(values.size() - 1) * q / 100.;
-  const std::size_t lo = (std::min)(values.size() - 1, std::size_t(std::floor(h)));
-  std::nth_element(values.begin(), values.begin() + lo, values.end());
-  const double v_lo = values[lo];
-  if(lo + 1 >= values.size()) return v_lo;
-  const double v_hi = *std::min_element(values.begin() + lo + 1, values.end());
-  return v_lo + (h - double(lo)) * (v_hi - v_lo);
-}
 
 // The dihedral angles of the interior edges between two faces of non-zero area, once per edge.
 inline std::vector<double> interior_edge_angles(const Face_adjacency& adj)
@@ -77,6 +65,45 @@ inline std::size_t renumber_by_first_face(std::vector<std::size_t>& label)
   return count;
 }
 
+// The uncut interior edges of the patches marked `large`, as sort keys in increasing order: the
+// angle as a float (its bits order like the value for angles >= 0), then the slot, then whether
+// the edge is flat (angle <= `flat_angle`). Every key is unique and equal floats fall back to
+// the slot order, so any sort gives the same order.
+template <typename ConcurrencyTag>
+std::vector<std::uint64_t> uncut_edges_by_angle(const Face_adjacency& adj, const std::vector<std::uint8_t>& cut,
+                                                const std::vector<std::size_t>& label,
+                                                const std::vector<std::uint8_t>& large, double flat_angle)
+{
+  const std::size_t nf = adj.number_of_faces;
+  CGAL_precondition(3 * nf < (std::size_t(1) << 31));
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * nf / 2);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    if(!large[label[i]]) continue;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j != Face_adjacency::no_face && j > i && !cut[3 * i + k])
+      {
+        const double angle = adj.angle[3 * i + k];
+        const float a = float(angle);
+        std::uint32_t bits;
+        std::memcpy(&bits, &a, sizeof bits);
+        edges.push_back((std::uint64_t(bits) << 32) | (std::uint64_t(3 * i + k) << 1) |
+                        std::uint64_t(angle <= flat_angle ? 1 : 0));
+      }
+    }
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel_tag<ConcurrencyTag>())
+    tbb::parallel_sort(edges.begin(), edges.end());
+  else
+#endif
+    std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
 // Splits every patch of area above `max_area` by an ordered flood fill: its uncut edges are
 // crossed by increasing dihedral angle (ties: slot order), joining the two sides unless the
 // joined piece would have an area above `max_area` or a squared radius of gyration (area-weighted,
@@ -99,65 +126,34 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
     if(patch_area[p] > max_area) large[p] = 1, any = true;
   if(!any) return renumber_by_first_face(label);
 
-  // Sort keys: the angle as a float (its bits order like the value for angles >= 0), then the
-  // slot, then whether the edge is flat: every key is unique and equal floats fall back to the
-  // slot order.
-  CGAL_precondition(3 * nf < (std::size_t(1) << 31));
-  std::vector<std::uint64_t> edges;
-  edges.reserve(3 * nf / 2);
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    if(!large[label[i]]) continue;
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t j = adj.neighbor[3 * i + k];
-      if(j != Face_adjacency::no_face && j > i && !cut[3 * i + k])
-      {
-        const double angle = adj.angle[3 * i + k];
-        const float a = float(angle);
-        std::uint32_t bits;
-        std::memcpy(&bits, &a, sizeof bits);
-        edges.push_back((std::uint64_t(bits) << 32) | (std::uint64_t(3 * i + k) << 1) |
-                        std::uint64_t(angle <= flat_angle ? 1 : 0));
-      }
-    }
-  }
-  // Keys are unique: any sort gives the same order.
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    tbb::parallel_sort(edges.begin(), edges.end());
-  else
-#endif
-    std::sort(edges.begin(), edges.end());
+  const std::vector<std::uint64_t> edges = uncut_edges_by_angle<ConcurrencyTag>(adj, cut, label, large, flat_angle);
 
-  // Union-find over faces; each root holds the area and the area-weighted first and second
-  // moments of the face centroids of its piece (one record: one cache miss per root).
-  struct Piece { double area, mx, my, mz, m2; };
-  std::vector<std::uint32_t> parent(nf);
-  std::vector<Piece> piece(nf);
+  // Union-find over faces; the value of each root holds its piece: the area and the
+  // area-weighted first and second moments of its face centroids, and its smallest face index.
+  struct Piece { double area, mx, my, mz, m2; std::size_t first; };
+  typedef CGAL::Union_find<Piece> Pieces;
+  Pieces pieces;
+  std::vector<typename Pieces::handle> piece_of;
+  piece_of.reserve(nf);
   for(std::size_t i = 0; i < nf; ++i)
   {
-    parent[i] = std::uint32_t(i);
     const double* c = &adj.centroid[3 * i];
     const double a = adj.area[i];
-    piece[i] = Piece{a, a * c[0], a * c[1], a * c[2], a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2])};
+    piece_of.push_back(pieces.make_set(Piece{a, a * c[0], a * c[1], a * c[2],
+                                             a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), i}));
   }
-  auto find = [&](std::uint32_t p) {
-    std::uint32_t r = p;
-    while(parent[r] != r) r = parent[r];
-    while(parent[p] != r) { const std::uint32_t n = parent[p]; parent[p] = r; p = n; }
-    return r;
-  };
   const double max_gyration = gyration_ratio * max_area;
   for(const std::uint64_t key : edges)
   {
     const std::size_t slot = std::size_t((key >> 1) & 0x7fffffffu);
     const bool flat = (key & 1u) != 0;
-    const std::uint32_t a = find(std::uint32_t(slot / 3)), b = find(std::uint32_t(adj.neighbor[slot]));
+    const typename Pieces::handle a = pieces.find(piece_of[slot / 3]);
+    const typename Pieces::handle b = pieces.find(piece_of[adj.neighbor[slot]]);
     if(a == b) continue;
-    const Piece& pa = piece[a];
-    const Piece& pb = piece[b];
-    const Piece m{pa.area + pb.area, pa.mx + pb.mx, pa.my + pb.my, pa.mz + pb.mz, pa.m2 + pb.m2};
+    const Piece& pa = *a;
+    const Piece& pb = *b;
+    const Piece m{pa.area + pb.area, pa.mx + pb.mx, pa.my + pb.my, pa.mz + pb.mz, pa.m2 + pb.m2,
+                  (std::min)(pa.first, pb.first)};
     if(!flat)
     {
       if(m.area > max_area) continue;
@@ -167,13 +163,12 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
         if(g > max_gyration) continue;
       }
     }
-    const std::uint32_t r = (std::min)(a, b), s = (std::max)(a, b);
-    parent[s] = r;
-    piece[r] = m;
+    pieces.unify_sets(a, b);
+    *pieces.find(a) = m;
   }
   // Pieces of split patches get ids after the unchanged ones; renumbering orders them all.
   for(std::size_t i = 0; i < nf; ++i)
-    if(large[label[i]]) label[i] = number_of_patches + find(std::uint32_t(i));
+    if(large[label[i]]) label[i] = number_of_patches + pieces.find(piece_of[i])->first;
   return renumber_by_first_face(label);
 }
 
@@ -201,6 +196,7 @@ inline void merge_small_patches(const Face_adjacency& adj, std::vector<std::size
       links[label[i]].push_back(Link{label[j], adj.angle[3 * i + k]});
     }
 
+  // Not CGAL::Union_find: the root must be the patch merged into, whose id breaks the ties.
   std::vector<std::size_t> parent(np);
   for(std::size_t p = 0; p < np; ++p) parent[p] = p;
   auto find = [&](std::size_t p) {
@@ -262,7 +258,7 @@ std::size_t smooth_patch_boundaries(const Face_adjacency& adj, std::vector<std::
   const std::size_t none = Face_adjacency::no_face;
   // target[i]: the patch holding two or more neighbours of i (none if no such patch).
   std::vector<std::size_t> target(nf, none);
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {
       const std::size_t* nb = &adj.neighbor[3 * i];
@@ -275,10 +271,10 @@ std::size_t smooth_patch_boundaries(const Face_adjacency& adj, std::vector<std::
           break;
         }
     }
-  });
+  }, 1024);
   std::vector<std::size_t> next_label(label);
   std::vector<std::uint8_t> moved(nf, 0);
-  chunked_for<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {
       if(target[i] == none) continue;
@@ -290,7 +286,7 @@ std::size_t smooth_patch_boundaries(const Face_adjacency& adj, std::vector<std::
       }
       if(stable >= 2) { next_label[i] = target[i]; moved[i] = 1; }
     }
-  });
+  }, 1024);
   label.swap(next_label);
   std::size_t count = 0;
   for(std::uint8_t m : moved) count += m;

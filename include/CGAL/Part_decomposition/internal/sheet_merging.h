@@ -8,15 +8,19 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_SHEET_MERGING_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_SHEET_MERGING_H
 
-#include <CGAL/Part_decomposition/Voxel_grid.h>
-#include <CGAL/Part_decomposition/internal/grid_morphology.h>
-#include <CGAL/Part_decomposition/primitive_assignment.h>
-#include <CGAL/Part_decomposition/superquadric_fitting.h>
-#include <CGAL/Part_decomposition/tsdf.h>
+// The steps of `merge_thin_sheet_parts()` (thin_sheet_merging.h), on vectors indexed by the face
+// index map and on the face graph of the over-segmentation.
 
+#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/stage_results.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
+#include <CGAL/Union_find.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
-#include <CGAL/number_type_config.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -41,44 +45,31 @@ struct Sheet_merging_thresholds
   double maximum_depth = 2.5;
   // two sheets merge unless this fraction of their seam lies on sharp edges
   double sharp_seam_fraction = 0.5;
-  // sharp: a dihedral angle at or above this percentile of the mesh's interior edges and at or
-  // above the minimum angle, in degrees (the sides of a 16-gon prism, 22.5 degrees apart, are smooth)
+  // sharp: a dihedral angle at or above this percentile of the mesh's interior edges (nearest
+  // rank below) and at or above the minimum angle, in degrees (the sides of a 16-gon prism,
+  // 22.5 degrees apart, are smooth)
   double sharp_edge_percentile = 90.;
   double minimum_sharp_angle = 30.;
+  // the angle an edge of a zero-area face (no normal) counts with, in degrees
+  double degenerate_edge_angle = 90.;
 };
 
-
-/*
-Thin shells (the wall of a cup, the skin of a wing, a table top a few voxels thick) are fitted by
-several flat superquadrics that tile one smooth sheet: the fitter cannot grow one primitive along
-a curved shell. Parts whose primitives are flat and thin are merged with their flat, thin
-neighbours across every seam that mostly runs over smooth edges; a seam on a crease (the rim of a
-table top, a wing's edge against the fuselage) keeps them apart. A merged part keeps the primitive
-that claimed the most voxels.
-
-`part` holds the part of each face (by face index) and `part_to_primitive` the primitive of each
-part; both are renumbered in place. Returns the new number of parts.
-*/
-template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename GeomTraits>
-std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
-                                   const Truncated_signed_distance_field& tsdf,
+// Whether each part is a thin sheet: its primitive is flat and claims no voxel deeper than the
+// maximum depth inside the shape (`tsdf_values`: negative inside).
+template <typename GeomTraits>
+std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
                                    const Superquadric_fitting_result<GeomTraits>& fitting,
-                                   std::vector<std::size_t>& part,
-                                   std::vector<std::size_t>& part_to_primitive,
-                                   const Sheet_merging_thresholds& th = Sheet_merging_thresholds())
+                                   const std::vector<std::size_t>& part_to_primitive,
+                                   const Sheet_merging_thresholds& th)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  const std::size_t K = part_to_primitive.size();
-  if(K < 2) return K;
-
   // Depth of each voxel inside the shape, in voxels: its distance to the nearest outside voxel.
-  const std::size_t n_voxels = tsdf.values.size();
-  Voxel_grid<std::uint8_t> outside(tsdf.values.resolution(), 0);
-  for(std::size_t v = 0; v < n_voxels; ++v) outside[v] = tsdf.values[v] > 0. ? 1 : 0;
+  const std::size_t n_voxels = tsdf_values.size();
+  Voxel_grid<std::uint8_t> outside(tsdf_values.resolution(), 0);
+  for(std::size_t v = 0; v < n_voxels; ++v) outside[v] = tsdf_values[v] > 0. ? 1 : 0;
   const Voxel_grid<double> depth2 = squared_distance_transform<CGAL::Sequential_tag>(outside);
 
+  const std::size_t K = part_to_primitive.size();
   std::vector<char> sheet(K, 0);
-  bool any_sheet = false;
   for(std::size_t k = 0; k < K; ++k)
   {
     const std::size_t q = part_to_primitive[k];
@@ -89,45 +80,46 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, VertexPointMap vpm, F
     for(std::size_t v : fitting.claimed_voxels[q])
       if(v < n_voxels) deepest2 = (std::max)(deepest2, depth2[v]);
     sheet[k] = (a[0] * th.flatness_ratio < a[1] && deepest2 <= th.maximum_depth * th.maximum_depth) ? 1 : 0;
-    any_sheet = any_sheet || sheet[k];
   }
-  if(!any_sheet) return K;
+  return sheet;
+}
 
-  // Unit face normals, for the dihedral angle of each interior edge.
-  const std::size_t nf = part.size();
-  std::vector<std::array<double, 3> > normal(nf, {{0., 0., 0.}});
-  for(auto f : faces(tm))
-  {
-    std::array<std::array<double, 3>, 3> p;
-    int c = 0;
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
-    {
-      if(c == 3) break;
-      const auto& q = get(vpm, v);
-      p[c++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-    }
-    if(c < 3) continue;
-    const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    const double w[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if(len > 0. && std::isfinite(len))
-      normal[get(fim, f)] = {{n[0] / len, n[1] / len, n[2] / len}};
-  }
+// An interior edge between two sheets of different parts p < q.
+struct Seam_edge
+{
+  std::size_t p, q;
+  double angle, length;
+};
 
-  struct Seam_edge { std::size_t p, q; double angle, length; };
-  std::vector<Seam_edge> seam;
-  std::vector<double> angles;
+// The dihedral angle of the edge of halfedge `h` as the merge counts it, in degrees.
+template <typename TriangleMesh, typename FaceIndexMap>
+double sheet_edge_angle(const TriangleMesh& tm, const FaceIndexMap& fim, const Face_adjacency& adj,
+                        typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                        const Sheet_merging_thresholds& th)
+{
+  const std::size_t a = std::size_t(get(fim, face(h, tm))), b = std::size_t(get(fim, face(opposite(h, tm), tm)));
+  if(adj.degenerate[a] || adj.degenerate[b]) return th.degenerate_edge_angle;
+  return adj.angle[3 * a + std::size_t(slot_in_face(h, tm))];
+}
+
+// The angle of every interior edge (`angles`) and the seams between sheets of different parts,
+// in the order of `edges(tm)` (the seam lengths are summed in this order).
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+void collect_seam_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& fim,
+                        const Face_adjacency& adj, const std::vector<std::size_t>& part,
+                        const std::vector<char>& sheet, const Sheet_merging_thresholds& th,
+                        std::vector<double>& angles, std::vector<Seam_edge>& seam)
+{
+  const std::size_t K = sheet.size();
   angles.reserve(num_edges(tm));
   for(auto e : edges(tm))
   {
-    const typename GT::halfedge_descriptor h = halfedge(e, tm);
+    const auto h = halfedge(e, tm);
     if(is_border_edge(h, tm)) continue;
-    const std::size_t a = get(fim, face(h, tm)), b = get(fim, face(opposite(h, tm), tm));
-    const double d = normal[a][0] * normal[b][0] + normal[a][1] * normal[b][1] + normal[a][2] * normal[b][2];
-    const double angle = std::acos((std::max)(-1., (std::min)(1., d)));
+    const double angle = sheet_edge_angle(tm, fim, adj, h, th);
     angles.push_back(angle);
-    const std::size_t pa = part[a], pb = part[b];
+    const std::size_t pa = part[std::size_t(get(fim, face(h, tm)))];
+    const std::size_t pb = part[std::size_t(get(fim, face(opposite(h, tm), tm)))];
     if(pa == pb || pa >= K || pb >= K || !sheet[pa] || !sheet[pb]) continue;
     const auto& s = get(vpm, source(h, tm));
     const auto& t = get(vpm, target(h, tm));
@@ -136,11 +128,22 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, VertexPointMap vpm, F
     const double dz = CGAL::to_double(s.z()) - CGAL::to_double(t.z());
     seam.push_back({(std::min)(pa, pb), (std::max)(pa, pb), angle, std::sqrt(dx * dx + dy * dy + dz * dz)});
   }
-  if(seam.empty()) return K;
-  const std::size_t rank = std::size_t(th.sharp_edge_percentile / 100. * double(angles.size() - 1));
-  std::nth_element(angles.begin(), angles.begin() + rank, angles.end());
-  const double sharp = (std::max)(angles[rank], th.minimum_sharp_angle * CGAL_PI / 180.);
+}
 
+// The angle from which an edge is sharp: the percentile of `angles` at the nearest rank below
+// (`angles` is reordered), and at least the minimum angle.
+inline double sharp_edge_angle(std::vector<double>& angles, const Sheet_merging_thresholds& th)
+{
+  const std::size_t rank = std::size_t(th.sharp_edge_percentile / 100. * double(angles.size() - 1));
+  return (std::max)(value_at_rank(angles, double(rank)), th.minimum_sharp_angle);
+}
+
+// The new part of each old part: sheets joined across every seam that is mostly smooth, numbered
+// in order of their first old part. Returns the number of new parts.
+inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>& seam, double sharp,
+                                                   std::size_t K, const Sheet_merging_thresholds& th,
+                                                   std::vector<std::size_t>& old_to_new)
+{
   // (sharp length, total length) of the seam of each pair of sheets
   std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > seams;
   for(const Seam_edge& e : seam)
@@ -149,40 +152,78 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, VertexPointMap vpm, F
     s.second += e.length;
     if(e.angle >= sharp) s.first += e.length;
   }
-  std::vector<std::size_t> leader(K);
-  for(std::size_t k = 0; k < K; ++k) leader[k] = k;
-  auto find = [&leader](std::size_t x) {
-    while(leader[x] != x) x = leader[x] = leader[leader[x]];
-    return x;
-  };
+  // the value of each set is one of its parts: the key of its new id
+  typedef CGAL::Union_find<std::size_t> Groups;
+  Groups groups;
+  std::vector<Groups::handle> group_of;
+  for(std::size_t k = 0; k < K; ++k) group_of.push_back(groups.make_set(k));
   for(const auto& s : seams)
     if(s.second.first < th.sharp_seam_fraction * s.second.second)
-    {
-      const std::size_t a = find(s.first.first), b = find(s.first.second);
-      if(a != b) leader[(std::max)(a, b)] = (std::min)(a, b);
-    }
+      groups.unify_sets(group_of[s.first.first], group_of[s.first.second]);
 
-  // Renumber in order of first part id; each merged part keeps its largest primitive.
-  std::vector<std::size_t> new_id(K, std::size_t(-1)), old_to_new(K);
+  const std::size_t unset = std::size_t(-1);
+  std::vector<std::size_t> new_id(K, unset);
+  old_to_new.assign(K, 0);
   std::size_t K2 = 0;
   for(std::size_t k = 0; k < K; ++k)
   {
-    const std::size_t r = find(k);
-    if(new_id[r] == std::size_t(-1)) new_id[r] = K2++;
+    const std::size_t r = *groups.find(group_of[k]);
+    if(new_id[r] == unset) new_id[r] = K2++;
     old_to_new[k] = new_id[r];
   }
-  std::vector<std::size_t> primitive(K2, no_primitive), volume(K2, 0);
-  for(std::size_t k = 0; k < K; ++k)
+  return K2;
+}
+
+// The primitive of each new part: of its old parts' primitives, the one that claimed the most
+// voxels (the first on a tie).
+template <typename GeomTraits>
+std::vector<std::size_t> largest_primitives(const std::vector<std::size_t>& old_to_new, std::size_t K2,
+                                            const std::vector<std::size_t>& part_to_primitive,
+                                            const Superquadric_fitting_result<GeomTraits>& fitting)
+{
+  std::vector<std::size_t> primitive(K2, 0), volume(K2, 0);
+  std::vector<char> has(K2, 0);
+  for(std::size_t k = 0; k < old_to_new.size(); ++k)
   {
     const std::size_t n = old_to_new[k], q = part_to_primitive[k];
     const std::size_t size = q < fitting.claimed_voxels.size() ? fitting.claimed_voxels[q].size() + 1 : 0;
-    if(primitive[n] == no_primitive || size > volume[n])
+    if(!has[n] || size > volume[n])
     {
       primitive[n] = q;
       volume[n] = size;
+      has[n] = 1;
     }
   }
-  part_to_primitive.swap(primitive);
+  return primitive;
+}
+
+/*
+The sheet merge (see `merge_thin_sheet_parts()`) on the face graph `adj` of the over-segmentation
+of `tm` (face indices of `fim`): `part` holds the part of each face index and `part_to_primitive`
+the primitive of each part; both are renumbered in place. Returns the new number of parts.
+*/
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename GeomTraits>
+std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& fim,
+                                       const Face_adjacency& adj, const Voxel_grid<double>& tsdf_values,
+                                       const Superquadric_fitting_result<GeomTraits>& fitting,
+                                       std::vector<std::size_t>& part,
+                                       std::vector<std::size_t>& part_to_primitive,
+                                       const Sheet_merging_thresholds& th = Sheet_merging_thresholds())
+{
+  const std::size_t K = part_to_primitive.size();
+  if(K < 2) return K;
+  const std::vector<char> sheet = thin_sheet_parts(tsdf_values, fitting, part_to_primitive, th);
+  if(std::find(sheet.begin(), sheet.end(), 1) == sheet.end()) return K;
+
+  std::vector<double> angles;
+  std::vector<Seam_edge> seam;
+  collect_seam_edges(tm, vpm, fim, adj, part, sheet, th, angles, seam);
+  if(seam.empty()) return K;
+  const double sharp = sharp_edge_angle(angles, th);
+
+  std::vector<std::size_t> old_to_new;
+  const std::size_t K2 = join_sheets_across_smooth_seams(seam, sharp, K, th, old_to_new);
+  part_to_primitive = largest_primitives(old_to_new, K2, part_to_primitive, fitting);
   for(std::size_t& p : part)
     if(p < K) p = old_to_new[p];
   return K2;

@@ -1,13 +1,10 @@
-// Curvature-aware over-segmentation, SQ-to-mesh assignment (Eq. 9), the thin-sheet merge, and the
-// whole decomposition on the shipped example meshes against their true parts.
+// The mesh side of the assignment (paper App. E.3, E.4): the curvature-aware over-segmentation
+// into patches, and the distance-weighted vote (Eq. 9) that turns patches into parts.
 #include <catch2/catch.hpp>
 
-#include <CGAL/Part_decomposition/IO/read_mesh.h>
-#include <CGAL/Part_decomposition/decompose.h>
-#include <CGAL/Part_decomposition/internal/sheet_merging.h>
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -15,16 +12,17 @@
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "shipped_shapes.h"
 #include "test_shapes.h"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace PD = CGAL::Part_decomposition;
+namespace PDP = CGAL::Part_decomposition::parameters;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using test_shapes::K;
 using test_shapes::Mesh;
@@ -32,19 +30,6 @@ using test_shapes::Point;
 typedef Mesh::Face_index face_descriptor;
 
 namespace {
-
-// A shipped example mesh (examples/Part_decomposition/data/NAME.off) and its true part per face.
-std::vector<std::size_t> read_shipped_shape(const std::string& name, Mesh& m)
-{
-  const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + name;
-  PD::IO::read_triangle_mesh(base + ".off", m);
-  std::ifstream in(base + ".seg");
-  std::vector<std::size_t> truth;
-  std::size_t l;
-  while(in >> l) truth.push_back(l);
-  REQUIRE(truth.size() == num_faces(m));
-  return truth;
-}
 
 std::vector<std::size_t> patches_of(Mesh& m, std::size_t& count, double quantile = 90.,
                                     double min_size = 0.001, double max_size = 0.003, int smoothing = 1)
@@ -161,9 +146,24 @@ std::vector<std::int32_t> brute_force_votes(const Mesh& m, const std::vector<std
   return out;
 }
 
+
+// The ball of radius 0.4 and three primitives claiming slabs of it: 9 for x < -0.1, 5 for
+// -0.1 <= x < 0.15, 2 above.
+PD::Voxel_grid<std::int32_t> three_slab_claims()
+{
+  PD::Voxel_grid<std::int32_t> claimed(16, -1);
+  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  {
+    const auto c = claimed.center(idx);
+    if(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 0.3 * 0.3) continue;
+    claimed[idx] = c[0] < -0.1 ? 9 : (c[0] < 0.15 ? 5 : 2);
+  }
+  return claimed;
+}
+
 } // namespace
 
-TEST_CASE("percentile interpolates linearly between the closest ranks", "[over_segmentation]")
+TEST_CASE("the dihedral threshold interpolates linearly between the closest ranks", "[over_segmentation]")
 {
   std::vector<double> v = {30., 0., 20., 10.};
   CHECK(PD::internal::percentile(v, 50.) == Approx(15.));
@@ -328,6 +328,44 @@ TEST_CASE("invalid over-segmentation parameters throw", "[over_segmentation]")
   CHECK_THROWS_AS(PD::over_segment(m, map, PD::parameters::smoothing_iterations(-1)), PD::Invalid_input);
 }
 
+TEST_CASE("over_segment with every default given explicitly gives the default patches", "[over_segmentation][defaults]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4); // 5120 faces
+  std::vector<std::size_t> a(num_faces(m)), b(num_faces(m));
+  const std::size_t na = PD::over_segment(m, CGAL::make_property_map(a));
+  const std::size_t nb = PD::over_segment(
+      m, CGAL::make_property_map(b),
+      PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m))
+                       .face_index_map(get(CGAL::face_index, m))
+                       .geom_traits(K()),
+                   PDP::dihedral_percentile(PD::defaults::dihedral_percentile),
+                   PDP::minimum_patch_size(PD::defaults::minimum_patch_size),
+                   PDP::patch_split_size(PD::defaults::patch_split_size),
+                   PDP::smoothing_iterations(PD::defaults::smoothing_iterations)));
+  CHECK(na == nb);
+  CHECK(a == b);
+  // patches of 0.1 to 0.2 percent of the area
+  CHECK(na >= 400);
+  CHECK(na <= 1000);
+}
+
+TEST_CASE("the former names of dihedral_percentile and patch_split_size still work", "[over_segmentation]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
+  std::vector<std::size_t> renamed(num_faces(m)), former(num_faces(m)), by_default(num_faces(m));
+  const auto np = PDP::combine(PDP::dihedral_percentile(80.), PDP::patch_split_size(0.01));
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  const auto former_np = PDP::combine(PDP::dihedral_quantile(80.), PDP::maximum_patch_size(0.01));
+#pragma GCC diagnostic pop
+  const std::size_t n_renamed = PD::over_segment(m, CGAL::make_property_map(renamed), np);
+  const std::size_t n_former = PD::over_segment(m, CGAL::make_property_map(former), former_np);
+  CHECK(n_former == n_renamed);
+  CHECK(former == renamed);
+  // the values reached the stage: a cap twenty times the default gives fewer patches
+  CHECK(n_renamed < PD::over_segment(m, CGAL::make_property_map(by_default)));
+}
+
 TEST_CASE("the nearest claimed voxel is exact, near and far from the claims", "[assignment]")
 {
   const int r = 16;
@@ -411,15 +449,7 @@ TEST_CASE("a patch takes the distance-weighted majority of its faces", "[assignm
 TEST_CASE("parts merge the patches of one primitive and follow a brute-force reference", "[assignment]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3); // 1280 faces
-  const int r = 16;
-  PD::Voxel_grid<std::int32_t> claimed(r, -1);
-  // Three primitives claim slabs of the ball: 9 for x < -0.1, 5 for -0.1 <= x < 0.15, 2 above.
-  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
-  {
-    const auto c = claimed.center(idx);
-    if(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 0.3 * 0.3) continue;
-    claimed[idx] = c[0] < -0.1 ? 9 : (c[0] < 0.15 ? 5 : 2);
-  }
+  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
   std::size_t count = 0;
   const std::vector<std::size_t> patch = patches_of(m, count);
   REQUIRE(count > 20);
@@ -481,7 +511,7 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   // The dumbbell is the union of two balls (radius 0.3 at x = -0.7 and 0.7) and a bar (capsule of
   // radius 0.1 between them); its .seg holds the true part of each face (0, 1, 2 from left).
   Mesh m;
-  const std::vector<std::size_t> truth = read_shipped_shape("dumbbell", m);
+  const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", m);
 
   // Claimed voxels: the inside of each primitive (the balls win over the bar), at r = 64.
   const PD::Normalization n = PD::compute_normalization(m);
@@ -507,145 +537,19 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   CHECK(double(correct) / double(num_faces(m)) > 0.97);
 }
 
-TEST_CASE("the shipped example meshes load and carry one label per face", "[data]")
+TEST_CASE("assign_parts with every default given explicitly gives the default parts", "[assignment][defaults]")
 {
-  const std::map<std::string, std::pair<int, int> > expected = {
-      {"table", {5, 5}}, {"animal", {6, 8}}, {"dumbbell", {3, 3}}};
-  for(const auto& e : expected)
-  {
-    INFO(e.first);
-    const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + e.first;
-    Mesh m;
-    const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(base + ".off", m);
-    CHECK(info.number_of_input_faces == num_faces(m));
-    CHECK(info.number_of_input_faces >= 3000);
-    CHECK(info.number_of_input_faces <= 10000);
-    CHECK(CGAL::is_closed(m));
-    std::ifstream in(base + ".seg");
-    REQUIRE(in);
-    std::vector<int> labels;
-    int l;
-    while(in >> l) labels.push_back(l);
-    CHECK(labels.size() == info.number_of_input_faces);
-    const std::set<int> distinct(labels.begin(), labels.end());
-    CHECK(int(distinct.size()) >= e.second.first);
-    CHECK(int(distinct.size()) <= e.second.second);
-    CHECK(*distinct.begin() == 0);
-    CHECK(*distinct.rbegin() == int(distinct.size()) - 1);
-  }
-}
-
-namespace {
-
-// A thin box (or slab) split in two parts by the plane x = 0, or with its top face (z = max) as
-// one part and the rest as the other; each part gets a primitive of the given semi-axes and claims
-// the inside voxels of its side.
-struct Sheet_case
-{
-  Mesh mesh;
-  PD::Truncated_signed_distance_field tsdf;
-  PD::Superquadric_fitting_result<K> fitting;
-  std::vector<std::size_t> part;
-  std::vector<std::size_t> part_to_primitive{0, 1};
-};
-
-Sheet_case make_sheet_case(double thickness, bool split_by_top_face, const std::array<double, 3>& scales)
-{
-  Sheet_case c;
-  c.mesh = test_shapes::make_box(Point(-1, -1, -thickness / 2), Point(1, 1, thickness / 2), 16);
-  c.tsdf = PD::compute_tsdf(c.mesh);
-  const PD::Superquadric<K>::Rotation identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
-  for(int k = 0; k < 2; ++k)
-    c.fitting.primitives.push_back(PD::Superquadric<K>(scales, 1., 1., identity, Point(k ? 0.25 : -0.25, 0, 0)));
-  c.fitting.claimed_voxels.resize(2);
-  for(std::size_t v = 0; v < c.tsdf.values.size(); ++v)
-    if(c.tsdf.values[v] < 0.)
-      c.fitting.claimed_voxels[c.tsdf.values.center(v)[0] < 0. ? 0 : 1].push_back(v);
-  for(face_descriptor f : faces(c.mesh))
-  {
-    double x = 0., z = 0.;
-    for(auto v : vertices_around_face(halfedge(f, c.mesh), c.mesh))
-    {
-      x += c.mesh.point(v).x() / 3.;
-      z += c.mesh.point(v).z() / 3.;
-    }
-    c.part.push_back(split_by_top_face ? (z > thickness / 2 - 1e-9 ? 0 : 1) : (x < 0. ? 0 : 1));
-  }
-  return c;
-}
-
-std::size_t merge(Sheet_case& c)
-{
-  return PD::internal::merge_thin_sheet_parts(c.mesh, get(CGAL::vertex_point, c.mesh),
-                                              get(CGAL::face_index, c.mesh), c.tsdf, c.fitting,
-                                              c.part, c.part_to_primitive);
-}
-
-} // namespace
-
-TEST_CASE("flat thin parts that meet along smooth edges become one part", "[sheet_merge]")
-{
-  // 2 x 2 x 0.06: about two voxels thick in the 64^3 grid, the primitives are flat.
-  Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.03}});
-  const std::size_t n0 = c.fitting.claimed_voxels[0].size(), n1 = c.fitting.claimed_voxels[1].size();
-  REQUIRE(n0 > 0);
-  REQUIRE(n1 > 0);
-  CHECK(merge(c) == 1u);
-  CHECK(std::set<std::size_t>(c.part.begin(), c.part.end()) == std::set<std::size_t>{0});
-  REQUIRE(c.part_to_primitive.size() == 1u);
-  CHECK(c.part_to_primitive[0] == (n1 > n0 ? 1u : 0u)); // the primitive of most claimed voxels
-}
-
-TEST_CASE("the sheet merge keeps creases, round primitives and thick parts apart", "[sheet_merge]")
-{
-  SECTION("the seam runs over the rim of the slab, a crease")
-  {
-    Sheet_case c = make_sheet_case(0.06, true, {{0.5, 0.5, 0.03}});
-    const std::vector<std::size_t> before = c.part;
-    CHECK(merge(c) == 2u);
-    CHECK(c.part == before);
-  }
-  SECTION("the primitives are not flat")
-  {
-    Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.4}});
-    CHECK(merge(c) == 2u);
-  }
-  SECTION("the parts are thick: a 2 x 2 x 0.5 box, 8 voxels deep")
-  {
-    Sheet_case c = make_sheet_case(0.5, false, {{0.5, 0.5, 0.1}});
-    CHECK(merge(c) == 2u);
-    CHECK(c.part_to_primitive == std::vector<std::size_t>({0, 1}));
-  }
-}
-
-TEST_CASE("the whole decomposition recovers the true parts of the shipped shapes", "[decompose][data]")
-{
-  // Unions of primitives (examples/Part_decomposition/generate_example_shapes): the .seg files
-  // hold the primitive each face came from. A table (top and 4 legs), a four-legged animal
-  // (body, head, legs, tail) and a dumbbell (two balls and a bar).
-  const std::map<std::string, double> minimum_miou = {{"table", 0.85}, {"animal", 0.8}, {"dumbbell", 0.9}};
-  for(const auto& e : minimum_miou)
-  {
-    INFO(e.first);
-    Mesh m;
-    const std::vector<std::size_t> truth = read_shipped_shape(e.first, m);
-
-    std::vector<std::size_t> part(num_faces(m), std::size_t(-1));
-    std::vector<PD::Superquadric<K> > primitives;
-    const std::size_t K_parts = PD::decompose(
-        m, CGAL::make_property_map(part),
-        PD::parameters::primitive_output_iterator(std::back_inserter(primitives)));
-    REQUIRE(primitives.size() == K_parts);
-    for(std::size_t p : part) REQUIRE(p < K_parts);
-
-    const PD::Segmentation_scores s =
-        PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part));
-    const std::size_t true_parts = std::set<std::size_t>(truth.begin(), truth.end()).size();
-    INFO(e.first << ": parts " << K_parts << " (true " << true_parts << "), mIoU " << s.mean_iou << ", RI "
-                  << s.rand_index << ", VoI " << s.variation_of_information);
-    CHECK(s.mean_iou >= e.second);
-    CHECK(K_parts >= true_parts - 1);
-    // the region of interest of a seed is shorter than a table leg: legs may come in pieces
-    CHECK(K_parts <= 3 * true_parts);
-  }
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3);
+  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  std::vector<std::size_t> patch(num_faces(m)), a(num_faces(m)), b(num_faces(m));
+  PD::over_segment(m, CGAL::make_property_map(patch));
+  const std::vector<std::size_t> prim_a =
+      PD::assign_parts(m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(a));
+  const std::vector<std::size_t> prim_b = PD::assign_parts(
+      m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(b),
+      PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m)).face_index_map(get(CGAL::face_index, m)),
+                   PDP::vote_temperature(PD::defaults::vote_temperature)));
+  CHECK(prim_a == std::vector<std::size_t>({2, 5, 9}));
+  CHECK(prim_b == prim_a);
+  CHECK(b == a);
 }

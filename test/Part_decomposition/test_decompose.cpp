@@ -1,0 +1,347 @@
+// The end of the pipeline: the thin-sheet merge, the stage-by-stage Part_decomposer, and the whole
+// decomposition of the shipped example meshes against their true parts.
+#include <catch2/catch.hpp>
+
+#include <CGAL/Part_decomposition/decompose.h>
+#include <CGAL/Part_decomposition/segmentation_metrics.h>
+#include <CGAL/Part_decomposition/thin_sheet_merging.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include "shipped_shapes.h"
+#include "test_shapes.h"
+
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace PD = CGAL::Part_decomposition;
+namespace PDP = CGAL::Part_decomposition::parameters;
+using test_shapes::K;
+using test_shapes::Mesh;
+using test_shapes::Point;
+typedef Mesh::Face_index face_descriptor;
+
+namespace {
+
+PD::Input_error error_of(const std::function<void()>& f)
+{
+  try
+  {
+    f();
+  }
+  catch(const PD::Invalid_input& e)
+  {
+    return e.error();
+  }
+  FAIL("no Invalid_input thrown");
+  return PD::Input_error::NO_FACES;
+}
+
+// A WritablePropertyMap without get(): the part of each face, and how often it was written.
+struct Write_only_part_map
+{
+  typedef face_descriptor key_type;
+  typedef std::size_t value_type;
+  typedef std::size_t reference;
+  typedef boost::writable_property_map_tag category;
+
+  std::vector<std::size_t>* part;
+  std::vector<int>* writes;
+
+  friend void put(const Write_only_part_map& m, const key_type& f, std::size_t v)
+  {
+    (*m.part)[std::size_t(f)] = v;
+    ++(*m.writes)[std::size_t(f)];
+  }
+};
+
+// A thin box (or slab) split in two parts by the plane x = 0, or with its top face (z = max) as
+// one part and the rest as the other; each part gets a primitive of the given semi-axes and claims
+// the inside voxels of its side.
+struct Sheet_case
+{
+  Mesh mesh;
+  PD::Truncated_signed_distance_field tsdf;
+  PD::Superquadric_fitting_result<K> fitting;
+  std::vector<std::size_t> part;
+  std::vector<std::size_t> part_to_primitive{0, 1};
+};
+
+Sheet_case make_sheet_case(double thickness, bool split_by_top_face, const std::array<double, 3>& scales)
+{
+  Sheet_case c;
+  c.mesh = test_shapes::make_box(Point(-1, -1, -thickness / 2), Point(1, 1, thickness / 2), 16);
+  c.tsdf = PD::compute_tsdf(c.mesh);
+  c.fitting.normalization = c.tsdf.normalization;
+  const PD::Superquadric<K>::Rotation identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for(int k = 0; k < 2; ++k)
+    c.fitting.primitives.push_back(PD::Superquadric<K>(scales, 1., 1., identity, Point(k ? 0.25 : -0.25, 0, 0)));
+  c.fitting.claimed_voxels.resize(2);
+  for(std::size_t v = 0; v < c.tsdf.values.size(); ++v)
+    if(c.tsdf.values[v] < 0.)
+      c.fitting.claimed_voxels[c.tsdf.values.center(v)[0] < 0. ? 0 : 1].push_back(v);
+  for(face_descriptor f : faces(c.mesh))
+  {
+    double x = 0., z = 0.;
+    for(auto v : vertices_around_face(halfedge(f, c.mesh), c.mesh))
+    {
+      x += c.mesh.point(v).x() / 3.;
+      z += c.mesh.point(v).z() / 3.;
+    }
+    c.part.push_back(split_by_top_face ? (z > thickness / 2 - 1e-9 ? 0 : 1) : (x < 0. ? 0 : 1));
+  }
+  return c;
+}
+
+std::size_t merge(Sheet_case& c)
+{
+  return PD::merge_thin_sheet_parts(c.mesh, CGAL::make_property_map(c.part), c.part_to_primitive, c.fitting, c.tsdf);
+}
+
+} // namespace
+
+TEST_CASE("flat thin parts that meet along smooth edges become one part", "[sheet_merge]")
+{
+  // 2 x 2 x 0.06: about two voxels thick in the 64^3 grid, the primitives are flat.
+  Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.03}});
+  const std::size_t n0 = c.fitting.claimed_voxels[0].size(), n1 = c.fitting.claimed_voxels[1].size();
+  REQUIRE(n0 > 0);
+  REQUIRE(n1 > 0);
+  CHECK(merge(c) == 1u);
+  CHECK(std::set<std::size_t>(c.part.begin(), c.part.end()) == std::set<std::size_t>{0});
+  REQUIRE(c.part_to_primitive.size() == 1u);
+  CHECK(c.part_to_primitive[0] == (n1 > n0 ? 1u : 0u)); // the primitive of most claimed voxels
+}
+
+TEST_CASE("the sheet merge keeps creases, round primitives and thick parts apart", "[sheet_merge]")
+{
+  SECTION("the seam runs over the rim of the slab, a crease")
+  {
+    Sheet_case c = make_sheet_case(0.06, true, {{0.5, 0.5, 0.03}});
+    const std::vector<std::size_t> before = c.part;
+    CHECK(merge(c) == 2u);
+    CHECK(c.part == before);
+  }
+  SECTION("the primitives are not flat")
+  {
+    Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.4}});
+    CHECK(merge(c) == 2u);
+  }
+  SECTION("the parts are thick: a 2 x 2 x 0.5 box, 8 voxels deep")
+  {
+    Sheet_case c = make_sheet_case(0.5, false, {{0.5, 0.5, 0.1}});
+    CHECK(merge(c) == 2u);
+    CHECK(c.part_to_primitive == std::vector<std::size_t>({0, 1}));
+  }
+}
+
+TEST_CASE("the sheet merge with every default given explicitly gives the default parts", "[sheet_merge][defaults]")
+{
+  Sheet_case a = make_sheet_case(0.06, false, {{0.5, 0.5, 0.03}});
+  Sheet_case b = a;
+  const std::size_t na = merge(a);
+  const std::size_t nb = PD::merge_thin_sheet_parts(
+      b.mesh, CGAL::make_property_map(b.part), b.part_to_primitive, b.fitting, b.tsdf,
+      CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, b.mesh))
+          .face_index_map(get(CGAL::face_index, b.mesh))
+          .geom_traits(K()));
+  CHECK(na == 1u);
+  CHECK(nb == na);
+  CHECK(b.part == a.part);
+  CHECK(b.part_to_primitive == a.part_to_primitive);
+}
+
+TEST_CASE("the sheet merge refuses a distance field of another frame", "[sheet_merge]")
+{
+  Sheet_case c = make_sheet_case(0.06, false, {{0.5, 0.5, 0.03}});
+  c.fitting.normalization = PD::Normalization({{0., 0., 0.}}, 2. * c.tsdf.normalization.scale());
+  CHECK(error_of([&] { merge(c); }) == PD::Input_error::INVALID_PARAMETER);
+}
+
+TEST_CASE("the shipped example meshes load and carry one label per face", "[data]")
+{
+  const std::map<std::string, std::pair<int, int> > expected = {
+      {"table", {5, 5}}, {"animal", {6, 8}}, {"dumbbell", {3, 3}}};
+  for(const auto& e : expected)
+  {
+    INFO(e.first);
+    const std::string base = std::string(PD_EXAMPLE_DATA_DIR) + "/" + e.first;
+    Mesh m;
+    const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(base + ".off", m);
+    CHECK(info.number_of_input_faces == num_faces(m));
+    CHECK(info.number_of_input_faces >= 3000);
+    CHECK(info.number_of_input_faces <= 10000);
+    CHECK(CGAL::is_closed(m));
+    std::ifstream in(base + ".seg");
+    REQUIRE(in);
+    std::vector<int> labels;
+    int l;
+    while(in >> l) labels.push_back(l);
+    CHECK(labels.size() == info.number_of_input_faces);
+    const std::set<int> distinct(labels.begin(), labels.end());
+    CHECK(int(distinct.size()) >= e.second.first);
+    CHECK(int(distinct.size()) <= e.second.second);
+    CHECK(*distinct.begin() == 0);
+    CHECK(*distinct.rbegin() == int(distinct.size()) - 1);
+  }
+}
+
+TEST_CASE("the parts are written once to a write-only map, by decompose() and Part_decomposer", "[decompose][data]")
+{
+  Mesh m;
+  test_shapes::read_shipped_shape("dumbbell", m);
+  const std::size_t nf = num_faces(m);
+  std::vector<std::size_t> reference(nf);
+  const std::size_t K_parts = PD::decompose(m, CGAL::make_property_map(reference));
+  REQUIRE(K_parts == 3u);
+
+  std::vector<std::size_t> part(nf, std::size_t(-1));
+  std::vector<int> writes(nf, 0);
+  CHECK(PD::decompose(m, Write_only_part_map{&part, &writes}) == K_parts);
+  CHECK(part == reference);
+  CHECK(std::set<int>(writes.begin(), writes.end()) == std::set<int>{1});
+
+  PD::Part_decomposer<Mesh> pd(m);
+  pd.compute_prior();
+  pd.compute_distance_field();
+  pd.fit_primitives();
+  pd.over_segment();
+  std::fill(part.begin(), part.end(), std::size_t(-1));
+  std::fill(writes.begin(), writes.end(), 0);
+  CHECK(pd.assign_parts(Write_only_part_map{&part, &writes}) == K_parts);
+  CHECK(part == reference);
+  CHECK(pd.parts() == reference);
+  CHECK(std::set<int>(writes.begin(), writes.end()) == std::set<int>{1});
+}
+
+TEST_CASE("the thin-sheet merge is a step of its own of Part_decomposer", "[decompose][sheet_merge][data]")
+{
+  // The table: its top is a thin slab.
+  Mesh m;
+  test_shapes::read_shipped_shape("table", m);
+  std::vector<std::size_t> merged(num_faces(m)), unmerged(num_faces(m));
+  const std::size_t K_merged = PD::decompose(m, CGAL::make_property_map(merged));
+
+  PD::Part_decomposer<Mesh> pd(m);
+  pd.compute_prior();
+  pd.compute_distance_field();
+  pd.fit_primitives();
+  pd.over_segment();
+  const std::size_t K_unmerged =
+      pd.assign_parts(CGAL::make_property_map(unmerged), PDP::merge_thin_sheets(false));
+  CHECK(pd.parts() == unmerged);
+  CHECK(K_unmerged >= K_merged);
+  // the free function on the parts before the merge, with its own face graph
+  std::vector<std::size_t> part_to_primitive = pd.part_to_primitive();
+  std::vector<std::size_t> by_function = unmerged;
+  const std::size_t K_function = PD::merge_thin_sheet_parts(m, CGAL::make_property_map(by_function),
+                                                            part_to_primitive, pd.fitting(), pd.distance_field());
+  // the step, on the face graph of the over-segmentation
+  CHECK(pd.merge_thin_sheets() == K_merged);
+  CHECK(pd.parts() == merged);
+  CHECK(pd.part_primitives().size() == K_merged);
+  CHECK(K_function == K_merged);
+  CHECK(by_function == merged);
+  CHECK(part_to_primitive == pd.part_to_primitive());
+}
+
+TEST_CASE("decompose() with every default given explicitly gives the default parts", "[decompose][defaults][data]")
+{
+  namespace D = PD::defaults;
+  Mesh m;
+  test_shapes::read_shipped_shape("dumbbell", m);
+  std::vector<std::size_t> a(num_faces(m)), b(num_faces(m));
+  std::vector<PD::Superquadric<K> > pa, pb;
+  const std::size_t na =
+      PD::decompose(m, CGAL::make_property_map(a), PDP::primitive_output_iterator(std::back_inserter(pa)));
+  const std::size_t nb = PD::decompose(
+      m, CGAL::make_property_map(b),
+      PDP::combine(
+          CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m))
+              .face_index_map(get(CGAL::face_index, m))
+              .geom_traits(K())
+              .number_of_points_per_face(D::number_of_points_per_face)
+              .verbose(false),
+          PDP::primitive_output_iterator(std::back_inserter(pb)),
+          PDP::voxel_resolutions(D::voxel_resolutions()), PDP::number_of_neighbors(D::number_of_neighbors),
+          PDP::curvature_percentile(D::curvature_percentile), PDP::cue_weights(D::cue_weights),
+          PDP::freeze_ratio(D::freeze_ratio), PDP::use_density(D::use_density),
+          PDP::normalization_margin(D::normalization_margin), PDP::tsdf_truncation(D::tsdf_truncation),
+          PDP::tsdf_sign_method(PD::Tsdf_sign_method::AUTOMATIC), PDP::flow_zone_tolerance(D::flow_zone_tolerance),
+          PDP::trust_region_scales(D::trust_region_scales()), PDP::body_seed_threshold(D::body_seed_threshold),
+          PDP::minimum_body_volume(D::minimum_body_volume), PDP::minimum_surface_volume(D::minimum_surface_volume),
+          PDP::exterior_penalty(D::exterior_penalty), PDP::coverage_target(D::coverage_target),
+          PDP::roi_radius(D::roi_radius), PDP::interior_weight_mode(PD::Interior_weight_mode::ONE_SHOT),
+          PDP::maximum_number_of_primitives(D::maximum_number_of_primitives),
+          PDP::use_freeze_zone(D::use_freeze_zone), PDP::use_tsdf_guidance(D::use_tsdf_guidance),
+          PDP::use_body_seeds(D::use_body_seeds), PDP::fitting_resolution_cap(D::fitting_resolution_cap),
+          PDP::use_exterior_band_samples(D::use_exterior_band_samples),
+          PDP::use_reachable_regions(D::use_reachable_regions), PDP::use_seed_exclusion(D::use_seed_exclusion),
+          PDP::maximum_solver_evaluations(D::maximum_solver_evaluations),
+          PDP::maximum_rejections_in_a_row(D::maximum_rejections_in_a_row),
+          PDP::dihedral_percentile(D::dihedral_percentile), PDP::smoothing_iterations(D::smoothing_iterations),
+          PDP::minimum_patch_size(D::minimum_patch_size), PDP::patch_split_size(D::patch_split_size),
+          PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets)));
+  CHECK(na == 3u); // two balls and a bar
+  CHECK(nb == na);
+  CHECK(b == a);
+  REQUIRE(pb.size() == pa.size());
+  for(std::size_t k = 0; k < pa.size(); ++k)
+  {
+    CHECK(pb[k].scales() == pa[k].scales());
+    CHECK(pb[k].center() == pa[k].center());
+  }
+}
+
+TEST_CASE("a stage given another normalization than the decomposer's is refused", "[decompose]")
+{
+  const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 2, 3), 2);
+  PD::Part_decomposer<Mesh> pd(m);
+  const PD::Normalization other({{0., 0., 0.}}, 2. * pd.normalization().scale());
+  CHECK(error_of([&] { pd.compute_prior(PDP::normalization(other)); }) == PD::Input_error::INVALID_PARAMETER);
+  CHECK(error_of([&] { pd.compute_distance_field(PDP::normalization_margin(0.1)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+  CHECK(error_of([&] { pd.over_segment(PDP::normalization(other)); }) == PD::Input_error::INVALID_PARAMETER);
+  // the decomposer's own frame is accepted
+  CHECK(pd.compute_prior(PDP::normalization(pd.normalization())).normalization.scale() == pd.normalization().scale());
+  std::vector<std::size_t> part(num_faces(m));
+  CHECK(error_of([&] { PD::decompose(m, CGAL::make_property_map(part), PDP::normalization(other)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+}
+
+TEST_CASE("the whole decomposition recovers the true parts of the shipped shapes", "[decompose][data]")
+{
+  // Unions of primitives (examples/Part_decomposition/generate_example_shapes): the .seg files
+  // hold the primitive each face came from. A table (top and 4 legs), a four-legged animal
+  // (body, head, legs, tail) and a dumbbell (two balls and a bar).
+  const std::map<std::string, double> minimum_miou = {{"table", 0.85}, {"animal", 0.8}, {"dumbbell", 0.9}};
+  for(const auto& e : minimum_miou)
+  {
+    INFO(e.first);
+    Mesh m;
+    const std::vector<std::size_t> truth = test_shapes::read_shipped_shape(e.first, m);
+
+    std::vector<std::size_t> part(num_faces(m), std::size_t(-1));
+    std::vector<PD::Superquadric<K> > primitives;
+    const std::size_t K_parts = PD::decompose(
+        m, CGAL::make_property_map(part),
+        PD::parameters::primitive_output_iterator(std::back_inserter(primitives)));
+    REQUIRE(primitives.size() == K_parts);
+    for(std::size_t p : part) REQUIRE(p < K_parts);
+
+    const PD::Segmentation_scores s =
+        PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part));
+    const std::size_t true_parts = std::set<std::size_t>(truth.begin(), truth.end()).size();
+    INFO(e.first << ": parts " << K_parts << " (true " << true_parts << "), mIoU " << s.mean_iou << ", RI "
+                  << s.rand_index << ", VoI " << s.variation_of_information);
+    CHECK(s.mean_iou >= e.second);
+    CHECK(K_parts >= true_parts - 1);
+    // the region of interest of a seed is shorter than a table leg: legs may come in pieces
+    CHECK(K_parts <= 3 * true_parts);
+  }
+}
