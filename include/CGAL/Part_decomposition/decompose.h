@@ -212,9 +212,10 @@ public:
   }
 
   /// computes the zones of the fitter from the prior with `compute_fitting_zones()` at the
-  /// `fitting_resolutions()` of the prior; `fit_primitives()` uses them (it computes them itself
-  /// if this function was not called after `compute_prior()`). Pass the same `flow_zone_tolerance`
-  /// and `use_freeze_zone` as to `fit_primitives()`.
+  /// `fitting_resolutions()` of the prior with the `fitting_resolution_cap` of `np`;
+  /// `fit_primitives()` uses them (it computes them itself if this function was not called after
+  /// `compute_prior()`). Pass the same `flow_zone_tolerance`, `use_freeze_zone` and
+  /// `fitting_resolution_cap` as to `fit_primitives()`.
   /// \pre `compute_prior()` was called.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -223,8 +224,9 @@ public:
     CGAL_precondition(m_has_prior);
     if(!m_has_prior)
       throw std::logic_error("Part_decomposer::compute_fitting_zones() needs the prior");
+    const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
     m_zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_prior.classes, fitting_resolutions(m_prior.resolutions), np);
+      m_prior.classes, fitting_resolutions(m_prior.resolutions, cap), np);
     m_has_zones = true;
     return m_zones;
   }
