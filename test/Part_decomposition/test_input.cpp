@@ -92,6 +92,27 @@ TEST_CASE("normalization maps the bounding box into the cube with the margin", "
   CHECK_THROWS_AS(PD::compute_normalization(m, PD::parameters::normalization_margin(0.4)), PD::Invalid_input);
 }
 
+TEST_CASE("normalization: the default margin equals defaults::normalization_margin given explicitly", "[input]")
+{
+  const Mesh m = test_shapes::make_box(Point(-2, 1, 0), Point(3, 4, 7), 2);
+  const PD::Normalization a = PD::compute_normalization(m);
+  const PD::Normalization b =
+    PD::compute_normalization(m, PD::parameters::normalization_margin(PD::defaults::normalization_margin));
+  CHECK(a.center() == b.center());
+  CHECK(a.scale() == b.scale());
+  // the longest side (7) goes to 1 - 2 * margin
+  CHECK(a.scale() == Approx((1. - 2. * PD::defaults::normalization_margin) / 7.));
+  try
+  {
+    PD::compute_normalization(m, PD::parameters::normalization_margin(-0.1));
+    FAIL("no exception");
+  }
+  catch(const PD::Invalid_input& e)
+  {
+    CHECK(std::string(e.what()) == "normalization_margin must be in [0, 0.25]");
+  }
+}
+
 TEST_CASE("the reader keeps the file's face order through a non-manifold soup", "[io]")
 {
   // 0: three triangles on one edge (non-manifold), a quad, a degenerate face, an isolated point

@@ -113,8 +113,8 @@ TEST_CASE("Meyer mixed Voronoi areas sum to the triangle area", "[cues]")
     {{{{3, 1, 2}}, {{-1, 0.5, 1}}, {{0.2, 7, -3}}}}};
   for(const auto& t : triangles)
   {
-    const PD::internal::Vec3 n = PD::internal::cross(PD::internal::sub(t[1], t[0]), PD::internal::sub(t[2], t[0]));
-    const double area = 0.5 * std::sqrt(PD::internal::dot(n, n));
+    const PD::internal::Vec3 n = PD::internal::cross3(PD::internal::sub3(t[1], t[0]), PD::internal::sub3(t[2], t[0]));
+    const double area = 0.5 * std::sqrt(PD::internal::dot3(n, n));
     const std::array<double, 3> a = PD::internal::mixed_voronoi_areas(t[0], t[1], t[2]);
     CHECK(a[0] + a[1] + a[2] == Approx(area).epsilon(1e-12));
     for(double x : a) CHECK(x > 0.);
@@ -437,7 +437,7 @@ TEST_CASE("curvature gradient: central differences inside, one-sided at the bord
     for(int j = 0; j < 4; ++j)
       for(int i = 0; i < 4; ++i) vs.s1[std::size_t(i + 4 * (j + 4 * k))] = double(i * i) + 3. * k;
   PD::Topology_score_field f;
-  PD::internal::make_score_field(vs, {{0., 0., 1., 0.}}, f);
+  PD::internal::make_score_field(vs, {{0., 0., 1., 0.}}, true, f);
   auto expect = [](int i) { return i == 0 ? 1. : i == 3 ? 5. : 2. * i; }; // d(i^2)/di
   for(int k = 0; k < 4; ++k)
     for(int i = 0; i < 4; ++i)
@@ -735,4 +735,140 @@ TEST_CASE("the prior is the same with any number of threads and validates its pa
   CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::curvature_percentile(101.)), PD::Invalid_input);
   CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, PD::parameters::cue_weights(std::vector<double>{1, 1, 1})),
                   PD::Invalid_input);
+}
+
+// ----------------------------------------------------------------- one parameter layer
+
+namespace {
+
+// Every default of the cues, the score and the prior, given explicitly.
+auto explicit_defaults()
+{
+  return PD::parameters::combine(
+    CGAL::parameters::number_of_points_per_face(PD::defaults::number_of_points_per_face),
+    PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions()),
+    PD::parameters::number_of_neighbors(PD::defaults::number_of_neighbors),
+    PD::parameters::curvature_percentile(PD::defaults::curvature_percentile),
+    PD::parameters::cue_weights(PD::defaults::cue_weights), PD::parameters::freeze_ratio(PD::defaults::freeze_ratio),
+    PD::parameters::use_density(PD::defaults::use_density),
+    PD::parameters::normalization_margin(PD::defaults::normalization_margin));
+}
+
+bool same_field(const PD::Topology_score_field& a, const PD::Topology_score_field& b)
+{
+  return a.resolution == b.resolution && a.sample_count == b.sample_count && a.curvature_mean == b.curvature_mean &&
+         a.curvature_deviation == b.curvature_deviation && a.curvature_gradient == b.curvature_gradient &&
+         a.normal_deviation == b.normal_deviation && a.score == b.score && a.classes == b.classes &&
+         a.threshold == b.threshold && a.number_of_active_voxels == b.number_of_active_voxels &&
+         a.number_of_freeze_voxels == b.number_of_freeze_voxels;
+}
+
+} // namespace
+
+TEST_CASE("cues, score and prior: the defaults equal every default given explicitly", "[parameters]")
+{
+  const Mesh m = make_dumbbell();
+  const Face_cues a = face_cues(m);
+  Face_cues b;
+  b.c.assign(num_faces(m), -1.);
+  b.phi.assign(num_faces(m), -1.);
+  PD::compute_geometric_cues(m, CGAL::make_property_map(b.c), CGAL::make_property_map(b.phi), explicit_defaults());
+  CHECK(a.c == b.c);
+  CHECK(a.phi == b.phi);
+  std::vector<double> c1(num_faces(m)), c2(num_faces(m)), p1(num_faces(m)), p2(num_faces(m));
+  PD::compute_face_curvature_cue(m, CGAL::make_property_map(c1));
+  PD::compute_face_curvature_cue(m, CGAL::make_property_map(c2), explicit_defaults());
+  PD::compute_face_normal_deviation(m, CGAL::make_property_map(p1));
+  PD::compute_face_normal_deviation(m, CGAL::make_property_map(p2), explicit_defaults());
+  CHECK((c1 == c2 && c1 == a.c));
+  CHECK((p1 == p2 && p1 == a.phi));
+
+  CHECK(PD::compute_normalization(m).scale() == PD::compute_normalization(m, explicit_defaults()).scale());
+  CHECK(PD::compute_normalization(m).center() == PD::compute_normalization(m, explicit_defaults()).center());
+
+  const auto cmap = CGAL::make_property_map(a.c);
+  const auto pmap = CGAL::make_property_map(a.phi);
+  CHECK(same_field(PD::compute_topology_score(m, cmap, pmap, 32),
+                   PD::compute_topology_score(m, cmap, pmap, 32, explicit_defaults())));
+  CHECK(same_field(PD::compute_topology_score(m, cmap, pmap, 16, 64),
+                   PD::compute_topology_score(m, cmap, pmap, 16, 64, explicit_defaults())));
+
+  const PD::Hierarchical_prior x = PD::compute_flow_freeze_prior(m);
+  const PD::Hierarchical_prior y = PD::compute_flow_freeze_prior(m, explicit_defaults());
+  REQUIRE(x.fields.size() == y.fields.size());
+  for(std::size_t l = 0; l < x.fields.size(); ++l) CHECK(same_field(x.fields[l], y.fields[l]));
+  CHECK(x.classes == y.classes);
+  CHECK(x.leaf_resolution == y.leaf_resolution);
+}
+
+TEST_CASE("the prior's field at r is compute_topology_score at r with the samples binned at the finest r",
+          "[parameters][score]")
+{
+  // The 12-triangle cube: its faces are cut relative to the finest grid in the prior, so binning
+  // at r itself gives other fields.
+  const Mesh cube = test_shapes::make_box(Point(-1, -1, -1), Point(1, 1, 1), 1);
+  const Mesh dumbbell = make_dumbbell();
+  for(const Mesh* m : {&cube, &dumbbell})
+  {
+    const Face_cues cues = face_cues(*m);
+    const auto cmap = CGAL::make_property_map(cues.c);
+    const auto pmap = CGAL::make_property_map(cues.phi);
+    for(bool density : {true, false})
+    {
+      const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(*m, PD::parameters::use_density(density));
+      REQUIRE(prior.fields.size() == 3);
+      for(std::size_t l = 0; l < 3; ++l)
+        CHECK(same_field(prior.fields[l], PD::compute_topology_score(*m, cmap, pmap, prior.resolutions[l], 64,
+                                                                     PD::parameters::use_density(density))));
+    }
+  }
+  const Face_cues cues = face_cues(cube);
+  const PD::Topology_score_field at_16 = PD::compute_topology_score(
+    cube, CGAL::make_property_map(cues.c), CGAL::make_property_map(cues.phi), 16);
+  CHECK(!same_field(PD::compute_flow_freeze_prior(cube).fields[0], at_16));
+  CHECK(same_field(at_16, PD::compute_topology_score(cube, CGAL::make_property_map(cues.c),
+                                                     CGAL::make_property_map(cues.phi), 16, 16)));
+  CHECK_THROWS_AS(PD::compute_topology_score(cube, CGAL::make_property_map(cues.c),
+                                             CGAL::make_property_map(cues.phi), 32, 16), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_topology_score(cube, CGAL::make_property_map(cues.c),
+                                             CGAL::make_property_map(cues.phi), 16, 48), PD::Invalid_input);
+}
+
+TEST_CASE("use_density(false) drops the density factor sqrt(n) of every active voxel", "[parameters][score]")
+{
+  const Mesh m = make_dumbbell();
+  const Face_cues cues = face_cues(m);
+  const auto cmap = CGAL::make_property_map(cues.c);
+  const auto pmap = CGAL::make_property_map(cues.phi);
+  for(int r : {8, 32})
+  {
+    const PD::Topology_score_field with = PD::compute_topology_score(m, cmap, pmap, r);
+    const PD::Topology_score_field without =
+      PD::compute_topology_score(m, cmap, pmap, r, PD::parameters::use_density(false));
+    REQUIRE(with.sample_count == without.sample_count);
+    std::size_t checked = 0, positive = 0, wrong = 0;
+    for(std::size_t v = 0; v < with.score.size(); ++v)
+    {
+      if(with.sample_count[v] == 0)
+      {
+        wrong += without.score[v] == 0. ? 0 : 1;
+        continue;
+      }
+      // equal up to the rounding of the product and the quotient
+      const double expected = with.score[v] / std::sqrt(double(with.sample_count[v]));
+      wrong += std::abs(without.score[v] - expected) <= 1e-12 * std::abs(expected) ? 0 : 1;
+      ++checked;
+      positive += without.score[v] > 0. ? 1 : 0;
+    }
+    CHECK(wrong == 0u);
+    CHECK(checked == with.number_of_active_voxels);
+    CHECK(positive > 0u);
+  }
+  // the prior passes it on
+  const PD::Hierarchical_prior p = PD::compute_flow_freeze_prior(m, PD::parameters::use_density(false));
+  const PD::Hierarchical_prior q = PD::compute_flow_freeze_prior(m);
+  const std::size_t v = std::size_t(std::max_element(q.fields[2].sample_count.values().begin(),
+                                                     q.fields[2].sample_count.values().end()) -
+                                    q.fields[2].sample_count.values().begin());
+  CHECK(p.fields[2].score[v] == Approx(q.fields[2].score[v] / std::sqrt(double(q.fields[2].sample_count[v]))));
 }

@@ -5,6 +5,7 @@
 #include "test_shapes.h"
 
 #include <CGAL/Part_decomposition/fitting_zones.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
 #include <CGAL/Part_decomposition/internal/triangle_distance.h>
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace PD = CGAL::Part_decomposition;
@@ -389,7 +391,7 @@ TEST_CASE("TSDF band distances equal the distances of CGAL's AABB tree", "[tsdf]
     m.point(v) = Point(q.x() + rng.get_double(-0.03, 0.03), q.y() + rng.get_double(-0.03, 0.03), q.z() + rng.get_double(-0.03, 0.03));
   }
   test_shapes::append(m, test_shapes::make_box(Point(-0.9, -0.4, -0.3), Point(0.1, 0.3, 0.35), 4));
-  for(int r : {40, 64})
+  for(int r : {32, 64})
   {
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<CGAL::Parallel_if_available_tag>(
       m, PD::parameters::voxel_resolutions(std::vector<int>{r}));
@@ -545,13 +547,13 @@ TEST_CASE("TSDF of a box equals the exact signed distance", "[tsdf]")
 {
   const Mesh box = test_shapes::make_box(Point(-1, -0.6, -0.4), Point(1, 0.6, 0.4), 3);
   const PD::Truncated_signed_distance_field tsdf =
-    PD::compute_tsdf(box, PD::parameters::combine(PD::parameters::voxel_resolutions(std::vector<int>{32, 48}),
+    PD::compute_tsdf(box, PD::parameters::combine(PD::parameters::voxel_resolutions(std::vector<int>{32, 64}),
                                                   PD::parameters::tsdf_truncation(5.)));
-  REQUIRE(tsdf.values.resolution() == 48);
-  CHECK(tsdf.truncation == Approx(5. / 48.));
+  REQUIRE(tsdf.values.resolution() == 64);
+  CHECK(tsdf.truncation == Approx(5. / 64.));
   const std::array<double, 3> lo = unit(tsdf.normalization, -1, -0.6, -0.4), hi = unit(tsdf.normalization, 1, 0.6, 0.4);
   auto sd = [&](const std::array<double, 3>& p) { return sd_box(p, lo, hi); };
-  check_values(tsdf, sd, 1e-4 / 48.);
+  check_values(tsdf, sd, 1e-4 / 64.);
   check_signs(tsdf, sd, 1e-9);
 }
 
@@ -742,8 +744,62 @@ TEST_CASE("TSDF parameters are validated", "[tsdf]")
   CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{})));
   CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{16, 0})));
   CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{4096})));
+  // the one rule of voxel_resolutions: powers of two up to 256, each twice the previous
+  CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{512})));
+  CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{48})));
+  CHECK(throws(PD::parameters::voxel_resolutions(std::vector<int>{64, 32})));
+  CHECK(!throws(PD::parameters::voxel_resolutions(std::vector<int>{256})));
   Mesh empty;
   CHECK_THROWS_AS(PD::compute_tsdf(empty), PD::Invalid_input);
+}
+
+TEST_CASE("TSDF: the defaults equal every default given explicitly", "[tsdf][parameters]")
+{
+  const Mesh box = test_shapes::make_box(Point(-1, -0.6, -0.4), Point(1, 0.6, 0.4), 3);
+  const PD::Truncated_signed_distance_field a = PD::compute_tsdf(box);
+  const PD::Truncated_signed_distance_field b = PD::compute_tsdf(
+    box, PD::parameters::combine(PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions()),
+                                 PD::parameters::tsdf_truncation(PD::defaults::tsdf_truncation),
+                                 PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::AUTOMATIC),
+                                 PD::parameters::normalization_margin(PD::defaults::normalization_margin)));
+  CHECK(a.values.resolution() == PD::defaults::voxel_resolutions().back());
+  CHECK(a.values == b.values);
+  CHECK(a.truncation == b.truncation);
+  CHECK(a.sign_method == b.sign_method);
+  CHECK(a.normalization.scale() == b.normalization.scale());
+  CHECK(a.normalization.center() == b.normalization.center());
+}
+
+TEST_CASE("voxel_resolutions: one rule and one message for the prior, the TSDF and the score", "[tsdf][parameters]")
+{
+  const Mesh box = test_shapes::make_box(Point(-1, -0.6, -0.4), Point(1, 0.6, 0.4), 2);
+  auto message = [](const auto& run) -> std::string {
+    try
+    {
+      run();
+    }
+    catch(const PD::Invalid_input& e)
+    {
+      return e.error() == PD::Input_error::INVALID_PARAMETER ? std::string(e.what()) : std::string("other error");
+    }
+    return "no error";
+  };
+  std::vector<double> zero(num_faces(box), 0.);
+  for(const std::vector<int>& bad : {std::vector<int>{}, std::vector<int>{16, 48}, std::vector<int>{512},
+                                     std::vector<int>{32, 16}, std::vector<int>{16, 64}})
+  {
+    const std::string prior =
+      message([&] { PD::compute_flow_freeze_prior(box, PD::parameters::voxel_resolutions(bad)); });
+    const std::string tsdf = message([&] { PD::compute_tsdf(box, PD::parameters::voxel_resolutions(bad)); });
+    CHECK(prior.find("voxel_resolutions must be") == 0);
+    CHECK(tsdf == prior);
+  }
+  // a single resolution of the score is checked as the list of that one resolution
+  const std::string score = message([&] {
+    PD::compute_topology_score(box, CGAL::make_property_map(zero), CGAL::make_property_map(zero), 48);
+  });
+  CHECK(score == message([&] { PD::compute_tsdf(box, PD::parameters::voxel_resolutions(std::vector<int>{48})); }));
+  CHECK(message([&] { PD::fuse_flow_freeze({PD::Voxel_grid<PD::Voxel_class>(48)}); }) == score);
 }
 
 // -------------------------------------------------------------------------------- fitting zones

@@ -18,8 +18,8 @@
 #include <CGAL/Part_decomposition/internal/Flow_freeze_octree.h>
 #include <CGAL/Part_decomposition/internal/mean_curvature.h>
 #include <CGAL/Part_decomposition/internal/normal_deviation.h>
-#include <CGAL/Part_decomposition/internal/prior_parallel.h>
-#include <CGAL/Part_decomposition/internal/sample_accumulation.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -29,8 +29,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
-#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -75,6 +73,165 @@ inline int log2_of_power_of_two(int r)
   int d = 0;
   while((1 << d) < r) ++d;
   return d;
+}
+
+typedef Voxel_grid<std::uint8_t> Level_mask;
+typedef std::vector<Voxel_grid<Voxel_class> > Level_classes;
+
+// The level resolutions follow the one rule of `voxel_resolutions`.
+inline void check_level_resolutions(const Level_classes& C)
+{
+  std::vector<int> resolutions;
+  for(const Voxel_grid<Voxel_class>& level : C) resolutions.push_back(level.resolution());
+  check_voxel_resolutions(resolutions);
+}
+
+// Per level, whether some voxel strictly below each voxel (at a finer level) is non-empty.
+inline std::vector<Level_mask> support_below(const Level_classes& C)
+{
+  const std::size_t L = C.size();
+  std::vector<Level_mask> below(L);
+  below[L - 1] = Level_mask(C[L - 1].resolution(), 0);
+  for(std::size_t l = L - 1; l-- > 0;)
+  {
+    const int r = C[l].resolution();
+    below[l] = Level_mask(r, 0);
+    for(int k = 0; k < r; ++k)
+      for(int j = 0; j < r; ++j)
+        for(int i = 0; i < r; ++i)
+        {
+          std::uint8_t any = 0;
+          const std::size_t p = below[l].index(i, j, k);
+          for(int c = 0; c < 8; ++c)
+          {
+            const std::size_t q = C[l + 1].index(2 * i + (c & 1), 2 * j + ((c >> 1) & 1), 2 * k + ((c >> 2) & 1));
+            any |= std::uint8_t(C[l + 1][q] != Voxel_class::EMPTY || below[l + 1][q]);
+          }
+          below[l][p] = any;
+        }
+  }
+  return below;
+}
+
+// Per level but the finest, whether each voxel splits: 1 by a fusion rule, taken independently,
+// then 2 when forced by backward consistency (a child splits), from fine to coarse.
+inline std::vector<Level_mask> split_decisions(const Level_classes& C, const std::vector<Level_mask>& below)
+{
+  const std::size_t L = C.size();
+  std::vector<Level_mask> split(L);
+  for(std::size_t l = 0; l + 1 < L; ++l)
+  {
+    const int r = C[l].resolution();
+    split[l] = Level_mask(r, 0);
+    for(int k = 0; k < r; ++k)
+      for(int j = 0; j < r; ++j)
+        for(int i = 0; i < r; ++i)
+        {
+          std::array<Voxel_class, 8> children;
+          int n = 0;
+          for_each_child(C[l + 1], i, j, k, [&](Voxel_class c) { children[n++] = c; });
+          const std::size_t p = split[l].index(i, j, k);
+          split[l][p] = fusion_rule_splits(C[l][p], children, below[l][p] != 0) ? 1 : 0;
+        }
+  }
+  for(std::size_t l = L >= 2 ? L - 2 : 0; l-- > 0;)
+  {
+    const int r = C[l].resolution();
+    for(int k = 0; k < r; ++k)
+      for(int j = 0; j < r; ++j)
+        for(int i = 0; i < r; ++i)
+        {
+          const std::size_t p = split[l].index(i, j, k);
+          if(split[l][p]) continue;
+          bool child_splits = false;
+          for_each_child(split[l + 1], i, j, k, [&](std::uint8_t s) { child_splits |= (s != 0); });
+          if(child_splits) split[l][p] = 2;
+        }
+  }
+  return split;
+}
+
+// Per level, the class each voxel carries if it is a leaf: its own, or, below a forced parent,
+// the class its parent would have carried.
+inline Level_classes carried_classes(const Level_classes& C, const std::vector<Level_mask>& split)
+{
+  const std::size_t L = C.size();
+  Level_classes carried(L);
+  carried[0] = C[0];
+  for(std::size_t l = 1; l < L; ++l)
+  {
+    const int r = C[l].resolution();
+    carried[l] = Voxel_grid<Voxel_class>(r, Voxel_class::EMPTY);
+    for(int k = 0; k < r; ++k)
+      for(int j = 0; j < r; ++j)
+        for(int i = 0; i < r; ++i)
+        {
+          const std::size_t q = carried[l].index(i, j, k);
+          if(C[l][q] == Voxel_class::EMPTY) continue;
+          const std::size_t p = carried[l - 1].index(i / 2, j / 2, k / 2);
+          carried[l][q] = split[l - 1][p] == 2 ? carried[l - 1][p] : C[l][q];
+        }
+  }
+  return carried;
+}
+
+// Per octree depth up to the coarsest level (depth d0), whether a cell holds support anywhere below.
+inline std::vector<Level_mask> occupied_above_coarsest(const Level_classes& C, const std::vector<Level_mask>& below)
+{
+  const int d0 = log2_of_power_of_two(C[0].resolution());
+  std::vector<Level_mask> occupied(std::size_t(d0) + 1);
+  occupied[std::size_t(d0)] = Level_mask(C[0].resolution(), 0);
+  for(std::size_t p = 0; p < C[0].size(); ++p)
+    occupied[std::size_t(d0)][p] = std::uint8_t(C[0][p] != Voxel_class::EMPTY || below[0][p]);
+  for(int d = d0; d-- > 0;)
+  {
+    const int r = 1 << d;
+    occupied[std::size_t(d)] = Level_mask(r, 0);
+    for(int k = 0; k < r; ++k)
+      for(int j = 0; j < r; ++j)
+        for(int i = 0; i < r; ++i)
+        {
+          std::uint8_t any = 0;
+          for_each_child(occupied[std::size_t(d) + 1], i, j, k, [&](std::uint8_t o) { any |= o; });
+          occupied[std::size_t(d)](i, j, k) = any;
+        }
+  }
+  return occupied;
+}
+
+// Gives the finest voxels with support under each non-empty leaf of `octree` the leaf's carried
+// class and resolution, and counts the leaves per level.
+inline void project_leaves_on_finest(const Flow_freeze_octree& octree, const Level_classes& C,
+                                     const Level_classes& carried, Hierarchical_prior& prior)
+{
+  const std::size_t L = C.size();
+  const int d0 = log2_of_power_of_two(C[0].resolution());
+  const Voxel_grid<Voxel_class>& finest = C[L - 1];
+  prior.classes = Voxel_grid<Voxel_class>(finest.resolution(), Voxel_class::EMPTY);
+  prior.leaf_resolution = Voxel_grid<std::uint16_t>(finest.resolution(), 0);
+  prior.number_of_flow_leaves.assign(L, 0);
+  prior.number_of_freeze_leaves.assign(L, 0);
+  octree.for_each_leaf([&](int d, const Octree_cell& g) {
+    if(d < d0) return; // a cell without support above the coarsest level
+    const std::size_t l = std::size_t(d - d0);
+    const Voxel_class cls = carried[l](int(g[0]), int(g[1]), int(g[2]));
+    if(cls == Voxel_class::EMPTY) return;
+    (cls == Voxel_class::FLOW ? prior.number_of_flow_leaves : prior.number_of_freeze_leaves)[l] += 1;
+    const int s = int(L - 1 - l);
+    const std::uint16_t res = std::uint16_t(C[l].resolution());
+    const int n = 1 << s;
+    for(int k = int(g[2]) << s; k < (int(g[2]) + 1) << s; ++k)
+      for(int j = int(g[1]) << s; j < (int(g[1]) + 1) << s; ++j)
+      {
+        const std::size_t row = finest.index(int(g[0]) << s, j, k);
+        for(int i = 0; i < n; ++i)
+          if(finest[row + std::size_t(i)] != Voxel_class::EMPTY)
+          {
+            prior.classes[row + std::size_t(i)] = cls;
+            prior.leaf_resolution[row + std::size_t(i)] = res;
+          }
+      }
+  });
 }
 
 } // namespace internal
@@ -124,118 +281,21 @@ Linear in the total number of voxels of the levels, \f$\sum_l r_l^3\f$.
 `number_of_freeze_leaves` are set (leaf counts per level, counting non-empty leaves only); its
 `fields` are empty and its `normalization` is the identity.
 
-\throws Invalid_input (`INVALID_PARAMETER`) if `level_classes` is empty, a resolution is not a
-power of two, not twice the previous one, or the finest is above 256.
+\throws Invalid_input (`INVALID_PARAMETER`) if the resolutions of `level_classes` break the rule
+of `voxel_resolutions`: a non-empty list of powers of two from 1 to 256, each twice the previous.
 */
 inline Hierarchical_prior fuse_flow_freeze(const std::vector<Voxel_grid<Voxel_class> >& level_classes)
 {
-  typedef Voxel_grid<std::uint8_t> Mask;
-  const std::size_t L = level_classes.size();
-  if(L == 0)
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "fuse_flow_freeze needs at least one level");
-  for(std::size_t l = 0; l < L; ++l)
-  {
-    const int r = level_classes[l].resolution();
-    if(!internal::is_power_of_two(r) || (l > 0 && r != 2 * level_classes[l - 1].resolution()) || r > 256)
-      throw Invalid_input(Input_error::INVALID_PARAMETER,
-                          "level resolutions must be powers of two, each twice the previous, at most 256");
-  }
-  const std::vector<Voxel_grid<Voxel_class> >& C = level_classes;
-  const Voxel_grid<Voxel_class>& finest = C[L - 1];
+  const internal::Level_classes& C = level_classes;
+  internal::check_level_resolutions(C);
+  const std::size_t L = C.size();
+  const std::vector<internal::Level_mask> below = internal::support_below(C);
+  const std::vector<internal::Level_mask> split = internal::split_decisions(C, below);
+  const internal::Level_classes carried = internal::carried_classes(C, split);
+  const std::vector<internal::Level_mask> occupied = internal::occupied_above_coarsest(C, below);
 
-  // Support strictly below each voxel, fine to coarse.
-  std::vector<Mask> below(L);
-  below[L - 1] = Mask(finest.resolution(), 0);
-  for(std::size_t l = L - 1; l-- > 0;)
-  {
-    const int r = C[l].resolution();
-    below[l] = Mask(r, 0);
-    for(int k = 0; k < r; ++k)
-      for(int j = 0; j < r; ++j)
-        for(int i = 0; i < r; ++i)
-        {
-          std::uint8_t any = 0;
-          const std::size_t p = below[l].index(i, j, k);
-          for(int c = 0; c < 8; ++c)
-          {
-            const std::size_t q = C[l + 1].index(2 * i + (c & 1), 2 * j + ((c >> 1) & 1), 2 * k + ((c >> 2) & 1));
-            any |= std::uint8_t(C[l + 1][q] != Voxel_class::EMPTY || below[l + 1][q]);
-          }
-          below[l][p] = any;
-        }
-  }
-
-  // Independent decisions (1 = split by a rule), then backward consistency (2 = forced).
-  std::vector<Mask> split(L);
-  for(std::size_t l = 0; l + 1 < L; ++l)
-  {
-    const int r = C[l].resolution();
-    split[l] = Mask(r, 0);
-    for(int k = 0; k < r; ++k)
-      for(int j = 0; j < r; ++j)
-        for(int i = 0; i < r; ++i)
-        {
-          std::array<Voxel_class, 8> children;
-          int n = 0;
-          internal::for_each_child(C[l + 1], i, j, k, [&](Voxel_class c) { children[n++] = c; });
-          const std::size_t p = split[l].index(i, j, k);
-          split[l][p] = internal::fusion_rule_splits(C[l][p], children, below[l][p] != 0) ? 1 : 0;
-        }
-  }
-  for(std::size_t l = L >= 2 ? L - 2 : 0; l-- > 0;)
-  {
-    const int r = C[l].resolution();
-    for(int k = 0; k < r; ++k)
-      for(int j = 0; j < r; ++j)
-        for(int i = 0; i < r; ++i)
-        {
-          const std::size_t p = split[l].index(i, j, k);
-          if(split[l][p]) continue;
-          bool child_splits = false;
-          internal::for_each_child(split[l + 1], i, j, k, [&](std::uint8_t s) { child_splits |= (s != 0); });
-          if(child_splits) split[l][p] = 2;
-        }
-  }
-
-  // The class each voxel carries if it is a leaf.
-  std::vector<Voxel_grid<Voxel_class> > carried(L);
-  carried[0] = C[0];
-  for(std::size_t l = 1; l < L; ++l)
-  {
-    const int r = C[l].resolution();
-    carried[l] = Voxel_grid<Voxel_class>(r, Voxel_class::EMPTY);
-    for(int k = 0; k < r; ++k)
-      for(int j = 0; j < r; ++j)
-        for(int i = 0; i < r; ++i)
-        {
-          const std::size_t q = carried[l].index(i, j, k);
-          if(C[l][q] == Voxel_class::EMPTY) continue;
-          const std::size_t p = carried[l - 1].index(i / 2, j / 2, k / 2);
-          carried[l][q] = split[l - 1][p] == 2 ? carried[l - 1][p] : C[l][q];
-        }
-  }
-
-  // Above the coarsest level: split the cells that hold support anywhere below.
   const int d0 = internal::log2_of_power_of_two(C[0].resolution());
   const int depth = d0 + int(L) - 1;
-  std::vector<Mask> occupied(std::size_t(d0) + 1);
-  occupied[std::size_t(d0)] = Mask(C[0].resolution(), 0);
-  for(std::size_t p = 0; p < C[0].size(); ++p)
-    occupied[std::size_t(d0)][p] = std::uint8_t(C[0][p] != Voxel_class::EMPTY || below[0][p]);
-  for(int d = d0; d-- > 0;)
-  {
-    const int r = 1 << d;
-    occupied[std::size_t(d)] = Mask(r, 0);
-    for(int k = 0; k < r; ++k)
-      for(int j = 0; j < r; ++j)
-        for(int i = 0; i < r; ++i)
-        {
-          std::uint8_t any = 0;
-          internal::for_each_child(occupied[std::size_t(d) + 1], i, j, k, [&](std::uint8_t o) { any |= o; });
-          occupied[std::size_t(d)](i, j, k) = any;
-        }
-  }
-
   internal::Flow_freeze_octree octree;
   octree.refine([&](int d, const internal::Octree_cell& g) -> bool {
     const int i = int(g[0]), j = int(g[1]), k = int(g[2]);
@@ -247,50 +307,25 @@ inline Hierarchical_prior fuse_flow_freeze(const std::vector<Voxel_grid<Voxel_cl
   Hierarchical_prior prior;
   prior.resolutions.resize(L);
   for(std::size_t l = 0; l < L; ++l) prior.resolutions[l] = C[l].resolution();
-  prior.classes = Voxel_grid<Voxel_class>(finest.resolution(), Voxel_class::EMPTY);
-  prior.leaf_resolution = Voxel_grid<std::uint16_t>(finest.resolution(), 0);
-  prior.number_of_flow_leaves.assign(L, 0);
-  prior.number_of_freeze_leaves.assign(L, 0);
-  octree.for_each_leaf([&](int d, const internal::Octree_cell& g) {
-    if(d < d0) return; // a cell without support above the coarsest level
-    const std::size_t l = std::size_t(d - d0);
-    const Voxel_class cls = carried[l](int(g[0]), int(g[1]), int(g[2]));
-    if(cls == Voxel_class::EMPTY) return;
-    (cls == Voxel_class::FLOW ? prior.number_of_flow_leaves : prior.number_of_freeze_leaves)[l] += 1;
-    const int s = int(L - 1 - l);
-    const std::uint16_t res = std::uint16_t(C[l].resolution());
-    const int n = 1 << s;
-    for(int k = int(g[2]) << s; k < (int(g[2]) + 1) << s; ++k)
-      for(int j = int(g[1]) << s; j < (int(g[1]) + 1) << s; ++j)
-      {
-        const std::size_t row = finest.index(int(g[0]) << s, j, k);
-        for(int i = 0; i < n; ++i)
-          if(finest[row + std::size_t(i)] != Voxel_class::EMPTY)
-          {
-            prior.classes[row + std::size_t(i)] = cls;
-            prior.leaf_resolution[row + std::size_t(i)] = res;
-          }
-      }
-  });
+  internal::project_leaves_on_finest(octree, C, carried, prior);
   return prior;
 }
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-template <typename Range>
-std::vector<int> checked_resolutions(const Range& range)
+// The named parameters of the prior: its resolutions, and those of the cues and of the score.
+struct Prior_parameters
 {
-  std::vector<int> r;
-  for(auto it = std::begin(range); it != std::end(range); ++it) r.push_back(int(*it));
-  bool ok = !r.empty() && r.back() <= 256;
-  for(std::size_t l = 0; ok && l < r.size(); ++l)
-    ok = is_power_of_two(r[l]) && (l == 0 || r[l] == 2 * r[l - 1]);
-  if(!ok)
-    throw Invalid_input(Input_error::INVALID_PARAMETER,
-                        "voxel_resolutions must be a non-empty list of powers of two, each twice the "
-                        "previous one, the finest at most 256");
-  return r;
+  std::vector<int> resolutions;
+  Cue_parameters cues;
+  Topology_score_parameters score;
+};
+
+template <typename NamedParameters>
+Prior_parameters read_prior_parameters(const NamedParameters& np)
+{
+  return Prior_parameters{read_voxel_resolutions(np), read_cue_parameters(np), read_topology_score_parameters(np)};
 }
 
 } // namespace internal
@@ -300,8 +335,14 @@ std::vector<int> checked_resolutions(const Range& range)
 \ingroup PkgPartDecompositionRef
 computes the hierarchical Flow/Freeze prior of `tm` (paper Alg.\ A.1, lines 1-5): the geometric
 cues once (`compute_geometric_cues()`), the topology score and its Flow/Freeze cut at each of
-the `voxel_resolutions` from a single pass over the surface samples (`compute_topology_score()`),
-and their fusion (`fuse_flow_freeze()`).
+the `voxel_resolutions` from a single pass over the surface samples, and their fusion
+(`fuse_flow_freeze()`).
+
+The samples are binned once, in the grid of the finest resolution \f$r_L\f$: the field at
+resolution \f$r\f$ is `compute_topology_score(tm, c, phi, r, r_L, np)` with the cues of
+`compute_geometric_cues(tm, c, phi, np)`, i.e.\ large faces are cut relative to the finest grid
+and a coarse voxel sums the counts of the finest voxels it holds. It differs from
+`compute_topology_score(tm, c, phi, r, np)` (samples binned at \f$r\f$) for \f$r < r_L\f$.
 
 The result is the same with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`, for any number of
 threads.
@@ -356,8 +397,8 @@ resolutions, and the fusion.
   \cgalParamNEnd
   \cgalParamNBegin{voxel_resolutions}
     \cgalParamDescription{the resolutions of the grids, coarse to fine}
-    \cgalParamType{`std::vector<int>` (or any range of integers): powers of two, each twice the
-                   previous one, the finest at most 256}
+    \cgalParamType{`std::vector<int>` (or any range of integers): a non-empty list of powers of
+                   two from 1 to 256, each twice the previous}
     \cgalParamDefault{`{16, 32, 64}`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_points_per_face}
@@ -385,6 +426,12 @@ resolutions, and the fusion.
     \cgalParamType{`double`, in \f$(0, 1)\f$}
     \cgalParamDefault{`0.15`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_density}
+    \cgalParamDescription{whether the topology score is weighted by the density term \f$\sqrt{n}\f$
+                          (paper Eq.\ 3); `false` is the paper's "w/o Density" ablation}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns the prior: the fields at each resolution, the fused classes and leaf resolutions on the
@@ -400,29 +447,21 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
                                              const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-
   // Every parameter is checked before any work.
-  const std::vector<int> resolutions = internal::checked_resolutions(
-    choose_parameter(get_parameter(np, internal_np::voxel_resolutions), defaults::voxel_resolutions()));
-  const double percentile = internal::curvature_percentile_parameter(np);
-  const std::size_t k = internal::number_of_neighbors_parameter(np);
-  const std::vector<std::array<double, 3> > barycentric = internal::barycentric_sample_grid_parameter(np);
-  const std::array<double, 4> weights = internal::cue_weights_parameter(np);
-  const double alpha = internal::freeze_ratio_parameter(np);
+  const internal::Prior_parameters parameters = internal::read_prior_parameters(np);
 
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
-  const Normalization normalization = internal::normalization_parameter(tm, np);
+  const Normalization normalization = internal::read_normalization(tm, np);
 
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
   const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
-  const std::vector<double> c = internal::face_curvature_cue(mesh, vc, kappa, percentile);
-  const std::vector<double> phi = internal::face_normal_deviation<ConcurrencyTag>(mesh, k);
+  const std::vector<double> c = internal::face_curvature_cue(mesh, vc, kappa, parameters.cues.curvature_percentile);
+  const std::vector<double> phi = internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
 
+  // Every level from the samples binned at the finest resolution (the list is increasing).
   std::vector<Topology_score_field> fields = internal::topology_score_fields<ConcurrencyTag>(
-    mesh, c, phi, resolutions, normalization, barycentric, weights, alpha);
+    mesh, c, phi, parameters.resolutions, parameters.resolutions.back(), normalization, parameters.score);
 
   std::vector<Voxel_grid<Voxel_class> > level_classes;
   level_classes.reserve(fields.size());

@@ -12,7 +12,8 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/mean_curvature.h>
 #include <CGAL/Part_decomposition/internal/normal_deviation.h>
-#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -42,26 +43,26 @@ Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const NamedParamete
                               CGAL::get_initialized_face_index_map(tm, np));
 }
 
-template <typename NamedParameters>
-double curvature_percentile_parameter(const NamedParameters& np)
+// The named parameters of the geometric cues; one reader for the three cue functions and the prior.
+struct Cue_parameters
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double p = double(choose_parameter(get_parameter(np, internal_np::curvature_percentile), defaults::curvature_percentile));
-  if(!(p >= 0. && p <= 100.))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "curvature_percentile must be in [0, 100]");
-  return p;
-}
+  double curvature_percentile;
+  std::size_t number_of_neighbors;
+};
 
 template <typename NamedParameters>
-std::size_t number_of_neighbors_parameter(const NamedParameters& np)
+Cue_parameters read_cue_parameters(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  Cue_parameters p;
+  p.curvature_percentile =
+    double(choose_parameter(get_parameter(np, internal_np::curvature_percentile), defaults::curvature_percentile));
+  check_parameter(p.curvature_percentile >= 0. && p.curvature_percentile <= 100., "curvature_percentile", "in [0, 100]");
   const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), defaults::number_of_neighbors));
-  if(!(k >= 1. && k <= 1e6) || k != std::floor(k))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "number_of_neighbors must be a positive integer");
-  return std::size_t(k);
+  check_parameter(k >= 1. && k <= 1e6 && k == std::floor(k), "number_of_neighbors", "a positive integer");
+  p.number_of_neighbors = std::size_t(k);
+  return p;
 }
 
 template <typename TriangleMesh, typename FaceMap, typename NamedParameters>
@@ -194,7 +195,8 @@ Linear in the size of `tm` (the percentile is a selection, not a sort).
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face is not a triangle, (`INVALID_PARAMETER`) if
-`curvature_percentile` is out of range.
+`curvature_percentile` or `number_of_neighbors` is out of range (the cue functions share one
+check of their parameters).
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename FaceCurvatureMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -202,7 +204,7 @@ void compute_face_curvature_cue(const TriangleMesh& tm, FaceCurvatureMap face_cu
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-  const double percentile = internal::curvature_percentile_parameter(np);
+  const double percentile = internal::read_cue_parameters(np).curvature_percentile;
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
   const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
@@ -271,7 +273,8 @@ queries for `number_of_neighbors` neighbours takes logarithmic time in practice.
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face is not a triangle, (`INVALID_PARAMETER`) if
-`number_of_neighbors` is not a positive integer.
+`number_of_neighbors` is not a positive integer or `curvature_percentile` is out of range (the cue
+functions share one check of their parameters).
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename FaceNormalDeviationMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -279,7 +282,7 @@ void compute_face_normal_deviation(const TriangleMesh& tm, FaceNormalDeviationMa
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-  const std::size_t k = internal::number_of_neighbors_parameter(np);
+  const std::size_t k = internal::read_cue_parameters(np).number_of_neighbors;
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   internal::write_face_values(tm, face_normal_deviation_map,
                               internal::face_normal_deviation<ConcurrencyTag>(mesh, k), np);
@@ -351,15 +354,14 @@ void compute_geometric_cues(const TriangleMesh& tm, FaceCurvatureMap face_curvat
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-  const double percentile = internal::curvature_percentile_parameter(np);
-  const std::size_t k = internal::number_of_neighbors_parameter(np);
+  const internal::Cue_parameters parameters = internal::read_cue_parameters(np);
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
   const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
   internal::write_face_values(tm, face_curvature_map,
-                              internal::face_curvature_cue(mesh, vc, kappa, percentile), np);
+                              internal::face_curvature_cue(mesh, vc, kappa, parameters.curvature_percentile), np);
   internal::write_face_values(tm, face_normal_deviation_map,
-                              internal::face_normal_deviation<ConcurrencyTag>(mesh, k), np);
+                              internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.number_of_neighbors), np);
 }
 
 } // namespace Part_decomposition

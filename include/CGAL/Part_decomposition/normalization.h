@@ -10,6 +10,10 @@
 
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -18,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -69,6 +74,29 @@ private:
   double m_scale;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The named parameters of compute_normalization(); the one reader of `normalization_margin`.
+struct Normalization_parameters
+{
+  double margin;
+};
+
+template <typename NamedParameters>
+Normalization_parameters read_normalization_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Normalization_parameters p;
+  p.margin = double(choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin));
+  check_parameter(p.margin >= 0. && p.margin <= 0.25, "normalization_margin", "in [0, 0.25]");
+  return p;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgPartDecompositionRef
 computes the normalization of `tm`: the centre of its axis-aligned bounding box goes to the
@@ -117,9 +145,7 @@ Normalization compute_normalization(const FaceListGraph& tm,
   typedef typename GetVertexPointMap<FaceListGraph, NamedParameters>::const_type VPM;
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
-  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
-  if(!(margin >= 0. && margin <= 0.25))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "normalization_margin must be in [0, 0.25]");
+  const double margin = internal::read_normalization_parameters(np).margin;
 
   double lo[3], hi[3];
   std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
@@ -156,6 +182,39 @@ Normalization compute_normalization(const FaceListGraph& tm,
     throw Invalid_input(Input_error::DEGENERATE_EXTENT, "all vertices of the mesh coincide");
   return Normalization(center, scale);
 }
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The one reader of the `normalization` named parameter: `compute_normalization(tm, np)` when absent.
+template <typename TriangleMesh, typename NamedParameters>
+Normalization read_normalization(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  if constexpr(is_default_parameter<NamedParameters, internal_np::normalization_t>::value)
+    return compute_normalization(tm, np);
+  else
+    return get_parameter(np, internal_np::normalization);
+}
+
+// The one reader of the `voxel_resolutions` named parameter (any range of integers), checked by
+// check_voxel_resolutions(): the grids of every stage live in the normalized cube.
+template <typename NamedParameters>
+std::vector<int> read_voxel_resolutions(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  // a copy: get_parameter() may return a temporary that a reference would outlive
+  const auto range = choose_parameter(get_parameter(np, internal_np::voxel_resolutions), defaults::voxel_resolutions());
+  std::vector<int> resolutions;
+  for(const auto& r : range) resolutions.push_back(int(r));
+  check_voxel_resolutions(resolutions);
+  return resolutions;
+}
+
+} // namespace internal
+/// \endcond
 
 } // namespace Part_decomposition
 } // namespace CGAL

@@ -13,8 +13,9 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/sample_accumulation.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -35,8 +37,9 @@ namespace Part_decomposition {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// Fills every grid of `field` but the cut from the sums.
-inline void make_score_field(const Voxel_sums& vs, const std::array<double, 4>& weights,
+// Fills every grid of `field` but the cut from the sums; the density factor sqrt(n) only with
+// `use_density` (the paper's "w/o Density" ablation drops it).
+inline void make_score_field(const Voxel_sums& vs, const std::array<double, 4>& weights, bool use_density,
                              Topology_score_field& field)
 {
   const int r = vs.r;
@@ -66,10 +69,15 @@ inline void make_score_field(const Voxel_sums& vs, const std::array<double, 4>& 
         if(vs.n[v] == 0) continue;
         const double delta = dense_gradient_norm(mu, r, i, j, k);
         field.curvature_gradient[v] = delta;
-        field.score[v] = (weights[0] * mu[v] + weights[1] * field.curvature_deviation[v] +
-                          weights[2] * delta + weights[3] * field.normal_deviation[v]) *
-                         std::sqrt(double(vs.n[v]));
+        const double evidence = weights[0] * mu[v] + weights[1] * field.curvature_deviation[v] +
+                                weights[2] * delta + weights[3] * field.normal_deviation[v];
+        field.score[v] = use_density ? evidence * std::sqrt(double(vs.n[v])) : evidence;
       }
+}
+
+inline void check_freeze_ratio(double alpha)
+{
+  check_parameter(alpha > 0. && alpha < 1., "freeze_ratio", "in (0, 1)");
 }
 
 // The Flow/Freeze cut of a field whose `sample_count` and `score` are set.
@@ -98,17 +106,27 @@ inline void flow_freeze_cut(Topology_score_field& field, double alpha)
   }
 }
 
-// The score fields and cuts at every resolution of `resolutions`, each a power of two dividing the
-// finest one (the largest), all from one pass over the samples.
+// The named parameters of the topology score (compute_topology_score(), and through it
+// compute_flow_freeze_prior()): the samples of a face, the cue weights, alpha, the density switch.
+struct Topology_score_parameters
+{
+  std::vector<std::array<double, 3> > barycentric;
+  std::array<double, 4> cue_weights;
+  double freeze_ratio;
+  bool use_density;
+};
+
+// The score fields and cuts at every resolution of `resolutions`, all from one pass over the
+// samples binned at `sampling_resolution`, a power of two times each of them: large faces are cut
+// relative to that grid, and a coarser voxel sums the counts of the finer voxels it holds.
 template <typename ConcurrencyTag>
 std::vector<Topology_score_field>
 topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
-                      const std::vector<int>& resolutions, const Normalization& normalization,
-                      const std::vector<std::array<double, 3> >& barycentric,
-                      const std::array<double, 4>& weights, double alpha)
+                      const std::vector<int>& resolutions, int sampling_resolution,
+                      const Normalization& normalization, const Topology_score_parameters& parameters)
 {
   CGAL_precondition(!resolutions.empty());
-  const int rf = *std::max_element(resolutions.begin(), resolutions.end());
+  const int rf = sampling_resolution;
   std::vector<Voxel_sums> sums(resolutions.size());
   for(std::size_t l = 0; l < resolutions.size(); ++l)
   {
@@ -120,17 +138,32 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
   std::vector<Vec3> unit_points(mesh.points.size());
   for(std::size_t v = 0; v < unit_points.size(); ++v)
     unit_points[v] = normalization.to_unit(mesh.points[v][0], mesh.points[v][1], mesh.points[v][2]);
-  accumulate_samples<ConcurrencyTag>(unit_points, mesh.faces, c, phi, barycentric, rf, sums);
+  accumulate_samples<ConcurrencyTag>(unit_points, mesh.faces, c, phi, parameters.barycentric, rf, sums);
 
   std::vector<Topology_score_field> fields(resolutions.size());
   for_each_block<ConcurrencyTag>(resolutions.size(), 1, [&](std::size_t begin, std::size_t end) {
     for(std::size_t l = begin; l < end; ++l)
     {
-      make_score_field(sums[l], weights, fields[l]);
-      flow_freeze_cut(fields[l], alpha);
+      make_score_field(sums[l], parameters.cue_weights, parameters.use_density, fields[l]);
+      flow_freeze_cut(fields[l], parameters.freeze_ratio);
     }
   });
   return fields;
+}
+
+// The signature of the benchmark (benchmark/Part_decomposition/bench_prior.cpp): samples binned at
+// the finest of `resolutions`, with the density term.
+template <typename ConcurrencyTag>
+std::vector<Topology_score_field>
+topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
+                      const std::vector<int>& resolutions, const Normalization& normalization,
+                      const std::vector<std::array<double, 3> >& barycentric,
+                      const std::array<double, 4>& weights, double alpha)
+{
+  CGAL_precondition(!resolutions.empty());
+  return topology_score_fields<ConcurrencyTag>(
+    mesh, c, phi, resolutions, *std::max_element(resolutions.begin(), resolutions.end()), normalization,
+    Topology_score_parameters{barycentric, weights, alpha, defaults::use_density});
 }
 
 } // namespace internal
@@ -158,9 +191,8 @@ perfect square.
 inline std::vector<std::array<double, 3> > barycentric_sample_grid(std::size_t number_of_points_per_face)
 {
   std::size_t n = std::size_t(std::llround(std::sqrt(double(number_of_points_per_face))));
-  if(number_of_points_per_face == 0 || n * n != number_of_points_per_face)
-    throw Invalid_input(Input_error::INVALID_PARAMETER,
-                        "number_of_points_per_face must be a positive perfect square (n per side gives n^2)");
+  internal::check_parameter(number_of_points_per_face != 0 && n * n == number_of_points_per_face,
+                            "number_of_points_per_face", "a positive perfect square");
   std::vector<std::array<double, 3> > samples;
   samples.reserve(number_of_points_per_face);
   const double dn = double(n);
@@ -207,61 +239,55 @@ Linear in the number of voxels \f$r^3\f$ (the quantile is a selection).
 */
 inline void apply_flow_freeze_cut(Topology_score_field& field, double freeze_ratio)
 {
-  internal::flow_freeze_cut(field, internal::checked_freeze_ratio(freeze_ratio));
+  internal::check_freeze_ratio(freeze_ratio);
+  internal::flow_freeze_cut(field, freeze_ratio);
 }
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// Any range of 4 finite numbers (std::array, std::vector, ...) as the cue weights.
+template <typename Range>
+std::array<double, 4> to_cue_weights(const Range& range)
+{
+  std::array<double, 4> w{{0., 0., 0., 0.}};
+  const bool four = std::distance(std::begin(range), std::end(range)) == 4;
+  bool finite = true;
+  std::size_t n = 0;
+  for(auto it = std::begin(range); four && it != std::end(range); ++it, ++n)
+  {
+    w[n] = double(*it);
+    finite = finite && std::isfinite(w[n]);
+  }
+  check_parameter(four && finite, "cue_weights", "4 finite numbers");
+  return w;
+}
+
+// The one reader of the parameters of the topology score, defaults from `defaults::`.
 template <typename NamedParameters>
-std::vector<std::array<double, 3> > barycentric_sample_grid_parameter(const NamedParameters& np)
+Topology_score_parameters read_topology_score_parameters(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face), defaults::number_of_points_per_face));
-  if(!(n >= 1. && n <= 1e7) || n != std::floor(n))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "number_of_points_per_face must be a positive perfect square");
-  return barycentric_sample_grid(std::size_t(n));
+  Topology_score_parameters p;
+  const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face),
+                                           defaults::number_of_points_per_face));
+  check_parameter(n >= 1. && n <= 1e7 && n == std::floor(n), "number_of_points_per_face", "a positive perfect square");
+  p.barycentric = barycentric_sample_grid(std::size_t(n));
+  p.cue_weights = to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights), defaults::cue_weights));
+  p.freeze_ratio = double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), defaults::freeze_ratio));
+  check_freeze_ratio(p.freeze_ratio);
+  p.use_density = bool(choose_parameter(get_parameter(np, internal_np::use_density), defaults::use_density));
+  return p;
 }
 
-template <typename NamedParameters>
-std::array<double, 4> cue_weights_parameter(const NamedParameters& np)
+// The single resolution of compute_topology_score() and the grid its samples are binned in,
+// checked as the lists of `voxel_resolutions` they stand for.
+inline void check_topology_score_resolutions(int resolution, int sampling_resolution)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights),
-                                         defaults::cue_weights));
-}
-
-template <typename NamedParameters>
-double freeze_ratio_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return checked_freeze_ratio(double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), defaults::freeze_ratio)));
-}
-
-template <typename TriangleMesh, typename NamedParameters>
-Normalization normalization_parameter(const TriangleMesh& tm, const NamedParameters& np)
-{
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  if constexpr(is_default_parameter<NamedParameters, internal_np::normalization_t>::value)
-    return compute_normalization(tm, np);
-  else
-    return get_parameter(np, internal_np::normalization);
-}
-
-// The score fields at each resolution (see topology_score_fields()), all parameters read from np.
-template <typename ConcurrencyTag, typename NamedParameters>
-std::vector<Topology_score_field>
-topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
-                      const std::vector<int>& resolutions, const Normalization& normalization,
-                      const NamedParameters& np)
-{
-  return topology_score_fields<ConcurrencyTag>(mesh, c, phi, resolutions, normalization,
-                                               barycentric_sample_grid_parameter(np),
-                                               cue_weights_parameter(np), freeze_ratio_parameter(np));
+  check_voxel_resolutions(std::vector<int>(1, resolution));
+  check_voxel_resolutions(std::vector<int>(1, sampling_resolution));
+  check_parameter(sampling_resolution >= resolution, "sampling_resolution", "at least the resolution");
 }
 
 } // namespace internal
@@ -269,30 +295,47 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
 
 /*!
 \ingroup PkgPartDecompositionRef
-computes the voxel cues, the topology score \f$S_B\f$ and its Flow/Freeze cut at resolution `r`
-(paper Sec.\ 3.2, Eq.\ 3-5, App.\ B).
+computes the voxel cues, the topology score \f$S_B\f$ and its Flow/Freeze cut at resolution
+`resolution` (paper Sec.\ 3.2, Eq.\ 3-5, App.\ B), from samples binned in the grid of resolution
+`sampling_resolution`.
 
-Every face gets the `number_of_points_per_face` samples of `barycentric_sample_grid()`; they are
-mapped to the normalized cube by `normalization` and binned with `voxel_coordinate()`. A face whose
-samples would lie more than half a voxel apart (an edge longer than \f$\sqrt{N_{face}}/2\f$ voxels
-of the finest resolution) is cut by longest-edge bisection until none is; each piece gets the
-samples, weighted by its share of the face's area, and the face adds its weight rounded to an
-integer, at least 1, to every voxel it reaches: large triangles leave no hole in the active set. One
-accumulation pass gives, per voxel, the number of samples \f$n\f$, the mean \f$\mu^\kappa\f$ and
-standard deviation \f$\sigma^\kappa = \sqrt{\max(0, E[c^2] - \mu^2)}\f$ of the face curvature cue,
-and the mean normal deviation \f$\phi_{norm}\f$ (each sample carries the values of its face).
+Every face gets the `number_of_points_per_face` (\f$N_{face}\f$) samples of
+`barycentric_sample_grid()`; they are mapped to the normalized cube by `normalization` and binned
+with `voxel_coordinate()` in the sampling grid, of resolution \f$r_s\f$ = `sampling_resolution`.
+A face counts, in each voxel of the sampling grid:
+- if its three corners lie in one voxel: its \f$N_{face}\f$ samples, all in that voxel;
+- else, if its longest edge is at most \f$\sqrt{N_{face}}/2\f$ voxels (samples at most half a
+  voxel apart): the number of its samples in the voxel (\f$N_{face}\f$ in total);
+- else (a large face) it is cut by longest-edge bisection until no piece has an edge longer than
+  \f$\sqrt{N_{face}}/2\f$ voxels (or a piece is \f$2^{-30}\f$ of the face); every piece gets the
+  \f$N_{face}\f$ samples, each weighted by the piece's share of the face's area, and the face
+  counts, in each voxel it reaches, the sum of the weights of its samples there rounded to the
+  nearest integer, but at least 1. The weights sum to \f$N_{face}\f$, but the counts do not: the
+  face counts at least the number of voxels it reaches (1 per voxel when a voxel gets less than
+  half a sample's worth of its area), so that large triangles leave no hole in the active set.
+
+A voxel of the grid of resolution \f$r\f$ sums the counts of the voxels of the sampling grid it
+holds: \f$n\f$, the number of samples, and, with each sample carrying the values of its face, the
+mean \f$\mu^\kappa\f$ and standard deviation \f$\sigma^\kappa = \sqrt{\max(0, E[c^2] - \mu^2)}\f$ of
+the face curvature cue and the mean normal deviation \f$\phi_{norm}\f$.
 \f$\Delta^\kappa = \|\nabla\mu^\kappa\|\f$ is taken on the dense \f$r^3\f$ array of
 \f$\mu^\kappa\f$ (0 in empty voxels) with unit spacing: central differences inside, one-sided
 differences at the border of the grid. Then
 \f$S_B = (\lambda_1\mu^\kappa + \lambda_2\sigma^\kappa + \lambda_3\Delta^\kappa + \lambda_4\phi_{norm})\sqrt{n}\f$
-on the active voxels (\f$n > 0\f$), and `apply_flow_freeze_cut()` with \f$\alpha\f$ =
-`freeze_ratio` gives the classes. Every grid holds 0 (`EMPTY`) outside the active voxels.
+on the active voxels (\f$n > 0\f$), without the density factor \f$\sqrt{n}\f$ when `use_density`
+is `false`, and `apply_flow_freeze_cut()` with \f$\alpha\f$ = `freeze_ratio` gives the classes.
+Every grid holds 0 (`EMPTY`) outside the active voxels.
+
+With `sampling_resolution` the finest of the `voxel_resolutions` of `compute_flow_freeze_prior()`
+(and the same named parameters), the result is the prior's field at `resolution`; the overload
+without it bins the samples at `resolution` itself.
 
 The sums are accumulated in face order whatever the number of threads: results are identical
 with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
 
 \par Complexity
-\f$O(F\,N_{face} + r^3)\f$ for \f$F\f$ faces and \f$N_{face}\f$ = `number_of_points_per_face`.
+\f$O(F\,N_{face} + r_s^3)\f$ for \f$F\f$ faces with no large face; a large face costs
+\f$N_{face}\f$ per piece.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
@@ -306,6 +349,8 @@ with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
 \param face_curvature_map the face curvature cue \f$c_f\f$ (e.g.\ from `compute_geometric_cues()`)
 \param face_normal_deviation_map the normal deviation \f$\phi_{norm}(f)\f$
 \param resolution the resolution \f$r\f$ of the grid
+\param sampling_resolution the resolution \f$r_s\f$ of the grid the samples are binned in, a
+       power of two times `resolution`
 \param np an optional sequence of named parameters among the ones listed below
 
 \cgalNamedParamsBegin
@@ -354,27 +399,36 @@ with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
     \cgalParamType{`double`, in \f$(0, 1)\f$}
     \cgalParamDefault{`0.15`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_density}
+    \cgalParamDescription{whether the score is weighted by the density term \f$\sqrt{n}\f$ (paper Eq.\ 3);
+                          `false` is the paper's "w/o Density" ablation}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the field at resolution `r`.
+\returns the field at resolution `resolution`.
 
 \pre `tm` has no garbage (`Surface_mesh`)
-\throws Invalid_input (`INVALID_PARAMETER`) if `r` is not in `[1, 256]` or a parameter is out
-of range; (`NOT_TRIANGLE_MESH`) if a face is not a triangle; the exceptions of
-`compute_normalization()` when `normalization` is not given.
+\throws Invalid_input (`INVALID_PARAMETER`) if `resolution` or `sampling_resolution`, each taken as
+a list of one resolution, breaks the rule of `voxel_resolutions` (a power of two from 1 to 256),
+if `sampling_resolution` is below `resolution`, or if a parameter is out of range;
+(`NOT_TRIANGLE_MESH`) if a face is not a triangle; the exceptions of `compute_normalization()`
+when `normalization` is not given.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename FaceCurvatureMap, typename FaceNormalDeviationMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Topology_score_field compute_topology_score(const TriangleMesh& tm, FaceCurvatureMap face_curvature_map,
                                             FaceNormalDeviationMap face_normal_deviation_map, int resolution,
+                                            int sampling_resolution,
                                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-  if(resolution < 1 || resolution > 256)
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "the resolution must be in [1, 256]");
+  internal::check_topology_score_resolutions(resolution, sampling_resolution);
+  const internal::Topology_score_parameters parameters = internal::read_topology_score_parameters(np);
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
@@ -388,10 +442,26 @@ Topology_score_field compute_topology_score(const TriangleMesh& tm, FaceCurvatur
     c[i] = double(get(face_curvature_map, f));
     phi[i] = double(get(face_normal_deviation_map, f));
   }
-  const Normalization normalization = internal::normalization_parameter(tm, np);
+  const Normalization normalization = internal::read_normalization(tm, np);
   std::vector<Topology_score_field> fields = internal::topology_score_fields<ConcurrencyTag>(
-    mesh, c, phi, std::vector<int>(1, resolution), normalization, np);
+    mesh, c, phi, std::vector<int>(1, resolution), sampling_resolution, normalization, parameters);
   return std::move(fields.front());
+}
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the topology score at `resolution` with the samples binned at `resolution` itself:
+`compute_topology_score(tm, face_curvature_map, face_normal_deviation_map, resolution, resolution, np)`.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename FaceCurvatureMap, typename FaceNormalDeviationMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Topology_score_field compute_topology_score(const TriangleMesh& tm, FaceCurvatureMap face_curvature_map,
+                                            FaceNormalDeviationMap face_normal_deviation_map, int resolution,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return compute_topology_score<ConcurrencyTag>(tm, face_curvature_map, face_normal_deviation_map, resolution,
+                                                resolution, np);
 }
 
 } // namespace Part_decomposition

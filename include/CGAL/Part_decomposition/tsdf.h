@@ -15,6 +15,8 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_distance.h>
 #include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
@@ -24,10 +26,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_invoke.h>
-#endif
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,7 +33,6 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -76,12 +73,13 @@ void spread_to_surface_voxels(const std::vector<Triangle_points>& tris, const Su
   for(int round = 0; round < rounds && !pending.empty(); ++round)
   {
     std::vector<std::uint8_t> next_inside = inside, next_decided = decided;
-    parallel_ranges<ConcurrencyTag>(pending.size(), [&](std::size_t b, std::size_t e) {
+    for_each_range<ConcurrencyTag>(pending.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t n = b; n < e; ++n)
       {
         const std::size_t idx = pending[n];
         const std::array<int, 3> ijk = S.coordinates(idx);
         const P c = point(S.center(idx));
+        // not for_each_face_neighbor(): the neighbours outside the grid count here
         for(int dir = 0; dir < 6; ++dir)
         {
           std::array<int, 3> q = ijk;
@@ -124,14 +122,13 @@ std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_po
   for(std::size_t idx = 0; idx < size; ++idx)
   {
     if(S[idx] != 0) continue;
-    const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-    if((i > 0 && S[idx - 1]) || (i + 1 < R && S[idx + 1]) || (j > 0 && S[idx - R]) ||
-       (j + 1 < R && S[idx + R]) || (k > 0 && S[idx - R * R]) || (k + 1 < R && S[idx + R * R]))
-      shell.push_back(idx);
+    bool next_to_surface = false;
+    for_each_face_neighbor(idx, R, [&](std::size_t n) { next_to_surface = next_to_surface || S[n] != 0; });
+    if(next_to_surface) shell.push_back(idx);
   }
   const Fast_winding_number wn(tris);
   auto evaluate = [&](const std::vector<std::size_t>& voxels) {
-    parallel_ranges<ConcurrencyTag>(voxels.size(), [&](std::size_t b, std::size_t e) {
+    for_each_range<ConcurrencyTag>(voxels.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t n = b; n < e; ++n)
       {
         const std::size_t idx = voxels[n];
@@ -146,21 +143,14 @@ std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_po
   for(std::size_t head = 0; head < queue.size(); ++head)
   {
     const std::size_t idx = queue[head];
-    const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-    auto visit = [&](std::size_t n) {
+    for_each_face_neighbor(idx, R, [&](std::size_t n) {
       if(decided[n] == 0 && S[n] == 0)
       {
         decided[n] = 1;
         inside[n] = inside[idx];
         queue.push_back(n);
       }
-    };
-    if(i > 0) visit(idx - 1);
-    if(i + 1 < R) visit(idx + 1);
-    if(j > 0) visit(idx - R);
-    if(j + 1 < R) visit(idx + R);
-    if(k > 0) visit(idx - R * R);
-    if(k + 1 < R) visit(idx + R * R);
+    });
   }
   spread_to_surface_voxels<ConcurrencyTag>(tris, sv, r, 3, inside, decided);
   std::vector<std::size_t> left;
@@ -192,21 +182,6 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
   return inside;
 }
 
-// Runs `f` and `g`, at the same time when `ConcurrencyTag` is parallel.
-template <typename ConcurrencyTag, typename F, typename G>
-void invoke_both(const F& f, const G& g)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_invoke(f, g);
-    return;
-  }
-#endif
-  f();
-  g();
-}
-
 // Unsigned distances (normalized units, clipped to `tau`) at the voxel centres that can be closer
 // than `tau` to the surface, `tau` elsewhere. The distance from a centre to the surface is at least
 // its distance to the nearest surface-voxel centre minus half a voxel diagonal: beyond
@@ -225,15 +200,15 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
   Voxel_grid<double> d2;
   std::unique_ptr<const Triangle_soup_aabb_tree> tree_holder;
   // CGAL builds the tree sequentially: next to the surface-voxel EDT when threads are available.
-  invoke_both<ConcurrencyTag>([&] { tree_holder.reset(new Triangle_soup_aabb_tree(tris)); },
-                              [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest); });
+  run_side_by_side<ConcurrencyTag>([&] { tree_holder.reset(new Triangle_soup_aabb_tree(tris)); },
+                                   [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest); });
   const Triangle_soup_aabb_tree& tree = *tree_holder;
   const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
   const double reach2 = reach * reach;
 
   Voxel_grid<double> out(r, tau);
   const double tau2 = tau * tau;
-  parallel_ranges<ConcurrencyTag>(R * R, [&](std::size_t b, std::size_t e) {
+  for_each_range<ConcurrencyTag>(R * R, [&](std::size_t b, std::size_t e) {
     for(std::size_t row = b; row < e; ++row)
     {
       bool has_previous = false;
@@ -277,18 +252,28 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
   return out;
 }
 
-// The `normalization` named parameter, computed only when absent.
-template <typename TriangleMesh, typename NamedParameters>
-Normalization normalization_or_default(const CGAL::internal_np::Param_not_found&, const TriangleMesh& tm,
-                                       const NamedParameters& np)
+// The named parameters of compute_tsdf(): the finest resolution, tau in voxels, the sign method.
+struct Tsdf_parameters
 {
-  return compute_normalization(tm, np);
-}
-template <typename TriangleMesh, typename NamedParameters>
-Normalization normalization_or_default(const Normalization& normalization, const TriangleMesh&,
-                                       const NamedParameters&)
+  int resolution;
+  double truncation_voxels;
+  Tsdf_sign_method sign_method;
+};
+
+template <typename NamedParameters>
+Tsdf_parameters read_tsdf_parameters(const NamedParameters& np)
 {
-  return normalization;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Tsdf_parameters p;
+  p.resolution = read_voxel_resolutions(np).back();
+  p.truncation_voxels = double(choose_parameter(get_parameter(np, internal_np::tsdf_truncation), defaults::tsdf_truncation));
+  check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation",
+                  "in (0, 4 * resolution]");
+  // not in `defaults::`, which holds the numerical defaults
+  p.sign_method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method), Tsdf_sign_method::AUTOMATIC);
+  if(p.sign_method == Tsdf_sign_method::AUTOMATIC) p.sign_method = Tsdf_sign_method::WINDING_NUMBER;
+  return p;
 }
 
 // Inside flags of the voxel centres by `method` (never AUTOMATIC).
@@ -365,13 +350,14 @@ voxels next to the surface.
     \cgalParamDefault{`2.0/64`}
   \cgalParamNEnd
   \cgalParamNBegin{voxel_resolutions}
-    \cgalParamDescription{the resolutions of the method; the TSDF grid has the largest one}
-    \cgalParamType{a range of `int`, each in `[2, 1024]`}
+    \cgalParamDescription{the resolutions of the method; the TSDF grid has the finest (the last) one}
+    \cgalParamType{`std::vector<int>` (or any range of integers): a non-empty list of powers of
+                   two from 1 to 256, each twice the previous (the rule of `compute_flow_freeze_prior()`)}
     \cgalParamDefault{`std::vector<int>{16, 32, 64}`}
   \cgalParamNEnd
   \cgalParamNBegin{tsdf_truncation}
     \cgalParamDescription{\f$\tau\f$ in voxels of the TSDF grid (paper Table A.1: \f$8\Delta^{(64)}\f$)}
-    \cgalParamType{`double`, positive}
+    \cgalParamType{`double`, in \f$(0, 4r]\f$ for the TSDF resolution \f$r\f$}
     \cgalParamDefault{`8.0`}
   \cgalParamNEnd
   \cgalParamNBegin{tsdf_sign_method}
@@ -387,8 +373,8 @@ voxels next to the surface.
 \returns the field, its truncation in normalized units, the normalization and the sign method used.
 
 \throws Invalid_input (see `check_input()`) if `tm` has no face, a face that is not a triangle,
-        a non-finite coordinate or no extent, and with `Input_error::INVALID_PARAMETER` if a
-        resolution or the truncation is out of range.
+        a non-finite coordinate or no extent, and with `Input_error::INVALID_PARAMETER` if
+        `voxel_resolutions` breaks its rule or the truncation is out of range.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -397,40 +383,19 @@ Truncated_signed_distance_field compute_tsdf(const TriangleMesh& tm,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-#ifndef CGAL_LINKED_WITH_TBB
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
+  internal::static_check_concurrency_tag<ConcurrencyTag>();
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
 
   check_input(tm, np);
-
-  int r = 0;
-  {
-    // A copy: get_parameter() returns a temporary that choose_parameter() would refer to.
-    const auto resolutions = choose_parameter(get_parameter(np, internal_np::voxel_resolutions), std::vector<int>{16, 32, 64});
-    bool any = false;
-    for(const auto& v : resolutions)
-    {
-      if(!(int(v) >= 2 && int(v) <= 1024))
-        throw Invalid_input(Input_error::INVALID_PARAMETER, "voxel_resolutions must be in [2, 1024]");
-      r = (std::max)(r, int(v));
-      any = true;
-    }
-    if(!any) throw Invalid_input(Input_error::INVALID_PARAMETER, "voxel_resolutions must not be empty");
-  }
-  const double truncation_voxels = choose_parameter(get_parameter(np, internal_np::tsdf_truncation), 8.0);
-  if(!(truncation_voxels > 0. && truncation_voxels <= 4. * r))
-    throw Invalid_input(Input_error::INVALID_PARAMETER, "tsdf_truncation must be in (0, 4 * resolution]");
-  Tsdf_sign_method method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method),
-                                             Tsdf_sign_method::AUTOMATIC);
-  if(method == Tsdf_sign_method::AUTOMATIC) method = Tsdf_sign_method::WINDING_NUMBER;
+  const internal::Tsdf_parameters parameters = internal::read_tsdf_parameters(np);
+  const int r = parameters.resolution;
+  const Tsdf_sign_method method = parameters.sign_method;
 
   Truncated_signed_distance_field out;
-  out.normalization = internal::normalization_or_default(get_parameter(np, internal_np::normalization), tm, np);
-  out.truncation = truncation_voxels / double(r);
+  out.normalization = internal::read_normalization(tm, np);
+  out.truncation = parameters.truncation_voxels / double(r);
   out.sign_method = method;
 
   const std::vector<internal::Triangle_points> tris = internal::normalized_triangles(tm, vpm, out.normalization);

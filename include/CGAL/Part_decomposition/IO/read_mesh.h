@@ -118,6 +118,279 @@ struct Mesh_file_info
   std::size_t number_of_reversed_components = 0;
 };
 
+} // namespace IO
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
+
+// The polygon soup of a file, as read, and the triangles made from it.
+struct File_soup
+{
+  std::vector<Read_point> file_points;
+  std::vector<std::vector<std::size_t> > polygons;
+  // the file points with equal coordinates merged; merged[i] is the point of file point i
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::size_t> merged;
+  // the triangles with three distinct points, the file face of each, the faces that gave none
+  std::vector<std::vector<std::size_t> > triangles;
+  std::vector<std::size_t> triangle_to_input;
+  std::vector<std::size_t> dropped;
+};
+
+inline std::size_t size_of_file(const std::string& filename)
+{
+  std::ifstream probe(filename, std::ios::binary | std::ios::ate);
+  if(!probe)
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
+  const std::streamoff end = probe.tellg();
+  return end > 0 ? std::size_t(end) : 0;
+}
+
+// Parses the file into `soup.file_points` and `soup.polygons`; false if it cannot be parsed.
+inline bool parse_polygon_soup(const std::string& filename, File_soup& soup)
+{
+  const std::size_t file_size = size_of_file(filename);
+  try
+  {
+    // A header may promise more than the file holds (an OFF count or face degree of 10^9 in a
+    // few bytes): no single allocation of the parser may exceed a multiple of the file size.
+    Read_allocation_limit limit(64 * file_size + (std::size_t(1) << 20));
+    std::vector<Read_point, Bounded_allocator<Read_point> > bounded_points;
+    std::vector<std::vector<std::size_t, Bounded_allocator<std::size_t> >,
+                Bounded_allocator<std::vector<std::size_t, Bounded_allocator<std::size_t> > > >
+      bounded_polygons;
+    // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
+    // broken files: these two formats are read by our own parsers.
+    const std::string extension = CGAL::IO::internal::get_file_extension(filename);
+    std::ifstream in(filename, std::ios::binary);
+    bool ok = false;
+    if(extension == "off")
+      ok = Off_soup_reader(in).read(bounded_points, bounded_polygons);
+    else if(extension == "ply")
+      ok = Ply_soup_reader(in).read(bounded_points, bounded_polygons);
+    else
+      ok = CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
+    if(!ok) return false;
+    soup.file_points.assign(bounded_points.begin(), bounded_points.end());
+    soup.polygons.reserve(bounded_polygons.size());
+    for(const auto& poly : bounded_polygons) soup.polygons.emplace_back(poly.begin(), poly.end());
+    return true;
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
+
+inline void check_polygon_soup(const std::string& filename, const File_soup& soup)
+{
+  if(soup.polygons.empty())
+    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face");
+  for(const Read_point& p : soup.file_points)
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
+                          "'" + filename + "' has a vertex with a non-finite coordinate");
+  for(const std::vector<std::size_t>& poly : soup.polygons)
+  {
+    if(poly.size() < 3)
+      throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with fewer than 3 vertices");
+    for(std::size_t id : poly)
+      if(id >= soup.file_points.size())
+        throw Invalid_input(Input_error::INVALID_FACE,
+                            "'" + filename + "' has a face with an out-of-range vertex index");
+  }
+}
+
+// Merges points with equal coordinates (STL stores each triangle's corners separately).
+inline void merge_equal_points(File_soup& soup)
+{
+  soup.merged.resize(soup.file_points.size());
+  std::map<std::array<double, 3>, std::size_t> index;
+  for(std::size_t i = 0; i < soup.file_points.size(); ++i)
+  {
+    const std::array<double, 3> c = {{soup.file_points[i].x(), soup.file_points[i].y(), soup.file_points[i].z()}};
+    auto res = index.emplace(c, soup.points.size());
+    if(res.second) soup.points.push_back(c);
+    soup.merged[i] = res.first->second;
+  }
+}
+
+// Triangulates every polygon on the merged points; returns the number of polygons with more than
+// three vertices after merging.
+inline std::size_t triangulate_polygons(File_soup& soup)
+{
+  std::size_t triangulated = 0;
+  auto xyz = [&](std::size_t i) { return soup.points[i]; };
+  std::vector<std::array<std::size_t, 3> > tris;
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+  {
+    std::vector<std::size_t> poly;
+    for(std::size_t id : soup.polygons[f])
+      if(poly.empty() || poly.back() != soup.merged[id]) poly.push_back(soup.merged[id]);
+    while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+    tris.clear();
+    if(poly.size() >= 3)
+    {
+      if(poly.size() > 3) ++triangulated;
+      triangulate_polygon(poly, xyz, tris);
+    }
+    bool any = false;
+    for(const std::array<std::size_t, 3>& t : tris)
+    {
+      if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+      soup.triangles.push_back({t[0], t[1], t[2]});
+      soup.triangle_to_input.push_back(f);
+      any = true;
+    }
+    if(!any) soup.dropped.push_back(f);
+  }
+  return triangulated;
+}
+
+// Adds the triangles to `tm` one by one, so that a face refused by add_face cannot shift the
+// order; points no triangle uses are not added. Returns the face of each triangle (null if refused).
+template <typename TriangleMesh, typename Point>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+add_triangles(const std::vector<Point>& soup_points, const std::vector<std::vector<std::size_t> >& triangles,
+              TriangleMesh& tm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<typename GT::vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
+  for(const std::vector<std::size_t>& t : triangles)
+    for(std::size_t id : t)
+      if(vmap[id] == GT::null_vertex())
+      {
+        vmap[id] = add_vertex(tm);
+        put(get(CGAL::vertex_point, tm), vmap[id], soup_points[id]);
+      }
+  std::vector<typename GT::face_descriptor> triangle_face(triangles.size(), GT::null_face());
+  std::vector<typename GT::vertex_descriptor> corners(3);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for(int k = 0; k < 3; ++k) corners[k] = vmap[triangles[t][k]];
+    triangle_face[t] = CGAL::Euler::add_face(corners, tm);
+  }
+  return triangle_face;
+}
+
+// A refused triangle (should not happen after orientation) is treated like a dropped face.
+template <typename TriangleMesh>
+void drop_faces_of_refused_triangles(
+  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& triangle_face, File_soup& soup)
+{
+  const auto null_face = boost::graph_traits<TriangleMesh>::null_face();
+  std::vector<char> input_has_face(soup.polygons.size(), 0);
+  for(std::size_t t = 0; t < triangle_face.size(); ++t)
+    if(triangle_face[t] != null_face) input_has_face[soup.triangle_to_input[t]] = 1;
+  for(std::size_t t = 0; t < triangle_face.size(); ++t)
+    if(triangle_face[t] == null_face && !input_has_face[soup.triangle_to_input[t]])
+    {
+      input_has_face[soup.triangle_to_input[t]] = 2; // mark once
+      soup.dropped.push_back(soup.triangle_to_input[t]);
+    }
+}
+
+// Orients every closed connected component outward (positive enclosed volume); returns how many
+// were reversed. Closedness is per component here, so not CGAL::is_closed().
+template <typename TriangleMesh>
+std::size_t orient_closed_components_outward(TriangleMesh& tm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
+  auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  const std::size_t ncc = CGAL::Polygon_mesh_processing::connected_components(tm, fcc);
+  std::vector<double> volume(ncc, 0.);
+  std::vector<char> closed(ncc, 1);
+  for(face_descriptor f : faces(tm))
+  {
+    const std::size_t c = get(fcc, f);
+    std::array<std::array<double, 3>, 3> p;
+    int k = 0;
+    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      const Point& q = get(get(CGAL::vertex_point, tm), target(h, tm));
+      p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+      if(is_border(opposite(h, tm), tm)) closed[c] = 0;
+    }
+    volume[c] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1])
+               - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0])
+               + p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+  }
+  std::vector<face_descriptor> to_reverse;
+  for(face_descriptor f : faces(tm))
+    if(closed[get(fcc, f)] && volume[get(fcc, f)] < 0.) to_reverse.push_back(f);
+  std::size_t reversed = 0;
+  for(std::size_t c = 0; c < ncc; ++c)
+    if(closed[c] && volume[c] < 0.) ++reversed;
+  if(!to_reverse.empty())
+    CGAL::Polygon_mesh_processing::reverse_face_orientations(to_reverse, tm);
+  return reversed;
+}
+
+// The mesh face (iteration order) whose result the dropped file face f takes: one sharing a
+// point with it, or else the one with the nearest centroid.
+template <typename Point>
+std::size_t donor_of_dropped_face(std::size_t f, const File_soup& soup, const std::vector<Point>& soup_points,
+                                  const std::vector<std::size_t>& triangle_of_point,
+                                  const std::vector<std::size_t>& position_of_triangle)
+{
+  for(std::size_t id : soup.polygons[f])
+  {
+    const std::size_t t = triangle_of_point[soup.merged[id]];
+    if(t != std::size_t(-1) && position_of_triangle[t] != std::size_t(-1)) return position_of_triangle[t];
+  }
+  // isolated degenerate face: the mesh face with the nearest centroid
+  std::size_t donor = std::size_t(-1);
+  std::array<double, 3> c = {{0., 0., 0.}};
+  for(std::size_t id : soup.polygons[f])
+    for(int a = 0; a < 3; ++a) c[a] += soup.points[soup.merged[id]][a] / double(soup.polygons[f].size());
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    if(position_of_triangle[t] == std::size_t(-1)) continue;
+    double d2 = 0.;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double m = (CGAL::to_double(soup_points[soup.triangles[t][0]][a]) +
+                        CGAL::to_double(soup_points[soup.triangles[t][1]][a]) +
+                        CGAL::to_double(soup_points[soup.triangles[t][2]][a])) / 3. - c[a];
+      d2 += m * m;
+    }
+    if(d2 < best) { best = d2; donor = position_of_triangle[t]; }
+  }
+  return donor;
+}
+
+// Fills `face_to_input` in the iteration order of faces(tm), and `dropped_faces` with a donor each.
+// `triangle_of_point`: the first triangle incident to each merged point.
+template <typename TriangleMesh, typename Point>
+void record_face_correspondence(
+  TriangleMesh& tm, const File_soup& soup, const std::vector<Point>& soup_points,
+  const std::vector<std::size_t>& triangle_of_point,
+  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& triangle_face,
+  IO::Mesh_file_info& info)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor FaceDescriptor;
+  auto ftri = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+    if(triangle_face[t] != boost::graph_traits<TriangleMesh>::null_face()) put(ftri, triangle_face[t], t);
+  std::vector<std::size_t> position_of_triangle(soup.triangles.size(), std::size_t(-1));
+  for(FaceDescriptor f : faces(tm))
+  {
+    position_of_triangle[get(ftri, f)] = info.face_to_input.size();
+    info.face_to_input.push_back(soup.triangle_to_input[get(ftri, f)]);
+  }
+  for(std::size_t f : soup.dropped)
+    info.dropped_faces.emplace_back(f, donor_of_dropped_face(f, soup, soup_points, triangle_of_point, position_of_triangle));
+}
+
+} // namespace internal
+/// \endcond
+
+namespace IO {
+
 /*!
 \ingroup PkgPartDecompositionIO
 reads the file `filename` (OFF, OBJ, PLY, STL; chosen by extension) into the triangle mesh `tm`,
@@ -148,241 +421,42 @@ template <typename TriangleMesh>
 Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type VPM;
   typedef typename boost::property_traits<VPM>::value_type Point;
-  typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
 
   Mesh_file_info info;
-  std::size_t file_size = 0;
-  {
-    std::ifstream probe(filename, std::ios::binary | std::ios::ate);
-    if(!probe)
-      throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
-    const std::streamoff end = probe.tellg();
-    file_size = end > 0 ? std::size_t(end) : 0;
-  }
-  std::vector<Read_point> file_points;
-  std::vector<std::vector<std::size_t> > polygons;
-  bool ok = false;
-  try
-  {
-    // A header may promise more than the file holds (an OFF count or face degree of 10^9 in a
-    // few bytes): no single allocation of the parser may exceed a multiple of the file size.
-    internal::Read_allocation_limit limit(64 * file_size + (std::size_t(1) << 20));
-    std::vector<Read_point, internal::Bounded_allocator<Read_point> > bounded_points;
-    std::vector<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> >,
-                internal::Bounded_allocator<std::vector<std::size_t, internal::Bounded_allocator<std::size_t> > > >
-      bounded_polygons;
-    // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
-    // broken files: these two formats are read by our own parsers.
-    const std::string extension = CGAL::IO::internal::get_file_extension(filename);
-    std::ifstream in(filename, std::ios::binary);
-    if(extension == "off")
-      ok = internal::Off_soup_reader(in).read(bounded_points, bounded_polygons);
-    else if(extension == "ply")
-      ok = internal::Ply_soup_reader(in).read(bounded_points, bounded_polygons);
-    else
-      ok = CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
-    if(ok)
-    {
-      file_points.assign(bounded_points.begin(), bounded_points.end());
-      polygons.reserve(bounded_polygons.size());
-      for(const auto& poly : bounded_polygons) polygons.emplace_back(poly.begin(), poly.end());
-    }
-  }
-  catch(const std::exception&)
-  {
-    ok = false;
-  }
-  if(!ok)
+  internal::File_soup soup;
+  if(!internal::parse_polygon_soup(filename, soup))
     throw Invalid_input(Input_error::UNREADABLE_FILE,
                         "cannot parse '" + filename + "' as an OFF, OBJ, PLY or STL mesh");
-  info.number_of_input_faces = polygons.size();
-  info.number_of_input_vertices = file_points.size();
-  if(polygons.empty())
-    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face");
-  for(const Read_point& p : file_points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
-                          "'" + filename + "' has a vertex with a non-finite coordinate");
-  for(const std::vector<std::size_t>& poly : polygons)
-  {
-    if(poly.size() < 3)
-      throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with fewer than 3 vertices");
-    for(std::size_t id : poly)
-      if(id >= file_points.size())
-        throw Invalid_input(Input_error::INVALID_FACE,
-                            "'" + filename + "' has a face with an out-of-range vertex index");
-  }
-
-  // Merge points with equal coordinates (STL stores each triangle's corners separately).
-  std::vector<std::array<double, 3> > points;
-  std::vector<std::size_t> merged(file_points.size());
-  {
-    std::map<std::array<double, 3>, std::size_t> index;
-    for(std::size_t i = 0; i < file_points.size(); ++i)
-    {
-      const std::array<double, 3> c = {{file_points[i].x(), file_points[i].y(), file_points[i].z()}};
-      auto res = index.emplace(c, points.size());
-      if(res.second) points.push_back(c);
-      merged[i] = res.first->second;
-    }
-    info.number_of_merged_vertices = file_points.size() - points.size();
-  }
-
-  // Triangles with three distinct vertices, each tagged with its file face.
-  std::vector<std::vector<std::size_t> > triangles;
-  std::vector<std::size_t> triangle_to_input;
-  std::vector<std::size_t> dropped;
-  {
-    auto xyz = [&](std::size_t i) { return points[i]; };
-    std::vector<std::array<std::size_t, 3> > tris;
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-    {
-      std::vector<std::size_t> poly;
-      for(std::size_t id : polygons[f])
-        if(poly.empty() || poly.back() != merged[id]) poly.push_back(merged[id]);
-      while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-      tris.clear();
-      if(poly.size() >= 3)
-      {
-        if(poly.size() > 3) ++info.number_of_triangulated_faces;
-        internal::triangulate_polygon(poly, xyz, tris);
-      }
-      bool any = false;
-      for(const std::array<std::size_t, 3>& t : tris)
-      {
-        if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
-        triangles.push_back({t[0], t[1], t[2]});
-        triangle_to_input.push_back(f);
-        any = true;
-      }
-      if(!any) dropped.push_back(f);
-    }
-  }
-  if(triangles.empty())
+  info.number_of_input_faces = soup.polygons.size();
+  info.number_of_input_vertices = soup.file_points.size();
+  internal::check_polygon_soup(filename, soup);
+  internal::merge_equal_points(soup);
+  info.number_of_merged_vertices = soup.file_points.size() - soup.points.size();
+  info.number_of_triangulated_faces = internal::triangulate_polygons(soup);
+  if(soup.triangles.empty())
     throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face with three distinct vertices");
 
   // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
-  std::vector<std::size_t> triangle_of_point(points.size(), std::size_t(-1));
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-    for(std::size_t id : triangles[t])
+  std::vector<std::size_t> triangle_of_point(soup.points.size(), std::size_t(-1));
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+    for(std::size_t id : soup.triangles[t])
       if(triangle_of_point[id] == std::size_t(-1)) triangle_of_point[id] = t;
 
-  const std::size_t n_points_before = points.size();
   std::vector<Point> soup_points;
-  soup_points.reserve(points.size());
-  for(const std::array<double, 3>& c : points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  if(!internal::is_oriented_manifold_soup(triangles, soup_points.size()))
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, triangles);
-  info.number_of_duplicated_vertices = soup_points.size() - n_points_before;
+  soup_points.reserve(soup.points.size());
+  for(const std::array<double, 3>& c : soup.points) soup_points.push_back(Point(c[0], c[1], c[2]));
+  if(!internal::is_oriented_manifold_soup(soup.triangles, soup_points.size()))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
+  info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
-  // Build the mesh face by face so that a face refused by add_face cannot shift the order;
-  // points that no triangle uses are not added.
-  std::vector<vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
-  for(const std::vector<std::size_t>& t : triangles)
-    for(std::size_t id : t)
-      if(vmap[id] == GT::null_vertex())
-      {
-        vmap[id] = add_vertex(tm);
-        put(get(CGAL::vertex_point, tm), vmap[id], soup_points[id]);
-      }
-  std::vector<face_descriptor> triangle_face(triangles.size(), GT::null_face());
-  std::vector<vertex_descriptor> corners(3);
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    for(int k = 0; k < 3; ++k) corners[k] = vmap[triangles[t][k]];
-    triangle_face[t] = CGAL::Euler::add_face(corners, tm);
-  }
-
-  // A refused triangle (should not happen after orientation) is treated like a dropped face.
-  std::vector<char> input_has_face(polygons.size(), 0);
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-    if(triangle_face[t] != GT::null_face()) input_has_face[triangle_to_input[t]] = 1;
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-    if(triangle_face[t] == GT::null_face() && !input_has_face[triangle_to_input[t]])
-    {
-      input_has_face[triangle_to_input[t]] = 2; // mark once
-      dropped.push_back(triangle_to_input[t]);
-    }
+  const std::vector<typename GT::face_descriptor> triangle_face = internal::add_triangles(soup_points, soup.triangles, tm);
+  internal::drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
     throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' gives no valid triangle");
-
-  // Orient every closed connected component outward (positive enclosed volume).
-  {
-    auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
-    const std::size_t ncc = CGAL::Polygon_mesh_processing::connected_components(tm, fcc);
-    std::vector<double> volume(ncc, 0.);
-    std::vector<char> closed(ncc, 1);
-    for(face_descriptor f : faces(tm))
-    {
-      const std::size_t c = get(fcc, f);
-      std::array<std::array<double, 3>, 3> p;
-      int k = 0;
-      for(auto h : halfedges_around_face(halfedge(f, tm), tm))
-      {
-        const Point& q = get(get(CGAL::vertex_point, tm), target(h, tm));
-        p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-        if(is_border(opposite(h, tm), tm)) closed[c] = 0;
-      }
-      volume[c] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1])
-                 - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0])
-                 + p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
-    }
-    std::vector<face_descriptor> to_reverse;
-    for(face_descriptor f : faces(tm))
-      if(closed[get(fcc, f)] && volume[get(fcc, f)] < 0.) to_reverse.push_back(f);
-    for(std::size_t c = 0; c < ncc; ++c)
-      if(closed[c] && volume[c] < 0.) ++info.number_of_reversed_components;
-    if(!to_reverse.empty())
-      CGAL::Polygon_mesh_processing::reverse_face_orientations(to_reverse, tm);
-  }
-
-  // Face correspondence in the iteration order of faces(tm).
-  {
-    auto ftri = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
-    for(std::size_t t = 0; t < triangles.size(); ++t)
-      if(triangle_face[t] != GT::null_face()) put(ftri, triangle_face[t], t);
-    std::vector<std::size_t> position_of_triangle(triangles.size(), std::size_t(-1));
-    for(face_descriptor f : faces(tm))
-    {
-      position_of_triangle[get(ftri, f)] = info.face_to_input.size();
-      info.face_to_input.push_back(triangle_to_input[get(ftri, f)]);
-    }
-    for(std::size_t f : dropped)
-    {
-      std::size_t donor = std::size_t(-1);
-      for(std::size_t id : polygons[f])
-      {
-        const std::size_t t = triangle_of_point[merged[id]];
-        if(t != std::size_t(-1) && position_of_triangle[t] != std::size_t(-1)) { donor = position_of_triangle[t]; break; }
-      }
-      if(donor == std::size_t(-1))
-      {
-        // isolated degenerate face: the mesh face with the nearest centroid
-        std::array<double, 3> c = {{0., 0., 0.}};
-        for(std::size_t id : polygons[f])
-          for(int a = 0; a < 3; ++a) c[a] += points[merged[id]][a] / double(polygons[f].size());
-        double best = std::numeric_limits<double>::infinity();
-        for(std::size_t t = 0; t < triangles.size(); ++t)
-        {
-          if(position_of_triangle[t] == std::size_t(-1)) continue;
-          double d2 = 0.;
-          for(int a = 0; a < 3; ++a)
-          {
-            const double m = (CGAL::to_double(soup_points[triangles[t][0]][a]) +
-                              CGAL::to_double(soup_points[triangles[t][1]][a]) +
-                              CGAL::to_double(soup_points[triangles[t][2]][a])) / 3. - c[a];
-            d2 += m * m;
-          }
-          if(d2 < best) { best = d2; donor = position_of_triangle[t]; }
-        }
-      }
-      info.dropped_faces.emplace_back(f, donor);
-    }
-  }
+  info.number_of_reversed_components = internal::orient_closed_components_outward(tm);
+  internal::record_face_correspondence(tm, soup, soup_points, triangle_of_point, triangle_face, info);
   return info;
 }
 

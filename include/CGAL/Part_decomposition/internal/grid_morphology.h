@@ -9,14 +9,10 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_GRID_MORPHOLOGY_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -24,7 +20,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <vector>
 
 // Small reusable operations on dense voxel masks (`Voxel_grid<std::uint8_t>`, nonzero = in the
@@ -41,25 +36,6 @@ inline double no_feature_distance() { return std::numeric_limits<double>::infini
 
 /// The nearest-feature index reported for the virtual features outside the grid.
 inline std::size_t outside_grid_feature() { return std::numeric_limits<std::size_t>::max(); }
-
-// Runs `body(begin, end)` on [0, n), split in chunks when `ConcurrencyTag` is parallel. Work items
-// must be independent: the result then does not depend on the split.
-template <typename ConcurrencyTag, typename Body>
-void parallel_ranges(std::size_t n, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n),
-                      [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
-    return;
-  }
-#else
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-  body(std::size_t(0), n);
-}
 
 // Scratch buffers of the 1D lower envelope, sized once per chunk of lines.
 struct Envelope_buffers
@@ -189,7 +165,7 @@ Voxel_grid<double> squared_distance_transform(const Voxel_grid<std::uint8_t>& fe
   {
     const std::size_t s = stride[axis];
     const std::size_t other1 = stride[(axis + 1) % 3], other2 = stride[(axis + 2) % 3];
-    parallel_ranges<ConcurrencyTag>(R * R, [&](std::size_t begin, std::size_t end) {
+    for_each_range<ConcurrencyTag>(R * R, [&](std::size_t begin, std::size_t end) {
       Envelope_buffers b(r);
       std::vector<std::size_t> line_nearest(track ? R : 0);
       for(std::size_t line = begin; line < end; ++line)
@@ -266,7 +242,7 @@ void add_features_to_squared_distance_transform(Voxel_grid<double>& sq_distance,
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
     const int len = n[axis];
     const std::size_t lines = std::size_t(n[a1]) * std::size_t(n[a2]);
-    parallel_ranges<ConcurrencyTag>(lines, [&](std::size_t begin, std::size_t end) {
+    for_each_range<ConcurrencyTag>(lines, [&](std::size_t begin, std::size_t end) {
       Envelope_buffers b(len);
       for(std::size_t line = begin; line < end; ++line)
       {
@@ -320,14 +296,7 @@ inline Voxel_grid<std::uint8_t> border_connected_complement(const Voxel_grid<std
   const std::size_t R = std::size_t(r);
   for(std::size_t head = 0; head < queue.size(); ++head)
   {
-    const std::size_t idx = queue[head];
-    const std::size_t i = idx % R, j = (idx / R) % R, k = idx / (R * R);
-    if(i > 0) push(idx - 1);
-    if(i + 1 < R) push(idx + 1);
-    if(j > 0) push(idx - R);
-    if(j + 1 < R) push(idx + R);
-    if(k > 0) push(idx - R * R);
-    if(k + 1 < R) push(idx + R * R);
+    for_each_face_neighbor(queue[head], R, push);
   }
   return reached;
 }
@@ -395,19 +364,13 @@ inline Grid_components connected_components(const Voxel_grid<std::uint8_t>& mask
       sum[0] += double(i);
       sum[1] += double(j);
       sum[2] += double(k);
-      auto visit = [&](std::size_t n) {
+      for_each_face_neighbor(idx, R, [&](std::size_t n) {
         if(mask[n] != 0 && out.labels[n] < 0)
         {
           out.labels[n] = label;
           queue.push_back(n);
         }
-      };
-      if(i > 0) visit(idx - 1);
-      if(i + 1 < R) visit(idx + 1);
-      if(j > 0) visit(idx - R);
-      if(j + 1 < R) visit(idx + R);
-      if(k > 0) visit(idx - R * R);
-      if(k + 1 < R) visit(idx + R * R);
+      });
     }
     const double n = double(queue.size());
     out.sizes.push_back(queue.size());

@@ -8,7 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_MEAN_CURVATURE_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_MEAN_CURVATURE_H
 
-#include <CGAL/Part_decomposition/internal/prior_parallel.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
 #include <array>
@@ -35,11 +35,11 @@ inline bool corner_terms(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& lapl
     area = 0.;
     return false;
   }
-  const Vec3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
-  normal = cross(ab, ac);
-  const double dot_a = dot(ab, ac);  // angle at a
-  const double dot_b = -dot(ab, bc); // angle at b: (a-b).(c-b)
-  const double dot_c = dot(ac, bc);  // angle at c: (a-c).(b-c)
+  const Vec3 ab = sub3(b, a), ac = sub3(c, a), bc = sub3(c, b);
+  normal = cross3(ab, ac);
+  const double dot_a = dot3(ab, ac);  // angle at a
+  const double dot_b = -dot3(ab, bc); // angle at b: (a-b).(c-b)
+  const double dot_c = dot3(ac, bc);  // angle at c: (a-c).(b-c)
   const double cot_b = dot_b / twice_area, cot_c = dot_c / twice_area;
   for(int i = 0; i < 3; ++i) laplacian[i] = -cot_c * ab[i] - cot_b * ac[i];
   const double T = 0.5 * twice_area;
@@ -48,7 +48,7 @@ inline bool corner_terms(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& lapl
   else if(dot_b < 0. || dot_c < 0.)
     area = T / 4;
   else
-    area = (dot(ac, ac) * cot_b + dot(ab, ab) * cot_c) / 8;
+    area = (dot3(ac, ac) * cot_b + dot3(ab, ab) * cot_c) / 8;
   return true;
 }
 
@@ -138,11 +138,11 @@ std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Ve
       double k;
       if(border)
       {
-        const double nn = std::sqrt(dot(normal, normal));
-        k = nn > 0. ? std::abs(dot(lap, normal)) / nn / (4. * area) : 0.;
+        const double nn = std::sqrt(dot3(normal, normal));
+        k = nn > 0. ? std::abs(dot3(lap, normal)) / nn / (4. * area) : 0.;
       }
       else
-        k = std::sqrt(dot(lap, lap)) / (4. * area);
+        k = std::sqrt(dot3(lap, lap)) / (4. * area);
       kappa[v] = std::isfinite(k) ? k : 0.;
     }
   });

@@ -11,6 +11,7 @@
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -59,6 +60,7 @@ std::vector<Triangle_points> normalized_triangles(const TriangleMesh& tm, const 
 
 // Whether no halfedge of a face of `tm` is a border halfedge: then the triangles form a 2-cycle and
 // the winding number of every point off the surface is an integer, given exactly by ray crossings.
+// Not CGAL::is_closed(): that one also fails on an edge no face uses, which bounds nothing here.
 template <typename TriangleMesh>
 bool faces_form_closed_surface(const TriangleMesh& tm)
 {
@@ -115,7 +117,7 @@ Surface_voxels surface_voxels(const std::vector<Triangle_points>& tris, int r)
   // Fixed chunks concatenated in order: the output does not depend on the thread count.
   const std::size_t nchunks = (std::min<std::size_t>)(64, (n + 255) / 256 + 1);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t> > > pairs(nchunks);
-  parallel_ranges<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
+  for_each_range<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
     for(std::size_t chunk = cb; chunk < ce; ++chunk)
     {
       const std::size_t tb = n * chunk / nchunks, te = n * (chunk + 1) / nchunks;
@@ -203,7 +205,7 @@ Row_crossings row_crossings(const std::vector<Triangle_points>& tris, int r)
   };
   const std::size_t nchunks = (std::min<std::size_t>)(64, (n + 255) / 256 + 1);
   std::vector<std::vector<Hit> > hits(nchunks);
-  parallel_ranges<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
+  for_each_range<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
     for(std::size_t chunk = cb; chunk < ce; ++chunk)
     {
       const std::size_t tb = n * chunk / nchunks, te = n * (chunk + 1) / nchunks;

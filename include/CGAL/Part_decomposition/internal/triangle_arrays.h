@@ -9,6 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H
 
 #include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -26,15 +27,6 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-typedef std::array<double, 3> Vec3;
-
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-
 // Relative area below which a triangle counts as degenerate: twice its area must exceed this
 // times its longest squared edge (a height of 1e-12 longest edges). Rounding noise of the
 // cross product is ~1e-16 relative, so every triangle above the bound has a meaningful normal.
@@ -42,12 +34,12 @@ constexpr double degenerate_triangle_ratio = 1e-12;
 
 inline bool is_degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double& twice_area)
 {
-  const Vec3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
-  const Vec3 n = cross(ab, ac);
-  twice_area = std::sqrt(dot(n, n));
-  double l2 = dot(ab, ab);
-  l2 = (std::max)(l2, dot(ac, ac));
-  l2 = (std::max)(l2, dot(bc, bc));
+  const Vec3 ab = sub3(b, a), ac = sub3(c, a), bc = sub3(c, b);
+  const Vec3 n = cross3(ab, ac);
+  twice_area = std::sqrt(dot3(n, n));
+  double l2 = dot3(ab, ab);
+  l2 = (std::max)(l2, dot3(ac, ac));
+  l2 = (std::max)(l2, dot3(bc, bc));
   return !(twice_area > degenerate_triangle_ratio * l2) || !std::isfinite(twice_area);
 }
 

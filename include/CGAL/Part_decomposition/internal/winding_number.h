@@ -8,6 +8,8 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_WINDING_NUMBER_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_WINDING_NUMBER_H
 
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -32,16 +34,7 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-typedef std::array<double, 3> Vec3;
 typedef std::array<Vec3, 3> Triangle_points;
-
-inline Vec3 sub3(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross3(const Vec3& a, const Vec3& b)
-{
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
 
 // Signed solid angle of triangle (a,b,c) seen from q (Van Oosterom-Strackee), in [-2pi, 2pi];
 // positive when q is on the side opposite to the normal (b-a)x(c-a), i.e. behind the triangle.
