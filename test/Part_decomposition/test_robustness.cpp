@@ -546,9 +546,12 @@ TEST_CASE("out-of-range named parameters give INVALID_PARAMETER before any work"
   const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 2, 3), 2);
   auto bad = [&](const auto& np) { return decompose_error(m, np) == PD::Input_error::INVALID_PARAMETER; };
   for(const std::vector<int>& r : std::vector<std::vector<int> >{
-        {}, {0}, {1}, {1, 2, 4}, {-16}, {3}, {16, 48}, {16, 64}, {64, 32}, {256, 512}, {1 << 30},
+        {}, {0}, {1}, {-16}, {3}, {16, 48}, {16, 64}, {64, 32}, {256, 512}, {1 << 30},
         {std::numeric_limits<int>::min()}})
     CHECK(bad(PDP::voxel_resolutions(r)));
+  // the coarsest grids the rule allows still give a valid decomposition ({1} alone fails on the
+  // default truncation of 8 voxels, which must be at most 4 voxels of the finest grid)
+  decompose_checked(m, PDP::voxel_resolutions(std::vector<int>{1, 2, 4}));
   for(unsigned int n : {0u, 35u, 4000000000u}) CHECK(bad(CGAL::parameters::number_of_points_per_face(n)));
   CHECK(bad(PDP::number_of_neighbors(0)));
   for(double p : {-1., 100.5, k_nan}) CHECK(bad(PDP::curvature_percentile(p)));

@@ -126,7 +126,7 @@ enum class Interior_weight_mode
 
 /*!
 \ingroup PkgPartDecompositionRef
-The default value of each numerical named parameter of the package: the paper's Table A.1 where
+The default value of each named parameter of the package: the paper's Table A.1 where
 it gives one, the choices of this implementation (documented with the functions that read them)
 elsewhere. Every function of the package takes its defaults from here.
 */
