@@ -237,7 +237,7 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_tsdf = compute_tsdf<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_tsdf = true;
     return m_tsdf;
   }

@@ -77,6 +77,13 @@ private:
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// Whether `a` and `b` are the same map (center and scale): grids computed in two frames do not
+// match voxel for voxel.
+inline bool same_frame(const Normalization& a, const Normalization& b)
+{
+  return a.center() == b.center() && a.scale() == b.scale();
+}
+
 // The named parameters of compute_normalization(); the one reader of `normalization_margin`.
 struct Normalization_parameters
 {

@@ -237,7 +237,7 @@ package's parameters are:
 | `curvature_percentile()` | `double` | 99.5 | `compute_face_curvature_cue()` |
 | `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
 | `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
-| `use_density()` | `bool` | `true` | `compute_topology_score()` |
+| `use_density()` | `bool` | `true` | `compute_topology_score()`, `compute_flow_freeze_prior()` |
 | `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
 | `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
 | `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |
@@ -266,7 +266,7 @@ package's parameters are:
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
 | `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
-| `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
+| `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 

@@ -8,6 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
 #define CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
 
+#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
@@ -33,12 +34,6 @@
 
 namespace CGAL {
 namespace Part_decomposition {
-
-/*!
-\ingroup PkgPartDecompositionRef
-The primitive index that `assign_parts()` returns for its single part when no voxel is claimed.
-*/
-constexpr std::size_t no_primitive = (std::numeric_limits<std::size_t>::max)();
 
 namespace internal {
 

@@ -17,11 +17,19 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
+
+/*!
+\ingroup PkgPartDecompositionRef
+The primitive index that `assign_parts()` returns for its single part when no voxel is claimed, and that
+`Part_decomposer::part_to_primitive()` gives a part without a fitted primitive.
+*/
+constexpr std::size_t no_primitive = (std::numeric_limits<std::size_t>::max)();
 
 /*!
 \ingroup PkgPartDecompositionRef

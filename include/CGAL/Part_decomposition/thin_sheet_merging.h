@@ -43,13 +43,6 @@ Sheet_merging_parameters read_sheet_merging_parameters(const NamedParameters& np
   return p;
 }
 
-// Whether `a` and `b` are the same map (center and scale): grids computed in two frames do not
-// match voxel for voxel.
-inline bool same_frame(const Normalization& a, const Normalization& b)
-{
-  return a.center() == b.center() && a.scale() == b.scale();
-}
-
 } // namespace internal
 
 /*!

@@ -292,6 +292,35 @@ std::vector<std::uint8_t> inside_flags(const std::vector<Triangle_points>& tris,
   }
 }
 
+// compute_tsdf() on a mesh that check_input() accepted (Part_decomposer checks its mesh once).
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
+Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  static_check_concurrency_tag<ConcurrencyTag>();
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const Tsdf_parameters parameters = read_tsdf_parameters(np);
+  const int r = parameters.resolution;
+  const Tsdf_sign_method method = parameters.sign_method;
+
+  Truncated_signed_distance_field out;
+  out.normalization = read_normalization(tm, np);
+  out.truncation = parameters.truncation_voxels / double(r);
+  out.sign_method = method;
+
+  const std::vector<Triangle_points> tris = normalized_triangles(tm, vpm, out.normalization);
+  const bool closed = faces_form_closed_surface(tm);
+  const Surface_voxels sv = surface_voxels<ConcurrencyTag>(tris, r);
+  const std::vector<std::uint8_t> inside = inside_flags<ConcurrencyTag>(tris, closed, method, sv, r);
+  out.values = clipped_unsigned_distance<ConcurrencyTag>(tris, sv, r, out.truncation);
+  for(std::size_t i = 0; i < out.values.size(); ++i)
+    if(inside[i]) out.values[i] = -out.values[i];
+  return out;
+}
+
 } // namespace internal
 
 /*!
@@ -380,31 +409,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
 Truncated_signed_distance_field compute_tsdf(const TriangleMesh& tm,
                                              const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  internal::static_check_concurrency_tag<ConcurrencyTag>();
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-
   check_input(tm, np);
-  const internal::Tsdf_parameters parameters = internal::read_tsdf_parameters(np);
-  const int r = parameters.resolution;
-  const Tsdf_sign_method method = parameters.sign_method;
-
-  Truncated_signed_distance_field out;
-  out.normalization = internal::read_normalization(tm, np);
-  out.truncation = parameters.truncation_voxels / double(r);
-  out.sign_method = method;
-
-  const std::vector<internal::Triangle_points> tris = internal::normalized_triangles(tm, vpm, out.normalization);
-  const bool closed = internal::faces_form_closed_surface(tm);
-  const internal::Surface_voxels sv = internal::surface_voxels<ConcurrencyTag>(tris, r);
-  const std::vector<std::uint8_t> inside = internal::inside_flags<ConcurrencyTag>(tris, closed, method, sv, r);
-  out.values = internal::clipped_unsigned_distance<ConcurrencyTag>(tris, sv, r, out.truncation);
-  for(std::size_t i = 0; i < out.values.size(); ++i)
-    if(inside[i]) out.values[i] = -out.values[i];
-  return out;
+  return internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(tm, np);
 }
 
 
