@@ -14,7 +14,8 @@
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -170,8 +171,11 @@ inline bool parse_polygon_soup(const std::string& filename, File_soup& soup)
       ok = Off_soup_reader(in).read(bounded_points, bounded_polygons);
     else if(extension == "ply")
       ok = Ply_soup_reader(in).read(bounded_points, bounded_polygons);
-    else
-      ok = CGAL::IO::read_polygon_soup(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
+    else if(extension == "obj")
+      ok = CGAL::IO::read_OBJ(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
+    else if(extension == "stl")
+      ok = CGAL::IO::read_STL(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
+    // only the four formats: CGAL's reader of every format costs a user seconds of compilation
     if(!ok) return false;
     soup.file_points.assign(bounded_points.begin(), bounded_points.end());
     soup.polygons.reserve(bounded_polygons.size());

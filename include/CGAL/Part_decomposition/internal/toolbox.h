@@ -101,13 +101,16 @@ void for_each_range(std::size_t n, const F& f, std::size_t grain = 1)
   if(n == 0) return;
   grain = (std::max)(grain, std::size_t(1));
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel_tag<ConcurrencyTag>() && n > grain)
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
   {
-    tbb_for_each_range(n, grain, Range_function(f));
-    return;
+    // the body is compiled once, behind the reference, also for the short loops run in place
+    const Range_function body(f);
+    if(n > grain) tbb_for_each_range(n, grain, body);
+    else body(0, n);
   }
+  else
 #endif
-  f(std::size_t(0), n);
+    f(std::size_t(0), n);
 }
 
 // Calls f(begin, end) on the blocks [b*block_size, min(n, (b+1)*block_size)). The blocks do not
@@ -124,13 +127,15 @@ void for_each_block(std::size_t n, std::size_t block_size, const F& f)
     for(std::size_t b = first; b != last; ++b) f(b * block_size, (std::min)(n, (b + 1) * block_size));
   };
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel_tag<ConcurrencyTag>() && number_of_blocks > 1)
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
   {
-    tbb_for_each_range(number_of_blocks, 1, Range_function(blocks));
-    return;
+    const Range_function body(blocks);
+    if(number_of_blocks > 1) tbb_for_each_range(number_of_blocks, 1, body);
+    else body(0, number_of_blocks);
   }
+  else
 #endif
-  blocks(0, number_of_blocks);
+    blocks(0, number_of_blocks);
 }
 
 // Runs `f` and `g`, as two tasks when `ConcurrencyTag` is parallel (each may run parallel loops:
@@ -140,14 +145,16 @@ void run_side_by_side(const F& f, const G& g)
 {
   static_check_concurrency_tag<ConcurrencyTag>();
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel_tag<ConcurrencyTag>())
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
   {
     tbb_run_side_by_side(Task_function(f), Task_function(g));
-    return;
   }
+  else
 #endif
-  f();
-  g();
+  {
+    f();
+    g();
+  }
 }
 
 // ---- 3D vectors of doubles (the inner loops work on plain arrays, not on kernel objects)
