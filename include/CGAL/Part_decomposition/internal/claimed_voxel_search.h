@@ -9,11 +9,9 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_CLAIMED_VOXEL_SEARCH_H
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/internal/point_kd_tree.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -37,11 +35,9 @@ namespace internal {
 // strictly nearer, so an interior voxel is never the nearest.
 class Claimed_voxel_search
 {
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef K::Point_3 Point;
-  typedef CGAL::Search_traits_3<K> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef Search::Tree Tree;
+  // the kd-tree of the normal deviation: one kd-tree type compiled for both
+  typedef Point_kd_tree::Point Point;
+  typedef Point_kd_tree::Tree Tree;
 
 public:
   struct Result
@@ -70,7 +66,11 @@ public:
     }
     m_tree.reset();
     if(m_points.empty()) return;
-    m_tree.reset(new Tree(m_points.begin(), m_points.end()));
+    m_keys.resize(m_points.size());
+    for(std::size_t i = 0; i < m_keys.size(); ++i) m_keys[i] = i;
+    const Point_kd_tree::Point_map pmap(m_points.data());
+    // CGAL's default bucket size (10)
+    m_tree.reset(new Tree(m_keys.begin(), m_keys.end(), Point_kd_tree::Splitter(10), Point_kd_tree::Traits(pmap)));
     // Built before the concurrent queries (a lazy build is not thread-safe).
     m_tree->template build<ConcurrencyTag>();
   }
@@ -129,9 +129,11 @@ public:
         return out;
       }
     }
-    Search search(*m_tree, Point(u[0], u[1], u[2]), 1);
-    const std::pair<Point, double> nn = *search.begin(); // a copy: the iterator yields temporaries
-    const std::array<int, 3> v = g.locate(nn.first.x(), nn.first.y(), nn.first.z()); // its voxel
+    const Point_kd_tree::Distance distance(Point_kd_tree::Point_map(m_points.data()));
+    Point_kd_tree::Knn search(*m_tree, Point(u[0], u[1], u[2]), 1, 0., true, distance);
+    const std::pair<std::size_t, double> nn = *search.begin(); // a copy: the iterator yields temporaries
+    const Point& c = m_points[nn.first];
+    const std::array<int, 3> v = g.locate(c.x(), c.y(), c.z()); // its voxel
     out.label = g(v[0], v[1], v[2]);
     out.distance = std::sqrt(nn.second);
     return out;
@@ -144,6 +146,7 @@ private:
   const Voxel_grid<std::int32_t>* m_grid = nullptr;
   bool m_any = false;
   std::vector<Point> m_points;
+  std::vector<std::size_t> m_keys; // the tree holds indices into m_points
   std::unique_ptr<Tree> m_tree;
 };
 

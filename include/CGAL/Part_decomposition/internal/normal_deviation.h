@@ -8,15 +8,9 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_NORMAL_DEVIATION_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_NORMAL_DEVIATION_H
 
+#include <CGAL/Part_decomposition/internal/point_kd_tree.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
-
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <cmath>
@@ -156,16 +150,13 @@ inline double mean_normal_deviation(std::size_t q, const std::vector<std::pair<s
 template <typename ConcurrencyTag>
 std::vector<double> face_normal_deviation(const Triangle_arrays& mesh, std::size_t k)
 {
-  typedef CGAL::Simple_cartesian<double> SC;
-  typedef SC::Point_3 Point;
-  typedef CGAL::Pointer_property_map<Point>::const_type Point_map;
-  typedef CGAL::Search_traits_3<SC> Base_traits;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
-  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
-  typedef CGAL::Sliding_midpoint<Traits> Splitter;
-  // The points cache keeps the coordinates in the tree's own order: no indirection per distance.
-  typedef CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true> Tree;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> Knn;
+  typedef Point_kd_tree::Point Point;
+  typedef Point_kd_tree::Point_map Point_map;
+  typedef Point_kd_tree::Traits Traits;
+  typedef Point_kd_tree::Distance Distance;
+  typedef Point_kd_tree::Splitter Splitter;
+  typedef Point_kd_tree::Tree Tree;
+  typedef Point_kd_tree::Knn Knn;
 
   const std::size_t nf = mesh.faces.size();
   std::vector<double> phi(nf, 0.);
