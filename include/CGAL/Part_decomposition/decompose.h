@@ -300,7 +300,7 @@ public:
       m_parts);
     m_has_parts = true;
     if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
-      merge_thin_sheets();
+      merge_thin_sheets<ConcurrencyTag>();
     else
       make_part_primitives();
     for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
@@ -312,16 +312,19 @@ public:
   dihedral angles of the over-segmentation, and returns the new number of parts. `assign_parts()`
   calls it unless `merge_thin_sheets(false)` is given; call it after such an `assign_parts()` to
   compare `parts()` before and after.
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (for the depth of the
+  claimed voxels); the result is the same
   \pre `assign_parts()` was called.
   */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
   std::size_t merge_thin_sheets()
   {
     CGAL_precondition(m_has_parts);
     if(!m_has_parts)
       throw std::logic_error("Part_decomposer::merge_thin_sheets() needs the parts");
     check_frame(m_tsdf.normalization, "the normalization of the distance field");
-    internal::merge_thin_sheets_on_faces(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting, m_parts,
-                                         m_part_to_primitive);
+    internal::merge_thin_sheets_on_faces<ConcurrencyTag>(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting,
+                                                         m_parts, m_part_to_primitive);
     make_part_primitives();
     return m_part_to_primitive.size();
   }

@@ -251,8 +251,8 @@ The steps are:
 4. <b>Flood fill.</b> The connected components of the faces across edges that are not cut
    (`CGAL::Polygon_mesh_processing::connected_components()`); border edges are never crossed.
 5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
-   flood fill alone leaves one patch over most of an organic shape (measured: 1 to 55 patches on
-   the Princeton benchmark shapes, where the paper reports 200 to 500). A component larger than
+   flood fill alone leaves one patch over most of an organic shape, where the paper reports 200 to
+   500 patches. A component larger than
    `patch_split_size` (\f$a_{max}\f$) times the area of the mesh is split by an ordered flood
    fill: its uncut edges are crossed by increasing dihedral angle, joining the two sides unless
    the joined piece would have an area above \f$a_{max}\f$ or a squared radius of gyration (of

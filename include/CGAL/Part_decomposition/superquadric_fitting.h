@@ -168,7 +168,8 @@ region of interest with the trust-region scales \f$\eta\f$ in turn until its sur
 Flow zone, and accepted if the voxels within \f$2\Delta\f$ of it that are neither Freeze, claimed
 nor reserved for a finer stage number at least \f$V_{min}\f$.
 
-Choices where the paper is silent (measured on the development meshes, see the package manual):
+Choices where the paper is silent or that depart from it (their measured effect is in the user
+manual, \ref PD_Deviations):
 - \f$\Omega_{Body}\f$ is the whole unclaimed valid volume (interior voxels included), not only
   its Flow carrier voxels, so that EDT maxima are centres of thick cross-sections.
 - \f$\Delta\f$ of the sample band (\f$d_\mathcal{M} < 1.5\Delta\f$) and of
@@ -187,17 +188,16 @@ Choices where the paper is silent (measured on the development meshes, see the p
   surface seed the ball of radius \f$\rho/2\f$ around it (the rest of its component is seeded
   again at the centroid of what remains; `use_seed_exclusion`, the paper excludes the seed
   voxel only); components smaller than \f$V_{min}\f$ are not seeded; a stage also ends after
-  `maximum_rejections_in_a_row` (4) rejected seeds in a row (the paper's iteration budget; on
-  the development meshes it removed 22% of the solves and slightly improved the parts).
+  `maximum_rejections_in_a_row` (4) rejected seeds in a row (the paper ends a stage on its
+  iteration budget only).
 - Claimed voxels include reserved voxels of finer stages (Alg.\ A.2 line 22); the volume test
   does not count them.
 - FitSDF runs the projected Levenberg-Marquardt solver of the package (active-set freezing,
   Marquardt scaling divided by \f$\eta^2\f$ along the semi-axes, i.e.\ scipy's `x_scale`) with
   at most `maximum_solver_evaluations` (40) residual evaluations per solve, and stops when a
   step gains less than \f$10^{-8}\f$ of the cost (scipy's `ftol`); the first interior-weight
-  variance is the mean squared clipped residual at \f$\theta_0\f$. On the development meshes `ONE_SHOT` and
-  `MPS_REESTIMATED` scored within noise of each other (the MPS rule had a lower variation of
-  information, one-shot a higher mIoU) and one-shot fits in about half the time: it is the default.
+  variance is the mean squared clipped residual at \f$\theta_0\f$, set once (`ONE_SHOT`, the
+  default) or re-estimated after each solve as MPS does (`MPS_REESTIMATED`).
 - Without TSDF guidance, \f$d_\mathcal{M}\f$ is replaced by \f$-\tau\f$ inside the hull and
   \f$+\tau\f$ in the exterior.
 - Small residual regions: unclaimed non-Freeze components smaller than the surface \f$V_{min}\f$

@@ -56,7 +56,7 @@ struct Sheet_merging_thresholds
 
 // Whether each part is a thin sheet: its primitive is flat and claims no voxel deeper than the
 // maximum depth inside the shape (`tsdf_values`: negative inside).
-template <typename GeomTraits>
+template <typename ConcurrencyTag, typename GeomTraits>
 std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
                                    const Superquadric_fitting_result<GeomTraits>& fitting,
                                    const std::vector<std::size_t>& part_to_primitive,
@@ -66,7 +66,7 @@ std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
   const std::size_t n_voxels = tsdf_values.size();
   Voxel_grid<std::uint8_t> outside(tsdf_values.resolution(), 0);
   for(std::size_t v = 0; v < n_voxels; ++v) outside[v] = tsdf_values[v] > 0. ? 1 : 0;
-  const Voxel_grid<double> depth2 = squared_distance_transform<CGAL::Sequential_tag>(outside);
+  const Voxel_grid<double> depth2 = squared_distance_transform<ConcurrencyTag>(outside);
 
   const std::size_t K = part_to_primitive.size();
   std::vector<char> sheet(K, 0);
@@ -202,7 +202,8 @@ The sheet merge (see `merge_thin_sheet_parts()`) on the face graph `adj` of the 
 of `tm` (face indices of `fim`): `part` holds the part of each face index and `part_to_primitive`
 the primitive of each part; both are renumbered in place. Returns the new number of parts.
 */
-template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap, typename GeomTraits>
+template <typename ConcurrencyTag, typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap,
+          typename GeomTraits>
 std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& fim,
                                        const Face_adjacency& adj, const Voxel_grid<double>& tsdf_values,
                                        const Superquadric_fitting_result<GeomTraits>& fitting,
@@ -212,7 +213,7 @@ std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPoint
 {
   const std::size_t K = part_to_primitive.size();
   if(K < 2) return K;
-  const std::vector<char> sheet = thin_sheet_parts(tsdf_values, fitting, part_to_primitive, th);
+  const std::vector<char> sheet = thin_sheet_parts<ConcurrencyTag>(tsdf_values, fitting, part_to_primitive, th);
   if(std::find(sheet.begin(), sheet.end(), 1) == sheet.end()) return K;
 
   std::vector<double> angles;
