@@ -64,7 +64,7 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
 3. Two adjacent sheets are merged when less than half of the length of their common boundary
    runs over sharp edges; merging is transitive. A seam on a crease (the rim of a table top, a
    wing's edge against the fuselage) keeps them apart.
-4. The parts are renumbered `0` to `K'-1` in the order of their smallest former id; a merged part
+4. The parts are renumbered `0` to `K_new - 1` in the order of their smallest former id; a merged part
    keeps the primitive that claimed the most voxels (the one of the smallest former part on a tie).
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB): the dihedral
@@ -78,7 +78,7 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
 
 \param tm the triangle mesh
 \param face_part_map the part of each face, in `[0, K)` on input (a face of a larger id is left
-       unchanged), in `[0, K')` on output
+       unchanged), in `[0, K_new)` on output
 \param part_to_primitive the index in `fitting.primitives` of the primitive of each part (`K`
        values, as returned by `assign_parts()`); on output, the primitive of each new part
 \param fitting the fitted primitives and the voxels each claimed
@@ -111,7 +111,7 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
 \pre `CGAL::is_triangle_mesh(tm)`
 \pre `fitting` was computed on the grid of `tsdf` (`fit_superquadrics()` with `tsdf`).
 
-\returns the number `K'` of parts.
+\returns the number `K_new` of parts.
 
 \throws Invalid_input (`INVALID_PARAMETER`) if the normalizations of `fitting` and `tsdf` differ.
 */
