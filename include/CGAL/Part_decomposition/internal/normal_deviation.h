@@ -24,7 +24,8 @@ namespace Part_decomposition {
 namespace internal {
 
 // The indices of `points` sorted along a Morton (Z-order) curve of 10 bits per axis over their
-// bounding cube, ties by index.
+// bounding cube, ties by index. Not CGAL::spatial_sort(): it shuffles the points at random first,
+// and the query order must be the same on every run.
 template <typename Point>
 std::vector<std::size_t> morton_order(const std::vector<Point>& points)
 {
