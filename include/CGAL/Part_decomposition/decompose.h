@@ -61,11 +61,6 @@ struct Stage_timings
 
 namespace internal {
 
-inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // The box-like superquadric of the principal-axis bounding box of `points`: what a part gets
 // when no primitive could be fitted to it (a flat sheet has no volume to fit).
 template <typename GeomTraits>

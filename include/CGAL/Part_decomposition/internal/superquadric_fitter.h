@@ -104,7 +104,7 @@ private:
   {
     double& total;
     std::chrono::steady_clock::time_point start;
-    ~Timed() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+    ~Timed() { total += seconds_since(start); }
   };
   std::array<double, NUMBER_OF_STEPS> m_seconds{};
 };
@@ -149,7 +149,7 @@ public:
       merge_small_residual_regions();
       collect_claimed_voxels();
     });
-    m_result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_result.seconds = seconds_since(start);
     if(m_parameters.verbose) report_times();
     return std::move(m_result);
   }

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
@@ -155,6 +156,12 @@ void run_side_by_side(const F& f, const G& g)
     f();
     g();
   }
+}
+
+// Wall-clock seconds since `t0`, for the stage timings.
+inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // ---- 3D vectors of doubles (the inner loops work on plain arrays, not on kernel objects)
