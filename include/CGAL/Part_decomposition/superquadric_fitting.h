@@ -31,19 +31,6 @@ namespace Part_decomposition {
 
 namespace internal {
 
-// An integer named parameter converted to T, checked first to be at least `minimum` and to fit in T.
-template <typename T, typename V>
-T checked_integer(V value, T minimum, const char* name, const char* rule)
-{
-  static_assert(std::is_integral<V>::value, "this named parameter takes an integer");
-  bool ok = true;
-  if constexpr(std::is_signed<V>::value) ok = value >= V(0);
-  typedef unsigned long long U;
-  ok = ok && U(value) >= U(minimum) && U(value) <= U((std::numeric_limits<T>::max)());
-  check_parameter(ok, name, rule);
-  return T(value);
-}
-
 // The one reader of the named parameters of fit_superquadrics().
 template <typename NamedParameters>
 Fitting_parameters read_fitting_parameters(const NamedParameters& np)

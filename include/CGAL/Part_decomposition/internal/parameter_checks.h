@@ -13,7 +13,9 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -34,6 +36,19 @@ inline void check_positive(double x, const char* name)
 inline void check_non_negative(double x, const char* name)
 {
   check_parameter(x >= 0. && std::isfinite(x), name, "non-negative and finite");
+}
+
+// An integer named parameter converted to T, checked first to be at least `minimum` and to fit in T.
+template <typename T, typename V>
+T checked_integer(V value, T minimum, const char* name, const char* rule)
+{
+  static_assert(std::is_integral<V>::value, "this named parameter takes an integer");
+  bool ok = true;
+  if constexpr(std::is_signed<V>::value) ok = value >= V(0);
+  typedef unsigned long long U;
+  ok = ok && U(value) >= U(minimum) && U(value) <= U((std::numeric_limits<T>::max)());
+  check_parameter(ok, name, rule);
+  return T(value);
 }
 
 // The one rule of `voxel_resolutions`: powers of two from 1 to 256, each twice the previous.
