@@ -77,6 +77,9 @@ struct Options
   std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
   bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
   bool merge_sheets = PD::defaults::merge_thin_sheets;
+  bool use_pieces = PD::defaults::use_pieces;
+  double crease_angle = PD::defaults::crease_angle;
+  double min_part_area = PD::defaults::minimum_part_area;
   bool use_density = PD::defaults::use_density;
   int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
   bool exterior_band = PD::defaults::use_exterior_band_samples;
@@ -135,7 +138,10 @@ const char* const usage_text =
   "  --dihedral-percentile 90   --smoothing-iterations 1\n"
   "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
   "  --vote-temperature 1     voxels of the finest grid\n"
-  "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n";
+  "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
+  "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
+  "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
+  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n";
 
 double to_number(const std::string& option, const std::string& text)
 {
@@ -238,6 +244,9 @@ Options parse(int argc, char** argv)
     else if(a == "--max-primitives") o.max_primitives = to_count(a, value());
     else if(a == "--no-freeze") o.use_freeze = false;
     else if(a == "--no-sheet-merge") o.merge_sheets = false;
+    else if(a == "--no-pieces") o.use_pieces = false;
+    else if(a == "--crease-angle") o.crease_angle = to_number(a, value());
+    else if(a == "--min-part-area") o.min_part_area = to_number(a, value());
     else if(a == "--no-density") o.use_density = false;
     else if(a == "--fitting-resolution-cap") o.fitting_resolution_cap = int(to_count(a, value()));
     else if(a == "--no-exterior-band") o.exterior_band = false;
@@ -348,6 +357,8 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
                  PDP::patch_split_size(o.patch_split_size), PDP::vote_temperature(o.vote_temperature),
                  PDP::merge_thin_sheets(o.merge_sheets), PDP::use_density(o.use_density),
+                 PDP::use_pieces(o.use_pieces), PDP::crease_angle(o.crease_angle),
+                 PDP::minimum_part_area(o.min_part_area),
                  PDP::fitting_resolution_cap(o.fitting_resolution_cap),
                  PDP::use_exterior_band_samples(o.exterior_band), PDP::use_reachable_regions(o.reachable_regions),
                  PDP::use_seed_exclusion(o.seed_exclusion), PDP::maximum_solver_evaluations(o.solver_evaluations),

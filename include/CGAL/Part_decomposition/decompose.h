@@ -15,6 +15,7 @@
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/piece_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
@@ -47,6 +48,7 @@ Wall-clock seconds spent in each stage of `decompose()`.
 */
 struct Stage_timings
 {
+  double pieces = 0.;            ///< pieces and their regions between concave creases
   double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
   double tsdf = 0.;              ///< truncated signed distance field
   double fitting = 0.;           ///< fitting zones and superquadric fitting
@@ -196,6 +198,30 @@ public:
   /// @{
 
   /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
+  /*!
+  splits the mesh into its pieces and their regions between concave creases with
+  `Part_decomposition::segment_pieces()`. `assign_parts()` calls it if it was not called (unless
+  `use_pieces(false)` is given); a mesh without a closed piece needs no other stage.
+  */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_piece_adjacency = internal::face_adjacency_of<ConcurrencyTag>(m_tm, m_fim, with_mesh(np));
+    m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, internal::read_piece_parameters(np));
+    m_has_pieces = true;
+    return m_pieces;
+  }
+
+  /// whether the volumetric stages (prior, distance field, fit, over-segmentation) are needed
+  /// by `assign_parts()` with the named parameters `np`: with `use_pieces(false)`, or if a piece
+  /// is closed. \pre `segment_pieces()` was called, or `use_pieces(false)` is given.
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    return !internal::read_piece_parameters(np).use_pieces || !m_has_pieces || m_pieces.has_closed_piece();
+  }
+
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
@@ -285,19 +311,26 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   std::size_t assign_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
   {
-    CGAL_precondition(m_has_fitting && m_has_patches);
-    if(!m_has_fitting || !m_has_patches)
+    const internal::Piece_parameters pieces = internal::read_piece_parameters(np);
+    if(pieces.use_pieces && !m_has_pieces) segment_pieces<ConcurrencyTag>(np);
+    const bool volumetric = needs_volumetric_stages(np);
+    CGAL_precondition(!volumetric || (m_has_fitting && m_has_patches));
+    if(volumetric && (!m_has_fitting || !m_has_patches))
       throw std::logic_error("Part_decomposer::assign_parts() needs the primitives and the patches");
-    check_frame(m_fitting.normalization, "the normalization of the fitting");
     check_frame_parameters(np);
-    m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
-      m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, internal::read_assignment_parameters(np),
-      m_parts);
+    if(volumetric)
+    {
+      check_frame(m_fitting.normalization, "the normalization of the fitting");
+      m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
+        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, internal::read_assignment_parameters(np),
+        m_parts);
+      m_has_parts = true;
+      if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
+        merge_thin_sheets<ConcurrencyTag>(false);
+    }
+    if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
     m_has_parts = true;
-    if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
-      merge_thin_sheets<ConcurrencyTag>();
-    else
-      make_part_primitives();
+    make_part_primitives();
     for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
     return m_part_to_primitive.size();
   }
@@ -312,7 +345,7 @@ public:
   \pre `assign_parts()` was called.
   */
   template <typename ConcurrencyTag = CGAL::Sequential_tag>
-  std::size_t merge_thin_sheets()
+  std::size_t merge_thin_sheets(bool primitives = true)
   {
     CGAL_precondition(m_has_parts);
     if(!m_has_parts)
@@ -320,7 +353,7 @@ public:
     check_frame(m_tsdf.normalization, "the normalization of the distance field");
     internal::merge_thin_sheets_on_faces<ConcurrencyTag>(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting,
                                                          m_parts, m_part_to_primitive);
-    make_part_primitives();
+    if(primitives) make_part_primitives();
     return m_part_to_primitive.size();
   }
   /// @}
@@ -329,6 +362,7 @@ public:
   /// @{
 
   /// the normalization of the mesh into the cube of the grids.
+  const Piece_segmentation& pieces() const { return m_pieces; }
   const Normalization& normalization() const { return m_normalization; }
   /// the face index map that indexes `patches()` and `parts()`.
   const Face_index_map& face_index_map() const { return m_fim; }
@@ -381,6 +415,22 @@ private:
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
+  // The parts of the pieces and regions (`internal::compose_parts()`), from the volumetric parts
+  // in closed pieces if they were computed; a part keeps the primitive of the volumetric part
+  // covering most of it.
+  void compose_with_pieces(bool volumetric, double minimum_part_area)
+  {
+    std::vector<std::size_t> volume_part;
+    if(volumetric) volume_part.swap(m_parts);
+    const std::vector<std::size_t> source =
+      internal::compose_parts(m_piece_adjacency, m_pieces.piece, m_pieces.region, m_pieces.closed, volume_part,
+                              minimum_part_area * m_pieces.area, m_parts, no_primitive);
+    std::vector<std::size_t> primitive(source.size(), no_primitive);
+    for(std::size_t k = 0; k < source.size(); ++k)
+      if(source[k] != no_primitive) primitive[k] = m_part_to_primitive[source[k]];
+    m_part_to_primitive.swap(primitive);
+  }
+
   void make_part_primitives()
   {
     m_part_primitives.clear();
@@ -418,11 +468,14 @@ private:
   Fitting_zones m_zones;
   Superquadric_fitting_result<Geom_traits> m_fitting;
   internal::Face_adjacency m_adjacency; // of the over-segmentation, reused by the sheet merge
+  internal::Face_adjacency m_piece_adjacency; // of the pieces, reused by the part composition
+  Piece_segmentation m_pieces;
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
   std::vector<std::size_t> m_parts;
   std::vector<std::size_t> m_part_to_primitive;
   std::vector<Primitive> m_part_primitives;
+  bool m_has_pieces = false;
   bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false,
        m_has_parts = false;
 };
@@ -682,6 +735,12 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   // The fitting's own loops are short (one primitive at a time), so its sequential part is the
   // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
   // distance field next to each other before it.
+  {
+    const auto t = std::chrono::steady_clock::now();
+    if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
+    timings.pieces = internal::seconds_since(t);
+  }
+  if(decomposer.needs_volumetric_stages(np))
   internal::run_side_by_side<ConcurrencyTag>(
     [&] {
       internal::run_side_by_side<ConcurrencyTag>(

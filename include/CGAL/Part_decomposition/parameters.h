@@ -66,6 +66,10 @@ namespace Part_decomposition {
   X(patch_split_size_t, patch_split_size, patch_split_size)                          \
   X(vote_temperature_t, vote_temperature, vote_temperature)                          \
   X(merge_thin_sheets_t, merge_thin_sheets, merge_thin_sheets)                       \
+  /* pieces and creases */                                                           \
+  X(use_pieces_t, use_pieces, use_pieces)                                            \
+  X(crease_angle_t, crease_angle, crease_angle)                                      \
+  X(minimum_part_area_t, minimum_part_area, minimum_part_area)                       \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -203,6 +207,12 @@ constexpr double patch_split_size = 0.0005;
 constexpr double vote_temperature = 1.;
 /// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
 constexpr bool merge_thin_sheets = true;
+/// whether the parts follow the pieces of the mesh and their concave creases (`segment_pieces()`)
+constexpr bool use_pieces = true;
+/// the dihedral angle, in degrees, from which a concave edge separates two regions of a piece
+constexpr double crease_angle = 60.;
+/// the area below which a part is merged into a neighbour, as a fraction of the mesh area
+constexpr double minimum_part_area = 0.005;
 } // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
@@ -267,6 +277,9 @@ package's parameters are:
 | `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
 | `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
+| `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
+| `crease_angle()` | `double` | 60 | `segment_pieces()` |
+| `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 

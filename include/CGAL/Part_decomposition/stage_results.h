@@ -188,6 +188,37 @@ struct Superquadric_fitting_result
   /// @}
 };
 
+/*!
+\ingroup PkgPartDecompositionRef
+The output of `segment_pieces()`: the pieces of a mesh (its edge-connected components) and the
+regions of each piece between its concave creases. Vectors indexed by face are indexed by the
+face index map.
+*/
+struct Piece_segmentation
+{
+  /// the piece of each face, numbered `0` to `number_of_pieces - 1` by smallest face index.
+  std::vector<std::size_t> piece;
+  /// the region of each face, numbered `0` to `number_of_regions - 1` by smallest face index; a
+  /// region lies in one piece.
+  std::vector<std::size_t> region;
+  /// per piece: 1 if the piece is closed (no border edge), so that it bounds a volume.
+  std::vector<std::uint8_t> closed;
+  /// per piece: +1, or -1 for an open piece whose orientation was reversed to tell its concave
+  /// creases (see `segment_pieces()`).
+  std::vector<int> orientation;
+  std::size_t number_of_pieces = 0;  ///< the number of pieces
+  std::size_t number_of_regions = 0; ///< the number of regions
+  double area = 0.;                  ///< the area of the mesh
+
+  /// whether any piece is closed: the volumetric stages have something to decompose.
+  bool has_closed_piece() const
+  {
+    for(std::uint8_t c : closed)
+      if(c) return true;
+    return false;
+  }
+};
+
 } // namespace Part_decomposition
 } // namespace CGAL
 

@@ -41,6 +41,7 @@ struct Face_adjacency
   std::vector<double> angle;         // dihedral angle (degrees) across each slot, 0 on a border
   std::vector<double> area;          // per face
   std::vector<double> centroid;      // 3 per face, relative to a vertex of the mesh
+  std::vector<double> normal;        // 3 per face, unit (0 for a degenerate face)
   std::vector<std::uint8_t> degenerate; // per face: zero or non-finite normal
 };
 
@@ -179,9 +180,9 @@ Face_adjacency build_face_adjacency(
     const auto& p = get(vpm, target(halfedge(face_of[0], tm), tm));
     origin = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   }
-  std::vector<double> normal(3 * nf, 0.);
-  compute_face_geometry<ConcurrencyTag>(tm, fim, vpm, gt, face_of, origin, adj, normal);
-  compute_dihedral_angles<ConcurrencyTag>(normal, adj);
+  adj.normal.assign(3 * nf, 0.);
+  compute_face_geometry<ConcurrencyTag>(tm, fim, vpm, gt, face_of, origin, adj, adj.normal);
+  compute_dihedral_angles<ConcurrencyTag>(adj.normal, adj);
   return adj;
 }
 

@@ -1,0 +1,180 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_REGIONS_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_REGIONS_H
+
+// Pieces (edge-connected components of the face graph), whether each is closed, and the regions
+// of each piece between its concave creases, on the flat face graph of face_adjacency.h.
+//
+// Inputs: a Face_adjacency (neighbours, dihedral angles, normals, centroids, areas per face
+// index). Outputs: per face index a piece id and a region id, both numbered by first face.
+
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/patch_operations.h>
+
+#include <CGAL/Union_find.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Per face index: the id of its edge-connected component, numbered by first face.
+inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
+{
+  const std::size_t nf = adj.number_of_faces;
+  CGAL::Union_find<std::size_t> uf;
+  std::vector<CGAL::Union_find<std::size_t>::handle> handle;
+  handle.reserve(nf);
+  for(std::size_t i = 0; i < nf; ++i) handle.push_back(uf.make_set(i));
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j != Face_adjacency::no_face && j > i) uf.unify_sets(handle[i], handle[j]);
+    }
+  std::vector<std::size_t> piece(nf);
+  for(std::size_t i = 0; i < nf; ++i) piece[i] = *uf.find(handle[i]);
+  renumber_by_first_face(piece);
+  return piece;
+}
+
+// Per piece: 1 if no face of the piece has a border edge.
+inline std::vector<std::uint8_t> closed_pieces(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                               std::size_t number_of_pieces)
+{
+  std::vector<std::uint8_t> closed(number_of_pieces, 1);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+    for(int k = 0; k < 3; ++k)
+      if(adj.neighbor[3 * i + k] == Face_adjacency::no_face) closed[piece[i]] = 0;
+  return closed;
+}
+
+// +1 if the edge of slot (i, k) is convex for the orientation of the mesh, -1 if concave: the
+// neighbour's centroid lies below or above the plane of face i.
+inline int crease_sign(const Face_adjacency& adj, std::size_t i, int k)
+{
+  const std::size_t j = adj.neighbor[3 * i + k];
+  double s = 0.;
+  for(int a = 0; a < 3; ++a) s += (adj.centroid[3 * j + a] - adj.centroid[3 * i + a]) * adj.normal[3 * i + a];
+  return s > 0. ? -1 : 1;
+}
+
+// Per piece: -1 if the piece is taken inside out. A closed piece keeps the mesh's orientation
+// (the reader orients it outward); an open shell has no outside, so it is oriented to make most
+// of its creases (by area of the faces along them) convex: man-made pieces are convex except
+// where two parts meet.
+inline std::vector<int> piece_orientations(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                           const std::vector<std::uint8_t>& closed, double crease_angle)
+{
+  std::vector<double> vote(closed.size(), 0.);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j == Face_adjacency::no_face || adj.angle[3 * i + k] < crease_angle) continue;
+      if(adj.degenerate[i] || adj.degenerate[j]) continue;
+      vote[piece[i]] += crease_sign(adj, i, k) * (adj.area[i] < adj.area[j] ? adj.area[i] : adj.area[j]);
+    }
+  std::vector<int> orientation(closed.size(), 1);
+  for(std::size_t p = 0; p < closed.size(); ++p)
+    if(!closed[p] && vote[p] < 0.) orientation[p] = -1;
+  return orientation;
+}
+
+// Per face index: the region of its piece between concave creases of at least `crease_angle`
+// degrees (edges next to a degenerate face are cut too), numbered by first face; returns the
+// number of regions.
+inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                  const std::vector<int>& orientation, double crease_angle,
+                                  std::vector<std::size_t>& region)
+{
+  const std::size_t nf = adj.number_of_faces;
+  CGAL::Union_find<std::size_t> uf;
+  std::vector<CGAL::Union_find<std::size_t>::handle> handle;
+  handle.reserve(nf);
+  for(std::size_t i = 0; i < nf; ++i) handle.push_back(uf.make_set(i));
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j == Face_adjacency::no_face || j < i) continue;
+      const double angle = adj.angle[3 * i + k];
+      const bool concave = angle >= crease_angle &&
+                           (angle >= Face_adjacency::degenerate_angle ||
+                            crease_sign(adj, i, k) * orientation[piece[i]] < 0);
+      if(!concave) uf.unify_sets(handle[i], handle[j]);
+    }
+  region.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i) region[i] = *uf.find(handle[i]);
+  return renumber_by_first_face(region);
+}
+
+// The parts of a mesh from its regions (per face index, `region`, in pieces `piece` whose closed
+// flag is `closed`) and, where the volumetric stages ran, the part of each face they gave
+// (`volume_part`, empty if they did not run): a face of a closed piece goes to the part of its
+// (region, volume part), a face of an open piece to the part of its region. Parts of area below
+// `min_area` are then merged into a neighbour (`merge_small_patches()`), and all are numbered by
+// smallest face index. `part` receives the part of each face; returns, per part, the volume
+// part covering most of its area in closed pieces (smallest id on a tie), or `none`.
+inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                              const std::vector<std::size_t>& region,
+                                              const std::vector<std::uint8_t>& closed,
+                                              const std::vector<std::size_t>& volume_part, double min_area,
+                                              std::vector<std::size_t>& part, std::size_t none)
+{
+  const std::size_t nf = adj.number_of_faces;
+  const bool volumetric = !volume_part.empty();
+  std::size_t volume_parts = 0;
+  for(std::size_t v : volume_part) volume_parts = (std::max)(volume_parts, v + 1);
+  // (region, volume part) as one key; regions and volume parts are both below nf
+  std::vector<std::size_t> key(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+    key[i] = (volumetric && closed[piece[i]]) ? region[i] * (volume_parts + 1) + volume_part[i] + 1
+                                              : region[i] * (volume_parts + 1);
+  std::vector<std::size_t> sorted(key);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  part.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+    part[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
+  merge_small_patches(adj, part, sorted.size(), min_area);
+  const std::size_t count = renumber_by_first_face(part);
+
+  std::vector<std::size_t> source(count, none);
+  if(!volumetric) return source;
+  std::vector<std::vector<std::pair<std::size_t, double> > > share(count);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    if(!closed[piece[i]]) continue;
+    auto& s = share[part[i]];
+    auto it = std::find_if(s.begin(), s.end(), [&](const std::pair<std::size_t, double>& e) {
+      return e.first == volume_part[i];
+    });
+    if(it == s.end()) s.emplace_back(volume_part[i], adj.area[i]);
+    else it->second += adj.area[i];
+  }
+  for(std::size_t k = 0; k < count; ++k)
+  {
+    double best = -1.;
+    for(const auto& e : share[k])
+      if(e.second > best || (e.second == best && e.first < source[k])) { best = e.second; source[k] = e.first; }
+  }
+  return source;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_REGIONS_H

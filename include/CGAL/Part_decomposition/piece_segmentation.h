@@ -1,0 +1,146 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_PIECE_SEGMENTATION_H
+#define CGAL_PART_DECOMPOSITION_PIECE_SEGMENTATION_H
+
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/stage_results.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/piece_regions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// The package parameters of `segment_pieces()` and of the part composition that uses it.
+struct Piece_parameters
+{
+  bool use_pieces = defaults::use_pieces;
+  double crease_angle = defaults::crease_angle;
+  double minimum_part_area = defaults::minimum_part_area;
+};
+
+template <typename NamedParameters>
+Piece_parameters read_piece_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Part_decomposition::internal_np;
+  Piece_parameters p;
+  p.use_pieces = choose_parameter(get_parameter(np, inp::use_pieces), p.use_pieces);
+  p.crease_angle = choose_parameter(get_parameter(np, inp::crease_angle), p.crease_angle);
+  p.minimum_part_area = choose_parameter(get_parameter(np, inp::minimum_part_area), p.minimum_part_area);
+  check_parameter(p.crease_angle > 0. && p.crease_angle <= 180., "crease_angle", "in (0, 180]");
+  check_parameter(p.minimum_part_area >= 0. && p.minimum_part_area <= 1., "minimum_part_area", "in [0, 1]");
+  return p;
+}
+
+// `segment_pieces()` on the face graph `adj`.
+inline Piece_segmentation segment_pieces_of_graph(const Face_adjacency& adj, const Piece_parameters& p)
+{
+  Piece_segmentation s;
+  s.piece = label_pieces(adj);
+  for(std::size_t q : s.piece) s.number_of_pieces = (std::max)(s.number_of_pieces, q + 1);
+  s.closed = closed_pieces(adj, s.piece, s.number_of_pieces);
+  s.orientation = piece_orientations(adj, s.piece, s.closed, p.crease_angle);
+  s.number_of_regions = crease_regions(adj, s.piece, s.orientation, p.crease_angle, s.region);
+  for(double a : adj.area) s.area += a;
+  return s;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+splits `tm` into its pieces and each piece into the regions between its concave creases: the
+evidence that an assembly of separate pieces (a CAD model, an artist's mesh) carries about its
+parts, which the volume-based stages cannot see. This stage is not in the paper.
+
+1. <b>Pieces.</b> The edge-connected components of the faces (the reader has welded coincident
+   vertices and split the non-manifold edges, so pieces that only touch or pass through each
+   other are separate). A piece is <em>closed</em> if it has no border edge: only a closed piece
+   bounds a volume that superquadrics can be fitted to.
+2. <b>Orientation.</b> A closed piece keeps its orientation (the reader orients it outward). An
+   open shell has no outside; it is taken in the orientation that makes most of its creases
+   convex (the edges of dihedral angle at least `crease_angle`, each weighted by the area of the
+   smaller of its two faces): the surface of a man-made piece is convex except where two of its
+   parts meet.
+3. <b>Regions.</b> An interior edge is a <em>concave crease</em> if its dihedral angle (as in
+   `over_segment()`) is at least `crease_angle` and the neighbouring face bends towards the
+   normal of the face (its centroid lies above the face's plane), or if one of its faces has
+   zero area. The regions are the connected components of each piece across the other edges:
+   parts meet along concave creases (the minima rule of Hoffman and Richards).
+4. Pieces and regions are numbered by increasing smallest face index.
+
+The result does not depend on the number of threads.
+
+\par Complexity
+Linear in the number of faces, up to the inverse Ackermann factor of the union-find.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the face
+        normals and dihedral angles are computed in parallel
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+                          `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+                   `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{crease_angle}
+    \cgalParamDescription{the dihedral angle, in degrees, from which a concave edge separates two regions}
+    \cgalParamType{`double`, in `(0, 180]`}
+    \cgalParamDefault{`60`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `CGAL::is_triangle_mesh(tm)`
+
+\returns the pieces and regions, indexed by the face index map.
+
+\throws Invalid_input (`INVALID_PARAMETER`) if `crease_angle` is out of its range.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Piece_segmentation segment_pieces(const TriangleMesh& tm,
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::static_check_concurrency_tag<ConcurrencyTag>();
+  const internal::Piece_parameters p = internal::read_piece_parameters(np);
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  return internal::segment_pieces_of_graph(adj, p);
+}
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_PIECE_SEGMENTATION_H
