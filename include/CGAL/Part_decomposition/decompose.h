@@ -208,18 +208,28 @@ public:
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
   {
     m_piece_adjacency = internal::face_adjacency_of<ConcurrencyTag>(m_tm, m_fim, with_mesh(np));
-    m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, internal::read_piece_parameters(np));
+    const internal::Piece_parameters p = internal::read_piece_parameters(np);
+    m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, p);
+    m_volumetric_piece = internal::volumetric_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.closed,
+                                                     p.minimum_part_area * m_pieces.area,
+                                                     internal::convexity_tolerance);
     m_has_pieces = true;
     return m_pieces;
   }
 
-  /// whether the volumetric stages (prior, distance field, fit, over-segmentation) are needed
-  /// by `assign_parts()` with the named parameters `np`: with `use_pieces(false)`, or if a piece
-  /// is closed. \pre `segment_pieces()` was called, or `use_pieces(false)` is given.
+  /// whether `assign_parts()` with the named parameters `np` needs the volumetric stages (prior,
+  /// distance field, fit, over-segmentation): with `use_pieces(false)`, or if a piece can hold
+  /// several parts of which its surface does not show the boundaries: a closed piece (it bounds
+  /// a volume) that is not convex (an edge is concave by at least one degree) and of at least
+  /// twice `minimum_part_area`. Their parts are used in such pieces only.
+  /// \pre `segment_pieces()` was called, or `use_pieces(false)` is given.
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    return !internal::read_piece_parameters(np).use_pieces || !m_has_pieces || m_pieces.has_closed_piece();
+    if(!internal::read_piece_parameters(np).use_pieces || !m_has_pieces) return true;
+    for(std::uint8_t v : m_volumetric_piece)
+      if(v) return true;
+    return false;
   }
 
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
@@ -328,9 +338,9 @@ public:
       if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
         merge_thin_sheets<ConcurrencyTag>(false);
     }
-    if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
     m_has_parts = true;
-    make_part_primitives();
+    if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
+    else make_part_primitives();
     for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
     return m_part_to_primitive.size();
   }
@@ -415,20 +425,26 @@ private:
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
-  // The parts of the pieces and regions (`internal::compose_parts()`), from the volumetric parts
-  // in closed pieces if they were computed; a part keeps the primitive of the volumetric part
-  // covering most of it.
+  // The parts of the pieces and regions (`internal::compose_parts()`), with the volumetric parts
+  // in the pieces that need them if they were computed; a part keeps the primitive of the
+  // volumetric part covering most of it, or gets its bounding superquadric.
   void compose_with_pieces(bool volumetric, double minimum_part_area)
   {
     std::vector<std::size_t> volume_part;
-    if(volumetric) volume_part.swap(m_parts);
+    if(volumetric)
+    {
+      volume_part.swap(m_parts);
+      for(std::size_t i = 0; i < volume_part.size(); ++i)
+        if(!m_volumetric_piece[m_pieces.piece[i]]) volume_part[i] = no_primitive;
+    }
     const std::vector<std::size_t> source =
-      internal::compose_parts(m_piece_adjacency, m_pieces.piece, m_pieces.region, m_pieces.closed, volume_part,
+      internal::compose_parts(m_piece_adjacency, m_pieces.region, volume_part,
                               minimum_part_area * m_pieces.area, m_parts, no_primitive);
-    std::vector<std::size_t> primitive(source.size(), no_primitive);
+    const std::vector<std::size_t> volume_primitive(m_part_to_primitive);
+    m_part_to_primitive.assign(source.size(), no_primitive);
     for(std::size_t k = 0; k < source.size(); ++k)
-      if(source[k] != no_primitive) primitive[k] = m_part_to_primitive[source[k]];
-    m_part_to_primitive.swap(primitive);
+      if(source[k] != no_primitive) m_part_to_primitive[k] = volume_primitive[source[k]];
+    make_part_primitives();
   }
 
   void make_part_primitives()
@@ -470,6 +486,7 @@ private:
   internal::Face_adjacency m_adjacency; // of the over-segmentation, reused by the sheet merge
   internal::Face_adjacency m_piece_adjacency; // of the pieces, reused by the part composition
   Piece_segmentation m_pieces;
+  std::vector<std::uint8_t> m_volumetric_piece; // per piece: decomposed by the volumetric stages
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
   std::vector<std::size_t> m_parts;

@@ -120,29 +120,51 @@ inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<s
   return renumber_by_first_face(region);
 }
 
-// The parts of a mesh from its regions (per face index, `region`, in pieces `piece` whose closed
-// flag is `closed`) and, where the volumetric stages ran, the part of each face they gave
-// (`volume_part`, empty if they did not run): a face of a closed piece goes to the part of its
-// (region, volume part), a face of an open piece to the part of its region. Parts of area below
-// `min_area` are then merged into a neighbour (`merge_small_patches()`), and all are numbered by
-// smallest face index. `part` receives the part of each face; returns, per part, the volume
-// part covering most of its area in closed pieces (smallest id on a tie), or `none`.
-inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
-                                              const std::vector<std::size_t>& region,
-                                              const std::vector<std::uint8_t>& closed,
+// The dihedral angle, in degrees, below which a concave edge does not make a piece non-convex:
+// the rounding of coplanar or nearly coplanar triangulations.
+constexpr double convexity_tolerance = 1.;
+
+// Per piece: 1 if the volumetric stages can split it: it is closed (it bounds a volume), not
+// convex (an edge is concave by at least `convexity_tolerance` degrees) and of area at least
+// 2 `min_area` (a smaller piece cannot hold two parts of `min_area`).
+inline std::vector<std::uint8_t> volumetric_pieces(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                                   const std::vector<std::uint8_t>& closed, double min_area,
+                                                   double convexity_tolerance)
+{
+  std::vector<std::uint8_t> concave(closed.size(), 0);
+  std::vector<double> area(closed.size(), 0.);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  {
+    area[piece[i]] += adj.area[i];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j != Face_adjacency::no_face && adj.angle[3 * i + k] >= convexity_tolerance && crease_sign(adj, i, k) < 0)
+        concave[piece[i]] = 1;
+    }
+  }
+  std::vector<std::uint8_t> volumetric(closed.size(), 0);
+  for(std::size_t p = 0; p < closed.size(); ++p)
+    volumetric[p] = closed[p] && concave[p] && area[p] >= 2. * min_area;
+  return volumetric;
+}
+
+// The parts of a mesh from its regions (per face index) and, where the volumetric stages ran,
+// the volumetric part of each face (`volume_part`: `none` elsewhere; empty if they did not run):
+// a face goes to the part of its (region, volumetric part), or of its region alone. Parts of area
+// below `min_area` are then merged into a neighbour (`merge_small_patches()`), and all are
+// numbered by smallest face index. `part` receives the part of each face; returns, per part, the
+// volumetric part covering most of its area (smallest id on a tie), or `none`.
+inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const std::vector<std::size_t>& region,
                                               const std::vector<std::size_t>& volume_part, double min_area,
                                               std::vector<std::size_t>& part, std::size_t none)
 {
   const std::size_t nf = adj.number_of_faces;
   const bool volumetric = !volume_part.empty();
-  std::size_t volume_parts = 0;
-  for(std::size_t v : volume_part) volume_parts = (std::max)(volume_parts, v + 1);
-  // (region, volume part) as one key; regions and volume parts are both below nf
-  std::vector<std::size_t> key(nf);
+  std::vector<std::pair<std::size_t, std::size_t> > key(nf);
   for(std::size_t i = 0; i < nf; ++i)
-    key[i] = (volumetric && closed[piece[i]]) ? region[i] * (volume_parts + 1) + volume_part[i] + 1
-                                              : region[i] * (volume_parts + 1);
-  std::vector<std::size_t> sorted(key);
+    key[i] = std::make_pair(region[i], volumetric && volume_part[i] != none ? volume_part[i] + 1 : 0);
+  std::vector<std::pair<std::size_t, std::size_t> > sorted(key);
   std::sort(sorted.begin(), sorted.end());
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   part.resize(nf);
@@ -156,7 +178,7 @@ inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const s
   std::vector<std::vector<std::pair<std::size_t, double> > > share(count);
   for(std::size_t i = 0; i < nf; ++i)
   {
-    if(!closed[piece[i]]) continue;
+    if(volume_part[i] == none) continue;
     auto& s = share[part[i]];
     auto it = std::find_if(s.begin(), s.end(), [&](const std::pair<std::size_t, double>& e) {
       return e.first == volume_part[i];
