@@ -290,6 +290,9 @@ struct Variant
   double coverage = PD::defaults::coverage_target;
   double patch_split = PD::defaults::patch_split_size;
   bool sheet_merge = PD::defaults::merge_thin_sheets;
+  bool pieces = PD::defaults::use_pieces;
+  double crease_angle = PD::defaults::crease_angle;
+  double minimum_part_area = PD::defaults::minimum_part_area;
 };
 
 // The paper's settings where this implementation departs from it: r_fit = min(r, 32), no
@@ -348,6 +351,10 @@ std::vector<Variant> all_variants()
   add("no_patch_split")->patch_split = 1.;
   add("no_sheet_merge")->sheet_merge = false;
   make_paper_literal(*add("paper_literal"));
+  // the evidence of pieces and creases, and its two thresholds
+  add("no_pieces")->pieces = false;
+  for(double a : {45., 75.}) add("crease" + std::to_string(int(a)))->crease_angle = a;
+  for(double a : {0.002, 0.01}) add("min_part_area_" + std::to_string(int(a * 1000)))->minimum_part_area = a;
   return v;
 }
 
@@ -605,6 +612,31 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
           << " | " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " |\n";
     }
 
+  // Halves for tuning and checking: the shapes in name order, alternately in half A and half B.
+  {
+    std::vector<std::string> names;
+    for(const Row& r : rows) names.push_back(r.shape);
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    std::vector<Row> halves(rows);
+    for(Row& r : halves)
+      r.category = (std::lower_bound(names.begin(), names.end(), r.shape) - names.begin()) % 2 ? "B" : "A";
+    out << "\n## Halves (shapes in name order, alternately A and B)\n\n"
+        << "| Half | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | median parts | median s |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|\n";
+    for(const std::string h : {"A", "B"})
+      for(const std::string& m : methods)
+      {
+        const Aggregate a = aggregate(halves, m, h);
+        std::vector<double> parts;
+        for(const Row& r : halves)
+          if(r.ok && r.method == m && r.category == h) parts.push_back(double(r.parts));
+        out << "| " << h << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
+            << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3)
+            << " | " << num(a.parts, 1) << " | " << num(median(parts), 1) << " | " << num(a.t_median, 3) << " |\n";
+      }
+  }
+
   // Pair by pair: the ratio of each shape's times, then their median.
   std::map<std::string, const Row*> sdf, ours, ours1;
   for(const Row& r : rows)
@@ -772,6 +804,15 @@ void write_ablations(const Options& o, const std::string& dataset, const std::ve
       << "| no patch split size " << metrics("no_patch_split", true) << "\n"
       << "| no thin-sheet merge " << metrics("no_sheet_merge", true) << "\n"
       << "| the paper's literal version (all of the above) " << metrics("paper_literal", true) << "\n";
+
+  out << "\n## Pieces and creases (segment_pieces())\n\n"
+      << "| Setting | RI ↑ | VoI ↓ | SC ↑ | mIoU ↑ | shapes | mean s ↓ | median s |\n|---|---|---|---|---|---|---|---|\n"
+      << "| defaults (crease 60 degrees, minimum part area 0.005) " << metrics("full", true) << "\n"
+      << "| w/o pieces (volumetric parts only) " << metrics("no_pieces", true) << "\n"
+      << "| crease angle 45 degrees " << metrics("crease45", true) << "\n"
+      << "| crease angle 75 degrees " << metrics("crease75", true) << "\n"
+      << "| minimum part area 0.002 " << metrics("min_part_area_2", true) << "\n"
+      << "| minimum part area 0.01 " << metrics("min_part_area_10", true) << "\n";
   for(int r : {16, 32, 64})
     out << "| single scale " << r << ", r_fit = r / 2 (default) " << metrics("r" + std::to_string(r), true) << "\n"
         << "| single scale " << r << ", r_fit = min(r, 32) " << metrics("r" + std::to_string(r) + "_paper_fit_resolution", true) << "\n";
@@ -1135,7 +1176,10 @@ int main(int argc, char** argv)
                                                        PD::parameters::maximum_rejections_in_a_row(v.rejections),
                                                        PD::parameters::coverage_target(v.coverage),
                                                        PD::parameters::patch_split_size(v.patch_split),
-                                                       PD::parameters::merge_thin_sheets(v.sheet_merge)));
+                                                       PD::parameters::merge_thin_sheets(v.sheet_merge),
+                                                       PD::parameters::use_pieces(v.pieces),
+                                                       PD::parameters::crease_angle(v.crease_angle),
+                                                       PD::parameters::minimum_part_area(v.minimum_part_area)));
           }
           r.t_method = seconds_since(t0);
           r.t_prior = st.prior;

@@ -141,7 +141,7 @@ const char* const usage_text =
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
   "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
   "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
-  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.01)\n";
+  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n";
 
 double to_number(const std::string& option, const std::string& text)
 {

@@ -3,11 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/decompose.h>
+#include <CGAL/Part_decomposition/piece_segmentation.h>
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <boost/property_map/property_map.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include "shipped_shapes.h"
 #include "test_shapes.h"
@@ -225,15 +230,15 @@ TEST_CASE("the thin-sheet merge is a step of its own of Part_decomposer", "[deco
   Mesh m;
   test_shapes::read_shipped_shape("table", m);
   std::vector<std::size_t> merged(num_faces(m)), unmerged(num_faces(m));
-  const std::size_t K_merged = PD::decompose(m, CGAL::make_property_map(merged));
+  const std::size_t K_merged = PD::decompose(m, CGAL::make_property_map(merged), PDP::use_pieces(false));
 
   PD::Part_decomposer<Mesh> pd(m);
   pd.compute_prior();
   pd.compute_distance_field();
   pd.fit_primitives();
   pd.over_segment();
-  const std::size_t K_unmerged =
-      pd.assign_parts(CGAL::make_property_map(unmerged), PDP::merge_thin_sheets(false));
+  const std::size_t K_unmerged = pd.assign_parts(CGAL::make_property_map(unmerged),
+                                                  PDP::combine(PDP::merge_thin_sheets(false), PDP::use_pieces(false)));
   CHECK(pd.parts() == unmerged);
   CHECK(K_unmerged >= K_merged);
   // the free function on the parts before the merge, with its own face graph
@@ -286,7 +291,9 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
           PDP::maximum_rejections_in_a_row(D::maximum_rejections_in_a_row),
           PDP::dihedral_percentile(D::dihedral_percentile), PDP::smoothing_iterations(D::smoothing_iterations),
           PDP::minimum_patch_size(D::minimum_patch_size), PDP::patch_split_size(D::patch_split_size),
-          PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets)));
+          PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets),
+          PDP::use_pieces(D::use_pieces), PDP::crease_angle(D::crease_angle),
+          PDP::minimum_part_area(D::minimum_part_area)));
   CHECK(na == 3u); // two balls and a bar
   CHECK(nb == na);
   CHECK(b == a);
@@ -344,4 +351,235 @@ TEST_CASE("the whole decomposition recovers the true parts of the shipped shapes
     // the region of interest of a seed is shorter than a table leg: legs may come in pieces
     CHECK(K_parts <= 3 * true_parts);
   }
+}
+
+// ------------------------------------------------------------------------------------------
+// Pieces and creases
+
+namespace {
+
+// Adds the quad (a, b, c, d), split along a-c, oriented so that its normal points along `out`.
+void add_quad(test_shapes::Soup& s, const Point& a, const Point& b, const Point& c, const Point& d,
+              const test_shapes::Vector& out)
+{
+  if(CGAL::cross_product(b - a, c - a) * out > 0)
+  {
+    s.triangle(a, b, c);
+    s.triangle(a, c, d);
+  }
+  else
+  {
+    s.triangle(a, c, b);
+    s.triangle(a, d, c);
+  }
+}
+
+// Adds the unit squares of the axis-aligned rectangle [lo, hi] (flat along `axis`) whose lower
+// corner is not `skip`, oriented along `out`.
+void add_grid(test_shapes::Soup& s, int axis, const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+              const test_shapes::Vector& out, const std::array<int, 3>& skip = {{-9, -9, -9}})
+{
+  const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+  for(int i = lo[u]; i < hi[u]; ++i)
+    for(int j = lo[w]; j < hi[w]; ++j)
+    {
+      std::array<int, 3> c = lo;
+      c[u] = i;
+      c[w] = j;
+      if(c == skip) continue;
+      auto P = [&](int di, int dj) {
+        std::array<double, 3> q = {{double(c[0]), double(c[1]), double(c[2])}};
+        q[u] += di;
+        q[w] += dj;
+        return Point(q[0], q[1], q[2]);
+      };
+      add_quad(s, P(0, 0), P(1, 0), P(1, 1), P(0, 1), out);
+    }
+}
+
+// One closed piece: the box [0,3]^2 x [0,1] with the box [1,2]^2 x [1,2] standing on it, the two
+// meeting along a loop of concave 90-degree creases. Faces of the small box come last.
+Mesh make_box_on_box(std::size_t& first_small_face)
+{
+  typedef test_shapes::Vector V;
+  test_shapes::Soup s;
+  add_grid(s, 2, {{0, 0, 0}}, {{3, 3, 0}}, V(0, 0, -1));
+  add_grid(s, 2, {{0, 0, 1}}, {{3, 3, 1}}, V(0, 0, 1), {{1, 1, 1}});
+  add_grid(s, 0, {{0, 0, 0}}, {{0, 3, 1}}, V(-1, 0, 0));
+  add_grid(s, 0, {{3, 0, 0}}, {{3, 3, 1}}, V(1, 0, 0));
+  add_grid(s, 1, {{0, 0, 0}}, {{3, 0, 1}}, V(0, -1, 0));
+  add_grid(s, 1, {{0, 3, 0}}, {{3, 3, 1}}, V(0, 1, 0));
+  first_small_face = s.triangles.size();
+  add_grid(s, 2, {{1, 1, 2}}, {{2, 2, 2}}, V(0, 0, 1));
+  add_grid(s, 0, {{1, 1, 1}}, {{1, 2, 2}}, V(-1, 0, 0));
+  add_grid(s, 0, {{2, 1, 1}}, {{2, 2, 2}}, V(1, 0, 0));
+  add_grid(s, 1, {{1, 1, 1}}, {{2, 1, 2}}, V(0, -1, 0));
+  add_grid(s, 1, {{1, 2, 1}}, {{2, 2, 2}}, V(0, 1, 0));
+  return s.mesh();
+}
+
+// An open box (no lid) [0,1]^3, its faces pointing out of the box or into it.
+Mesh make_open_box(bool inward)
+{
+  typedef test_shapes::Vector V;
+  const double f = inward ? -1. : 1.;
+  test_shapes::Soup s;
+  add_grid(s, 2, {{0, 0, 0}}, {{1, 1, 0}}, V(0, 0, -f));
+  add_grid(s, 0, {{0, 0, 0}}, {{0, 1, 1}}, V(-f, 0, 0));
+  add_grid(s, 0, {{1, 0, 0}}, {{1, 1, 1}}, V(f, 0, 0));
+  add_grid(s, 1, {{0, 0, 0}}, {{1, 0, 1}}, V(0, -f, 0));
+  add_grid(s, 1, {{0, 1, 0}}, {{1, 1, 1}}, V(0, f, 0));
+  return s.mesh();
+}
+
+// An assembly of four separate pieces: three closed boxes in a row, apart from each other, and a
+// plate of two large triangles under them. Returns the piece of each face.
+Mesh make_assembly(std::vector<std::size_t>& truth)
+{
+  Mesh m;
+  for(int b = 0; b < 3; ++b)
+  {
+    const std::size_t before = test_shapes::append(
+        m, test_shapes::make_box(Point(3. * b, 0, 0.5), Point(3. * b + 2., 1., 0.8 + 0.1 * b), 4));
+    truth.resize(num_faces(m), std::size_t(b));
+    (void)before;
+  }
+  test_shapes::Soup plate;
+  add_quad(plate, Point(-1, -1, 0), Point(9, -1, 0), Point(9, 4, 0), Point(-1, 4, 0), test_shapes::Vector(0, 0, 1));
+  test_shapes::append(m, plate.mesh());
+  truth.resize(num_faces(m), 3);
+  return m;
+}
+
+std::size_t number_of_labels(const std::vector<std::size_t>& label)
+{
+  return std::set<std::size_t>(label.begin(), label.end()).size();
+}
+
+} // namespace
+
+TEST_CASE("pieces, their closedness and the regions between concave creases", "[pieces]")
+{
+  SECTION("two boxes standing on each other as one closed piece: two regions")
+  {
+    std::size_t first_small = 0;
+    const Mesh m = make_box_on_box(first_small);
+    const PD::Piece_segmentation s = PD::segment_pieces(m);
+    CHECK(s.number_of_pieces == 1);
+    CHECK(s.closed == std::vector<std::uint8_t>{1});
+    REQUIRE(s.number_of_regions == 2);
+    for(std::size_t i = 0; i < num_faces(m); ++i) CHECK(s.region[i] == (i < first_small ? 0u : 1u));
+    CHECK(s.area == Approx(9 + 8 + 12 + 1 + 4));
+    // a crease angle above 90 degrees sees no crease
+    CHECK(PD::segment_pieces(m, PDP::crease_angle(91.)).number_of_regions == 1);
+  }
+  SECTION("an open box is one region whichever way its faces point")
+  {
+    for(bool inward : {false, true})
+    {
+      CAPTURE(inward);
+      const Mesh m = make_open_box(inward);
+      const PD::Piece_segmentation s = PD::segment_pieces(m);
+      CHECK(s.number_of_pieces == 1);
+      CHECK(s.closed == std::vector<std::uint8_t>{0});
+      CHECK(s.orientation == std::vector<int>{inward ? -1 : 1});
+      CHECK(s.number_of_regions == 1);
+    }
+  }
+  SECTION("separate pieces")
+  {
+    std::vector<std::size_t> truth;
+    const Mesh m = make_assembly(truth);
+    const PD::Piece_segmentation s = PD::segment_pieces(m);
+    CHECK(s.number_of_pieces == 4);
+    CHECK(s.piece == truth);
+    CHECK(s.region == truth);
+    CHECK(s.closed == std::vector<std::uint8_t>{1, 1, 1, 0});
+  }
+  CHECK(error_of([] { PD::segment_pieces(make_open_box(false), PDP::crease_angle(0.)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+}
+
+TEST_CASE("an assembly of convex pieces is decomposed into its pieces, each with its primitive", "[pieces][decompose]")
+{
+  std::vector<std::size_t> truth;
+  const Mesh m = make_assembly(truth);
+  std::vector<std::size_t> part(num_faces(m));
+  std::vector<PD::Superquadric<K> > primitives;
+  PD::Stage_timings timings;
+  const std::size_t K_parts =
+      PD::decompose(m, CGAL::make_property_map(part),
+                    PDP::combine(PDP::primitive_output_iterator(std::back_inserter(primitives)),
+                                 PDP::stage_timings(&timings)));
+  CHECK(K_parts == 4);
+  CHECK(part == truth); // the two triangles of the plate in one part
+  // convex pieces need no volumetric stage
+  CHECK(timings.prior == 0.);
+  CHECK(timings.fitting == 0.);
+  REQUIRE(primitives.size() == 4);
+  for(std::size_t b = 0; b < 3; ++b)
+  {
+    CAPTURE(b);
+    // the box-like superquadric of the piece's principal-axis bounding box: its half extents
+    std::array<double, 3> sc = primitives[b].scales();
+    std::sort(sc.begin(), sc.end());
+    CHECK(sc[0] == Approx(0.15 + 0.05 * double(b)));
+    CHECK(sc[1] == Approx(0.5));
+    CHECK(sc[2] == Approx(1.));
+    CHECK(primitives[b].center().x() == Approx(3. * double(b) + 1.));
+  }
+  // the plate: a flat primitive of its extent
+  std::array<double, 3> plate = primitives[3].scales();
+  std::sort(plate.begin(), plate.end());
+  CHECK(plate[0] < 1e-3 * plate[2]);
+  CHECK(plate[1] == Approx(2.5));
+  CHECK(plate[2] == Approx(5.));
+  // without the evidence of pieces the volumetric stages run
+  std::vector<std::size_t> volumetric(num_faces(m));
+  PD::decompose(m, CGAL::make_property_map(volumetric), PDP::combine(PDP::use_pieces(false), PDP::stage_timings(&timings)));
+  CHECK(timings.prior > 0.);
+  CHECK(error_of([&] { PD::decompose(m, CGAL::make_property_map(part), PDP::minimum_part_area(2.)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+}
+
+TEST_CASE("a closed non-convex piece is split by the volumetric stages along its concave creases", "[pieces][decompose]")
+{
+  std::size_t first_small = 0;
+  const Mesh m = make_box_on_box(first_small);
+  std::vector<std::size_t> truth(num_faces(m), 0);
+  for(std::size_t i = first_small; i < truth.size(); ++i) truth[i] = 1;
+  std::vector<std::size_t> reference;
+  for(std::size_t threads : {1, 2, 3})
+  {
+    CAPTURE(threads);
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    std::vector<std::size_t> part(num_faces(m));
+    PD::Stage_timings timings;
+    const std::size_t K_parts = PD::decompose(m, CGAL::make_property_map(part), PDP::stage_timings(&timings));
+    CHECK(timings.fitting > 0.);
+    // no part crosses the crease loop, and the small box is mostly one part
+    CHECK(K_parts >= 2);
+    for(std::size_t i = 0; i < first_small; ++i)
+      for(std::size_t j = first_small; j < truth.size(); ++j)
+        if(part[i] == part[j]) FAIL("a part crosses the concave crease loop");
+    const PD::Segmentation_scores sc =
+        PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part));
+    CHECK(sc.mean_iou > 0.6);
+    if(reference.empty()) reference = part;
+    CHECK(part == reference);
+  }
+}
+
+TEST_CASE("a part below minimum_part_area joins a neighbour of its piece", "[pieces][decompose]")
+{
+  std::size_t first_small = 0;
+  const Mesh m = make_box_on_box(first_small);
+  // the small box has 5 of 34 area units: with a minimum of 0.2 it cannot stand alone
+  std::vector<std::size_t> part(num_faces(m));
+  const std::size_t K_parts = PD::decompose(m, CGAL::make_property_map(part), PDP::minimum_part_area(0.2));
+  std::vector<bool> has_big_box_face(K_parts, false);
+  for(std::size_t i = 0; i < first_small; ++i) has_big_box_face[part[i]] = true;
+  for(std::size_t k = 0; k < K_parts; ++k) CHECK(has_big_box_face[k]);
 }

@@ -106,9 +106,11 @@ Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<doub
 /*!
 \ingroup PkgPartDecompositionRef
 The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1):
-`compute_prior()`, `compute_distance_field()`, `fit_primitives()`, `over_segment()` and
-`assign_parts()` (which ends with the thin-sheet merge, `merge_thin_sheets()`), in this order,
-each keeping its result for inspection. `decompose()` runs them all in one call.
+`segment_pieces()`, `compute_prior()`, `compute_distance_field()`, `fit_primitives()`,
+`over_segment()` and `assign_parts()` (which ends with the thin-sheet merge, `merge_thin_sheets()`,
+and the composition with the pieces), in this order, each keeping its result for inspection.
+`decompose()` runs them all in one call. The volumetric stages (prior to over-segmentation) may be
+left out when `needs_volumetric_stages()` is `false`.
 `compute_fitting_zones()`, between the prior and the fit, is optional: it lets the zones of the
 fitter be computed next to the distance field.
 
@@ -197,17 +199,18 @@ public:
   /// \name Stages
   /// @{
 
-  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
   /*!
   splits the mesh into its pieces and their regions between concave creases with
-  `Part_decomposition::segment_pieces()`. `assign_parts()` calls it if it was not called (unless
-  `use_pieces(false)` is given); a mesh without a closed piece needs no other stage.
+  `Part_decomposition::segment_pieces()` (its named parameters, and `minimum_part_area`).
+  `assign_parts()` calls it if it was not called, unless `use_pieces(false)` is given; afterwards
+  `needs_volumetric_stages()` tells whether the other stages are needed.
   */
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
   {
     m_piece_adjacency = internal::face_adjacency_of<ConcurrencyTag>(m_tm, m_fim, with_mesh(np));
+    internal::glue_coincident_border_edges(m_tm, m_fim, m_vpm, m_piece_adjacency);
     const internal::Piece_parameters p = internal::read_piece_parameters(np);
     m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, p);
     m_volumetric_piece = internal::volumetric_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.closed,
@@ -232,6 +235,7 @@ public:
     return false;
   }
 
+  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
@@ -311,11 +315,14 @@ public:
   /*!
   assigns every patch to a primitive with `Part_decomposition::assign_parts()`, merges the thin
   sheets with `merge_thin_sheets()` unless the named parameter `merge_thin_sheets` is `false` (see
-  `decompose()`), writes the part id (0 to `K-1`) of every face to `face_part_map`, once, and
-  returns `K`. Part `k` is explained by `part_primitives()[k]`.
+  `decompose()`), composes these parts with the pieces and regions of `segment_pieces()` (calling
+  it if needed) unless `use_pieces` is `false`, writes the part id (0 to `K-1`) of every face to
+  `face_part_map`, once, and returns `K`. Part `k` is explained by `part_primitives()[k]`; its
+  fitted primitive, if any, is `part_to_primitive()[k]` (else `no_primitive`).
   \tparam FacePartMap a model of `WritablePropertyMap` with
   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
-  \pre `fit_primitives()` and `over_segment()` were called.
+  \pre `fit_primitives()` and `over_segment()` were called, unless `needs_volumetric_stages(np)`
+  is `false`.
   */
   template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -371,8 +378,9 @@ public:
   /// \name Results
   /// @{
 
-  /// the normalization of the mesh into the cube of the grids.
+  /// the pieces and their regions. \pre `segment_pieces()` was called.
   const Piece_segmentation& pieces() const { return m_pieces; }
+  /// the normalization of the mesh into the cube of the grids.
   const Normalization& normalization() const { return m_normalization; }
   /// the face index map that indexes `patches()` and `parts()`.
   const Face_index_map& face_index_map() const { return m_fim; }
@@ -504,7 +512,7 @@ writes the part id of every face, from 0 to `K-1`, to `face_part_map`. Each part
 one superquadric, optionally written to an output iterator. The same input and parameters give
 the same output, whatever the number of threads.
 
-The stages, each also available on its own: `compute_flow_freeze_prior()`, `compute_tsdf()`,
+The stages, each also available on its own: `segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`,
 `fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`;
 `Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
 and passed to the stage that reads it; the table below lists them all. The normalization is
@@ -694,6 +702,31 @@ are chained with `parameters::combine()`)
                           by several flat primitives, is one part. This step is not in the paper.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_pieces}
+    \cgalParamDescription{if `true`, the parts follow the pieces of the mesh and their concave
+                          creases (`segment_pieces()`): the volumetric stages decompose only the
+                          closed, non-convex pieces, whose parts are cut by the regions of
+                          `segment_pieces()`; every other piece is decomposed into its regions (see
+                          `Part_decomposer::needs_volumetric_stages()`). If `false`, the parts are
+                          those of the volumetric stages alone, as in the paper. This step is not
+                          in the paper.}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{crease_angle}
+    \cgalParamDescription{the dihedral angle, in degrees, from which a concave edge separates two
+                          regions of a piece (`segment_pieces()`)}
+    \cgalParamType{`double`, in `(0, 180]`}
+    \cgalParamDefault{`60`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_part_area}
+    \cgalParamDescription{with `use_pieces`, the area, as a fraction of the mesh area, below which a
+                          part is merged into the neighbour across its weakest shared edge (a
+                          separate piece without neighbour stays a part); a closed piece smaller
+                          than twice this area is not decomposed by the volumetric stages}
+    \cgalParamType{`double`, in `[0, 1]`}
+    \cgalParamDefault{`0.005`}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}

@@ -212,7 +212,7 @@ constexpr bool use_pieces = true;
 /// the dihedral angle, in degrees, from which a concave edge separates two regions of a piece
 constexpr double crease_angle = 60.;
 /// the area below which a part is merged into a neighbour, as a fraction of the mesh area
-constexpr double minimum_part_area = 0.01;
+constexpr double minimum_part_area = 0.005;
 } // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
@@ -279,7 +279,7 @@ package's parameters are:
 | `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
 | `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |
-| `minimum_part_area()` | `double` | 0.01 | `decompose()`, `Part_decomposer::assign_parts()` |
+| `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 

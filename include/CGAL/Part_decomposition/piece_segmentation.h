@@ -69,10 +69,12 @@ splits `tm` into its pieces and each piece into the regions between its concave 
 evidence that an assembly of separate pieces (a CAD model, an artist's mesh) carries about its
 parts, which the volume-based stages cannot see. This stage is not in the paper.
 
-1. <b>Pieces.</b> The edge-connected components of the faces (the reader has welded coincident
-   vertices and split the non-manifold edges, so pieces that only touch or pass through each
-   other are separate). A piece is <em>closed</em> if it has no border edge: only a closed piece
-   bounds a volume that superquadrics can be fitted to.
+1. <b>Pieces.</b> The edge-connected components of the faces, two faces being connected when
+   they share an edge or have edges with the same two end points (an edge that the reader split
+   because it is non-manifold, or because its faces have opposite orientations). Pieces that only
+   touch at a vertex or pass through each other are separate. A piece is <em>closed</em> if every
+   edge of its faces is shared in this sense: only a closed piece bounds a volume that
+   superquadrics can be fitted to.
 2. <b>Orientation.</b> A closed piece keeps its orientation (the reader orients it outward). An
    open shell has no outside; it is taken in the orientation that makes most of its creases
    convex (the edges of dihedral angle at least `crease_angle`, each weighted by the area of the
@@ -136,7 +138,10 @@ Piece_segmentation segment_pieces(const TriangleMesh& tm,
   const internal::Piece_parameters p = internal::read_piece_parameters(np);
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  internal::glue_coincident_border_edges(tm, fim, vpm, adj);
   return internal::segment_pieces_of_graph(adj, p);
 }
 

@@ -8,18 +8,23 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_REGIONS_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_REGIONS_H
 
-// Pieces (edge-connected components of the face graph), whether each is closed, and the regions
-// of each piece between its concave creases, on the flat face graph of face_adjacency.h.
+// Pieces (edge-connected components of the face graph, edges with the same end points glued),
+// whether each is closed, the regions of each piece between its concave creases, and the parts
+// composed from them, on the flat face graph of face_adjacency.h.
 //
 // Inputs: a Face_adjacency (neighbours, dihedral angles, normals, centroids, areas per face
-// index). Outputs: per face index a piece id and a region id, both numbered by first face.
+// index). Outputs: per face index a piece id, a region id and a part id, numbered by first face.
 
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
 
 #include <CGAL/Union_find.h>
+#include <CGAL/number_type_config.h>
+#include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -28,6 +33,59 @@
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
+
+// Gives the border slots of `adj` whose edges have the same two end points (edges the reader
+// split because they are non-manifold or join faces of opposite orientations) a neighbour: each
+// such slot is linked to the next slot of its edge in slot order, cyclically, so that the faces
+// of one edge are connected. The dihedral angle of a linked slot is taken from the two normals;
+// the slots of an edge of three faces or more are marked in `adj.junction`.
+template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+                                  Face_adjacency& adj)
+{
+  typedef std::array<double, 6> Key;
+  std::vector<std::pair<Key, std::size_t> > border; // (end points, slot)
+  const auto face_of = faces_by_index(tm, fim);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  {
+    auto h = halfedge(face_of[i], tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      if(adj.neighbor[3 * i + k] != Face_adjacency::no_face) continue;
+      const auto& p = get(vpm, source(h, tm));
+      const auto& q = get(vpm, target(h, tm));
+      std::array<double, 3> a = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+      std::array<double, 3> b = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+      if(b < a) std::swap(a, b);
+      border.emplace_back(Key{{a[0], a[1], a[2], b[0], b[1], b[2]}}, 3 * i + std::size_t(k));
+    }
+  }
+  std::sort(border.begin(), border.end());
+  adj.junction.assign(adj.neighbor.size(), 0);
+  for(std::size_t s = 0; s < border.size();)
+  {
+    std::size_t e = s + 1;
+    while(e < border.size() && border[e].first == border[s].first) ++e;
+    for(std::size_t t = s; e - s > 1 && t < e; ++t)
+    {
+      const std::size_t slot = border[t].second, i = slot / 3;
+      const std::size_t j = border[t + 1 < e ? t + 1 : s].second / 3;
+      adj.neighbor[slot] = j;
+      adj.junction[slot] = e - s > 2;
+      if(adj.degenerate[i] || adj.degenerate[j]) { adj.angle[slot] = Face_adjacency::degenerate_angle; continue; }
+      double d = 0.;
+      for(int a = 0; a < 3; ++a) d += adj.normal[3 * i + a] * adj.normal[3 * j + a];
+      adj.angle[slot] = std::acos((std::max)(-1., (std::min)(1., d))) * (180. / CGAL_PI);
+    }
+    s = e;
+  }
+}
+
+// Whether slot s of `adj` joins three faces or more (see glue_coincident_border_edges()).
+inline bool is_junction(const Face_adjacency& adj, std::size_t s)
+{
+  return !adj.junction.empty() && adj.junction[s];
+}
 
 // Per face index: the id of its edge-connected component, numbered by first face.
 inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
@@ -41,7 +99,7 @@ inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
-      if(j != Face_adjacency::no_face && j > i) uf.unify_sets(handle[i], handle[j]);
+      if(j != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[j]);
     }
   std::vector<std::size_t> piece(nf);
   for(std::size_t i = 0; i < nf; ++i) piece[i] = *uf.find(handle[i]);
@@ -56,7 +114,7 @@ inline std::vector<std::uint8_t> closed_pieces(const Face_adjacency& adj, const 
   std::vector<std::uint8_t> closed(number_of_pieces, 1);
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
     for(int k = 0; k < 3; ++k)
-      if(adj.neighbor[3 * i + k] == Face_adjacency::no_face) closed[piece[i]] = 0;
+      if(adj.neighbor[3 * i + k] == Face_adjacency::no_face || is_junction(adj, 3 * i + k)) closed[piece[i]] = 0;
   return closed;
 }
 
@@ -82,7 +140,7 @@ inline std::vector<int> piece_orientations(const Face_adjacency& adj, const std:
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
-      if(j == Face_adjacency::no_face || adj.angle[3 * i + k] < crease_angle) continue;
+      if(j == Face_adjacency::no_face || adj.angle[3 * i + k] < crease_angle || is_junction(adj, 3 * i + k)) continue;
       if(adj.degenerate[i] || adj.degenerate[j]) continue;
       vote[piece[i]] += crease_sign(adj, i, k) * (adj.area[i] < adj.area[j] ? adj.area[i] : adj.area[j]);
     }
@@ -108,11 +166,11 @@ inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<s
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
-      if(j == Face_adjacency::no_face || j < i) continue;
+      if(j == Face_adjacency::no_face) continue;
       const double angle = adj.angle[3 * i + k];
-      const bool concave = angle >= crease_angle &&
+      const bool concave = is_junction(adj, 3 * i + k) || (angle >= crease_angle &&
                            (angle >= Face_adjacency::degenerate_angle ||
-                            crease_sign(adj, i, k) * orientation[piece[i]] < 0);
+                            crease_sign(adj, i, k) * orientation[piece[i]] < 0));
       if(!concave) uf.unify_sets(handle[i], handle[j]);
     }
   region.resize(nf);
