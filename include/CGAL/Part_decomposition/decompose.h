@@ -63,21 +63,39 @@ struct Stage_timings
 
 namespace internal {
 
-// The box-like superquadric of the principal-axis bounding box of `points`: what a part gets
-// when no primitive could be fitted to it (a flat sheet has no volume to fit).
+// The box-like superquadric of the principal-axis bounding box of a surface given as triangles
+// (`points` holds three corners per triangle): what a part gets when no primitive was fitted to
+// it (a flat sheet has no volume to fit). The axes are those of the surface's second moments, so
+// that a plate of two large triangles gets the axes of its rectangle, not of its diagonal.
 template <typename GeomTraits>
 Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<double, 3> >& points)
 {
   typedef typename GeomTraits::Point_3 Point_3;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for(const std::array<double, 3>& p : points) mean += Eigen::Vector3d(p[0], p[1], p[2]);
-  mean /= double((std::max)(std::size_t(1), points.size()));
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for(const std::array<double, 3>& p : points)
+  CGAL_precondition(points.size() % 3 == 0);
+  auto vec = [](const std::array<double, 3>& p) { return Eigen::Vector3d(p[0], p[1], p[2]); };
+  // moments relative to a corner: far-off meshes stay accurate
+  const Eigen::Vector3d origin = points.empty() ? Eigen::Vector3d::Zero() : vec(points[0]);
+  double total = 0.;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for(std::size_t t = 0; t + 2 < points.size(); t += 3)
   {
-    const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]) - mean;
-    cov += d * d.transpose();
+    const Eigen::Vector3d a = vec(points[t]) - origin, b = vec(points[t + 1]) - origin, c = vec(points[t + 2]) - origin;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    const Eigen::Vector3d s = a + b + c;
+    total += area;
+    first += area / 3. * s;
+    // the integral of x x^T over the triangle
+    second += area / 12. * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
   }
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Identity();
+  if(total > 0.)
+  {
+    mean = first / total;
+    cov = second / total - mean * mean.transpose();
+  }
+  mean += origin;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   Eigen::Matrix3d axes = eig.eigenvectors();
   if(axes.determinant() < 0) axes.col(0) = -axes.col(0);
@@ -445,6 +463,8 @@ private:
       for(std::size_t i = 0; i < volume_part.size(); ++i)
         if(!m_volumetric_piece[m_pieces.piece[i]]) volume_part[i] = no_primitive;
     }
+    if(volumetric) internal::keep_volume_parts_in_their_regions(m_piece_adjacency, m_pieces.region, volume_part,
+                                                                no_primitive);
     const std::vector<std::size_t> source =
       internal::compose_parts(m_piece_adjacency, m_pieces.region, volume_part,
                               minimum_part_area * m_pieces.area, m_parts, no_primitive);

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -205,6 +206,37 @@ inline std::vector<std::uint8_t> volumetric_pieces(const Face_adjacency& adj, co
   for(std::size_t p = 0; p < closed.size(); ++p)
     volumetric[p] = closed[p] && concave[p] && area[p] >= 2. * min_area;
   return volumetric;
+}
+
+// A volumetric part does not cross a concave crease: the faces of part v in a region other than
+// v's home (the region holding most of v's area) go to the part whose home is that region and
+// which covers most of it, if there is one. `volume_part` holds `none` where the volumetric
+// stages did not decompose the face.
+inline void keep_volume_parts_in_their_regions(const Face_adjacency& adj, const std::vector<std::size_t>& region,
+                                               std::vector<std::size_t>& volume_part, std::size_t none)
+{
+  std::map<std::pair<std::size_t, std::size_t>, double> area; // (part, region) -> area
+  for(std::size_t i = 0; i < volume_part.size(); ++i)
+    if(volume_part[i] != none) area[std::make_pair(volume_part[i], region[i])] += adj.area[i];
+  std::map<std::size_t, std::pair<double, std::size_t> > home; // part -> (area, region)
+  for(const auto& e : area)
+  {
+    auto it = home.find(e.first.first);
+    if(it == home.end() || e.second > it->second.first) home[e.first.first] = std::make_pair(e.second, e.first.second);
+  }
+  std::map<std::size_t, std::pair<double, std::size_t> > owner; // region -> (area, part)
+  for(const auto& e : area)
+  {
+    if(home[e.first.first].second != e.first.second) continue;
+    auto it = owner.find(e.first.second);
+    if(it == owner.end() || e.second > it->second.first) owner[e.first.second] = std::make_pair(e.second, e.first.first);
+  }
+  for(std::size_t i = 0; i < volume_part.size(); ++i)
+  {
+    if(volume_part[i] == none || home[volume_part[i]].second == region[i]) continue;
+    const auto it = owner.find(region[i]);
+    if(it != owner.end()) volume_part[i] = it->second.second;
+  }
 }
 
 // The parts of a mesh from its regions (per face index) and, where the volumetric stages ran,
