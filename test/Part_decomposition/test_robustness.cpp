@@ -623,7 +623,7 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   // stages out of order: a logic error, not a crash
   CHECK_THROWS_AS(pd.fit_primitives(), std::logic_error);
   CHECK_THROWS_AS(pd.compute_fitting_zones(), std::logic_error);
-  CHECK_THROWS_AS(pd.assign_parts(CGAL::make_property_map(part)), std::logic_error);
+  CHECK_THROWS_AS(pd.assign_parts(CGAL::make_property_map(part), PDP::use_pieces(false)), std::logic_error);
   pd.compute_prior(PDP::voxel_resolutions(std::vector<int>{16, 32}));
   pd.compute_distance_field();
   CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER); // 32^3 prior, 64^3 field

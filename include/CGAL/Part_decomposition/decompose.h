@@ -119,6 +119,21 @@ Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<doub
   return Superquadric<GeomTraits>(scales, 0.1, 0.1, R, Point_3(center[0], center[1], center[2]));
 }
 
+// Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
+// parameter out of its range is an error whatever the mesh.
+template <typename NamedParameters>
+void check_stage_parameters(const NamedParameters& np)
+{
+  read_prior_parameters(np);
+  read_tsdf_parameters(np);
+  read_fitting_zone_parameters(np);
+  read_fitting_parameters(np);
+  read_over_segmentation_parameters(np);
+  read_assignment_parameters(np);
+  read_sheet_merging_parameters(np);
+  read_piece_parameters(np);
+}
+
 } // namespace internal
 
 /*!
@@ -800,6 +815,7 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
   Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
 
+  internal::check_stage_parameters(np);
   Stage_timings timings;
   timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
   // The fitting's own loops are short (one primitive at a time), so its sequential part is the

@@ -82,9 +82,11 @@ parts, which the volume-based stages cannot see. This stage is not in the paper.
    parts meet.
 3. <b>Regions.</b> An interior edge is a <em>concave crease</em> if its dihedral angle (as in
    `over_segment()`) is at least `crease_angle` and the neighbouring face bends towards the
-   normal of the face (its centroid lies above the face's plane), or if one of its faces has
-   zero area. The regions are the connected components of each piece across the other edges:
-   parts meet along concave creases (the minima rule of Hoffman and Richards).
+   normal of the face (its centroid lies above the face's plane); an edge of a face of zero area
+   (no normal) never is. An edge of three faces or more separates regions too: sheets meet there.
+   The regions are the connected components of each piece across the other edges, faces with the
+   same three corners being always in one region: parts meet along concave creases (the minima
+   rule of Hoffman and Richards).
 4. Pieces and regions are numbered by increasing smallest face index.
 
 The result does not depend on the number of threads.

@@ -44,6 +44,7 @@ struct Face_adjacency
   std::vector<double> normal;        // 3 per face, unit (0 for a degenerate face)
   std::vector<std::uint8_t> degenerate; // per face: zero or non-finite normal
   std::vector<std::uint8_t> junction;   // per slot: glued across a non-manifold edge (empty: none)
+  std::vector<std::size_t> twin;        // per face: a face with the same corners, or no_face (empty: none)
 };
 
 // The index of halfedge h in its face, counted from halfedge(face(h), tm).

@@ -35,42 +35,49 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// Gives the border slots of `adj` whose edges have the same two end points (edges the reader
-// split because they are non-manifold or join faces of opposite orientations) a neighbour: each
-// such slot is linked to the next slot of its edge in slot order, cyclically, so that the faces
-// of one edge are connected. The dihedral angle of a linked slot is taken from the two normals;
-// the slots of an edge of three faces or more are marked in `adj.junction`.
+// Gives the border slots of `adj` whose edges have the same two end points as other edges (edges
+// the reader split because they are non-manifold or join faces of opposite orientations) a
+// neighbour: each such slot is linked to the face of the next slot of its edge in slot order,
+// cyclically, so that the faces of one edge are connected. The dihedral angle of a linked slot is
+// taken from the two normals; the slots of an edge of three faces or more are marked in
+// `adj.junction`. Faces with the same three corners are twins (`adj.twin`: the first of them).
 template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
                                   Face_adjacency& adj)
 {
-  typedef std::array<double, 6> Key;
-  std::vector<std::pair<Key, std::size_t> > border; // (end points, slot)
+  typedef std::array<double, 3> P;
+  std::vector<std::pair<std::array<P, 2>, std::size_t> > edges; // (end points, slot)
+  std::vector<std::pair<std::array<P, 3>, std::size_t> > corners; // (corners, face)
   const auto face_of = faces_by_index(tm, fim);
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
   {
     auto h = halfedge(face_of[i], tm);
+    std::array<P, 3> c;
     for(int k = 0; k < 3; ++k, h = next(h, tm))
     {
-      if(adj.neighbor[3 * i + k] != Face_adjacency::no_face) continue;
       const auto& p = get(vpm, source(h, tm));
-      const auto& q = get(vpm, target(h, tm));
-      std::array<double, 3> a = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-      std::array<double, 3> b = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-      if(b < a) std::swap(a, b);
-      border.emplace_back(Key{{a[0], a[1], a[2], b[0], b[1], b[2]}}, 3 * i + std::size_t(k));
+      c[k] = P{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
     }
+    for(int k = 0; k < 3; ++k)
+    {
+      std::array<P, 2> e = {{c[k], c[(k + 1) % 3]}};
+      if(e[1] < e[0]) std::swap(e[0], e[1]);
+      edges.emplace_back(e, 3 * i + std::size_t(k));
+    }
+    std::sort(c.begin(), c.end());
+    corners.emplace_back(c, i);
   }
-  std::sort(border.begin(), border.end());
+  std::sort(edges.begin(), edges.end());
   adj.junction.assign(adj.neighbor.size(), 0);
-  for(std::size_t s = 0; s < border.size();)
+  for(std::size_t s = 0; s < edges.size();)
   {
     std::size_t e = s + 1;
-    while(e < border.size() && border[e].first == border[s].first) ++e;
+    while(e < edges.size() && edges[e].first == edges[s].first) ++e;
     for(std::size_t t = s; e - s > 1 && t < e; ++t)
     {
-      const std::size_t slot = border[t].second, i = slot / 3;
-      const std::size_t j = border[t + 1 < e ? t + 1 : s].second / 3;
+      const std::size_t slot = edges[t].second, i = slot / 3;
+      if(adj.neighbor[slot] != Face_adjacency::no_face) continue;
+      const std::size_t j = edges[t + 1 < e ? t + 1 : s].second / 3;
       adj.neighbor[slot] = j;
       adj.junction[slot] = e - s > 2;
       if(adj.degenerate[i] || adj.degenerate[j]) { adj.angle[slot] = Face_adjacency::degenerate_angle; continue; }
@@ -80,12 +87,26 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
     }
     s = e;
   }
+  std::sort(corners.begin(), corners.end());
+  adj.twin.assign(adj.number_of_faces, Face_adjacency::no_face);
+  for(std::size_t t = 1; t < corners.size(); ++t)
+    if(corners[t].first == corners[t - 1].first)
+      adj.twin[corners[t].second] = adj.twin[corners[t - 1].second] != Face_adjacency::no_face
+                                      ? adj.twin[corners[t - 1].second] : corners[t - 1].second;
 }
 
 // Whether slot s of `adj` joins three faces or more (see glue_coincident_border_edges()).
 inline bool is_junction(const Face_adjacency& adj, std::size_t s)
 {
   return !adj.junction.empty() && adj.junction[s];
+}
+
+// Puts the faces with the same three corners in one set: they are one surface.
+inline void unify_twins(const Face_adjacency& adj, CGAL::Union_find<std::size_t>& uf,
+                        std::vector<CGAL::Union_find<std::size_t>::handle>& handle)
+{
+  for(std::size_t i = 0; i < adj.twin.size(); ++i)
+    if(adj.twin[i] != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[adj.twin[i]]);
 }
 
 // Per face index: the id of its edge-connected component, numbered by first face.
@@ -102,6 +123,7 @@ inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[j]);
     }
+  unify_twins(adj, uf, handle);
   std::vector<std::size_t> piece(nf);
   for(std::size_t i = 0; i < nf; ++i) piece[i] = *uf.find(handle[i]);
   renumber_by_first_face(piece);
@@ -152,8 +174,8 @@ inline std::vector<int> piece_orientations(const Face_adjacency& adj, const std:
 }
 
 // Per face index: the region of its piece between concave creases of at least `crease_angle`
-// degrees (edges next to a degenerate face are cut too), numbered by first face; returns the
-// number of regions.
+// degrees and junctions of three faces or more (an edge of a face of zero area is never a
+// crease), numbered by first face; returns the number of regions.
 inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
                                   const std::vector<int>& orientation, double crease_angle,
                                   std::vector<std::size_t>& region)
@@ -169,11 +191,13 @@ inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<s
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j == Face_adjacency::no_face) continue;
       const double angle = adj.angle[3 * i + k];
-      const bool concave = is_junction(adj, 3 * i + k) || (angle >= crease_angle &&
-                           (angle >= Face_adjacency::degenerate_angle ||
-                            crease_sign(adj, i, k) * orientation[piece[i]] < 0));
+      // a face of zero area has no normal: no evidence of a crease
+      const bool concave = is_junction(adj, 3 * i + k) ||
+                           (!adj.degenerate[i] && !adj.degenerate[j] && angle >= crease_angle &&
+                            crease_sign(adj, i, k) * orientation[piece[i]] < 0);
       if(!concave) uf.unify_sets(handle[i], handle[j]);
     }
+  unify_twins(adj, uf, handle);
   region.resize(nf);
   for(std::size_t i = 0; i < nf; ++i) region[i] = *uf.find(handle[i]);
   return renumber_by_first_face(region);
