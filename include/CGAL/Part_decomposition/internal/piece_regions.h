@@ -101,16 +101,11 @@ inline bool is_junction(const Face_adjacency& adj, std::size_t s)
   return !adj.junction.empty() && adj.junction[s];
 }
 
-// Puts the faces with the same three corners in one set: they are one surface.
-inline void unify_twins(const Face_adjacency& adj, CGAL::Union_find<std::size_t>& uf,
-                        std::vector<CGAL::Union_find<std::size_t>::handle>& handle)
-{
-  for(std::size_t i = 0; i < adj.twin.size(); ++i)
-    if(adj.twin[i] != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[adj.twin[i]]);
-}
-
-// Per face index: the id of its edge-connected component, numbered by first face.
-inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
+// Per face index: its connected component across the slots (i, k) with a neighbour for which
+// `join(i, k)` holds, faces with the same three corners always together (they are one
+// surface), numbered by first face; returns the number of components.
+template <typename Join>
+std::size_t face_components(const Face_adjacency& adj, const Join& join, std::vector<std::size_t>& label)
 {
   const std::size_t nf = adj.number_of_faces;
   CGAL::Union_find<std::size_t> uf;
@@ -121,12 +116,20 @@ inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
-      if(j != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[j]);
+      if(j != Face_adjacency::no_face && join(i, k)) uf.unify_sets(handle[i], handle[j]);
     }
-  unify_twins(adj, uf, handle);
-  std::vector<std::size_t> piece(nf);
-  for(std::size_t i = 0; i < nf; ++i) piece[i] = *uf.find(handle[i]);
-  renumber_by_first_face(piece);
+  for(std::size_t i = 0; i < adj.twin.size(); ++i)
+    if(adj.twin[i] != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[adj.twin[i]]);
+  label.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i) label[i] = *uf.find(handle[i]);
+  return renumber_by_first_face(label);
+}
+
+// Per face index: the id of its edge-connected component, numbered by first face.
+inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
+{
+  std::vector<std::size_t> piece;
+  face_components(adj, [](std::size_t, int) { return true; }, piece);
   return piece;
 }
 
@@ -180,27 +183,14 @@ inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<s
                                   const std::vector<int>& orientation, double crease_angle,
                                   std::vector<std::size_t>& region)
 {
-  const std::size_t nf = adj.number_of_faces;
-  CGAL::Union_find<std::size_t> uf;
-  std::vector<CGAL::Union_find<std::size_t>::handle> handle;
-  handle.reserve(nf);
-  for(std::size_t i = 0; i < nf; ++i) handle.push_back(uf.make_set(i));
-  for(std::size_t i = 0; i < nf; ++i)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t j = adj.neighbor[3 * i + k];
-      if(j == Face_adjacency::no_face) continue;
-      const double angle = adj.angle[3 * i + k];
-      // a face of zero area has no normal: no evidence of a crease
-      const bool concave = is_junction(adj, 3 * i + k) ||
-                           (!adj.degenerate[i] && !adj.degenerate[j] && angle >= crease_angle &&
-                            crease_sign(adj, i, k) * orientation[piece[i]] < 0);
-      if(!concave) uf.unify_sets(handle[i], handle[j]);
-    }
-  unify_twins(adj, uf, handle);
-  region.resize(nf);
-  for(std::size_t i = 0; i < nf; ++i) region[i] = *uf.find(handle[i]);
-  return renumber_by_first_face(region);
+  return face_components(adj, [&](std::size_t i, int k) {
+    const std::size_t j = adj.neighbor[3 * i + k];
+    // a face of zero area has no normal: no evidence of a crease
+    const bool concave = is_junction(adj, 3 * i + k) ||
+                         (!adj.degenerate[i] && !adj.degenerate[j] && adj.angle[3 * i + k] >= crease_angle &&
+                          crease_sign(adj, i, k) * orientation[piece[i]] < 0);
+    return !concave;
+  }, region);
 }
 
 // The dihedral angle, in degrees, below which a concave edge does not make a piece non-convex:
