@@ -242,8 +242,7 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_piece_adjacency = internal::face_adjacency_of<ConcurrencyTag>(m_tm, m_fim, with_mesh(np));
-    internal::glue_coincident_border_edges(m_tm, m_fim, m_vpm, m_piece_adjacency);
+    m_piece_adjacency = internal::piece_adjacency<ConcurrencyTag>(m_tm, m_fim, m_vpm, with_mesh(np));
     const internal::Piece_parameters p = internal::read_piece_parameters(np);
     m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, p);
     m_volumetric_piece = internal::volumetric_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.closed,
@@ -376,7 +375,7 @@ public:
         m_parts);
       m_has_parts = true;
       if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
-        merge_thin_sheets<ConcurrencyTag>(false);
+        merge_thin_sheet_parts<ConcurrencyTag>();
     }
     m_has_parts = true;
     if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
@@ -395,15 +394,13 @@ public:
   \pre `assign_parts()` was called.
   */
   template <typename ConcurrencyTag = CGAL::Sequential_tag>
-  std::size_t merge_thin_sheets(bool primitives = true)
+  std::size_t merge_thin_sheets()
   {
     CGAL_precondition(m_has_parts);
     if(!m_has_parts)
       throw std::logic_error("Part_decomposer::merge_thin_sheets() needs the parts");
-    check_frame(m_tsdf.normalization, "the normalization of the distance field");
-    internal::merge_thin_sheets_on_faces<ConcurrencyTag>(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting,
-                                                         m_parts, m_part_to_primitive);
-    if(primitives) make_part_primitives();
+    merge_thin_sheet_parts<ConcurrencyTag>();
+    make_part_primitives();
     return m_part_to_primitive.size();
   }
   /// @}
@@ -466,6 +463,16 @@ private:
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
+  // The thin-sheet merge on the parts, without their primitives (the composition with the pieces
+  // makes them after it).
+  template <typename ConcurrencyTag>
+  void merge_thin_sheet_parts()
+  {
+    check_frame(m_tsdf.normalization, "the normalization of the distance field");
+    internal::merge_thin_sheets_on_faces<ConcurrencyTag>(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting,
+                                                         m_parts, m_part_to_primitive);
+  }
+
   // The parts of the pieces and regions (`internal::compose_parts()`), with the volumetric parts
   // in the pieces that need them if they were computed; a part keeps the primitive of the
   // volumetric part covering most of it, or gets its bounding superquadric.
@@ -477,9 +484,8 @@ private:
       volume_part.swap(m_parts);
       for(std::size_t i = 0; i < volume_part.size(); ++i)
         if(!m_volumetric_piece[m_pieces.piece[i]]) volume_part[i] = no_primitive;
+      internal::keep_volume_parts_in_their_regions(m_piece_adjacency, m_pieces.region, volume_part, no_primitive);
     }
-    if(volumetric) internal::keep_volume_parts_in_their_regions(m_piece_adjacency, m_pieces.region, volume_part,
-                                                                no_primitive);
     const std::vector<std::size_t> source =
       internal::compose_parts(m_piece_adjacency, m_pieces.region, volume_part,
                               minimum_part_area * m_pieces.area, m_parts, no_primitive);
@@ -818,14 +824,14 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   internal::check_stage_parameters(np);
   Stage_timings timings;
   timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
-  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
-  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
-  // distance field next to each other before it.
   {
     const auto t = std::chrono::steady_clock::now();
     if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
     timings.pieces = internal::seconds_since(t);
   }
+  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
+  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
+  // distance field next to each other before it.
   if(decomposer.needs_volumetric_stages(np))
   internal::run_side_by_side<ConcurrencyTag>(
     [&] {

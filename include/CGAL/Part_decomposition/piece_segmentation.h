@@ -52,8 +52,7 @@ Piece_parameters read_piece_parameters(const NamedParameters& np)
 inline Piece_segmentation segment_pieces_of_graph(const Face_adjacency& adj, const Piece_parameters& p)
 {
   Piece_segmentation s;
-  s.piece = label_pieces(adj);
-  for(std::size_t q : s.piece) s.number_of_pieces = (std::max)(s.number_of_pieces, q + 1);
+  s.number_of_pieces = label_pieces(adj, s.piece);
   s.closed = closed_pieces(adj, s.piece, s.number_of_pieces);
   s.orientation = piece_orientations(adj, s.piece, s.closed, p.crease_angle);
   s.number_of_regions = crease_regions(adj, s.piece, s.orientation, p.crease_angle, s.region);
@@ -73,8 +72,8 @@ parts, which the volume-based stages cannot see. This stage is not in the paper.
    they share an edge or have edges with the same two end points (an edge that the reader split
    because it is non-manifold, or because its faces have opposite orientations). Pieces that only
    touch at a vertex or pass through each other are separate. A piece is <em>closed</em> if every
-   edge of its faces is shared in this sense: only a closed piece bounds a volume that
-   superquadrics can be fitted to.
+   edge of its faces has exactly two faces (no border edge, no edge of three faces or more): only
+   a closed piece bounds a volume that superquadrics can be fitted to.
 2. <b>Orientation.</b> A closed piece keeps its orientation (the reader orients it outward). An
    open shell has no outside; it is taken in the orientation that makes most of its creases
    convex (the edges of dihedral angle at least `crease_angle`, each weighted by the area of the
@@ -142,9 +141,7 @@ Piece_segmentation segment_pieces(const TriangleMesh& tm,
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
-  internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
-  internal::glue_coincident_border_edges(tm, fim, vpm, adj);
-  return internal::segment_pieces_of_graph(adj, p);
+  return internal::segment_pieces_of_graph(internal::piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np), p);
 }
 
 } // namespace Part_decomposition

@@ -118,11 +118,22 @@ void compute_face_geometry(const TriangleMesh& tm, const FaceIndexMap& fim, cons
   }, 1024);
 }
 
+// The dihedral angle, in degrees, between faces i and j of `adj` from their normals;
+// `degenerate_angle` if one has no normal.
+inline double dihedral_angle(const Face_adjacency& adj, std::size_t i, std::size_t j)
+{
+  if(adj.degenerate[i] || adj.degenerate[j]) return Face_adjacency::degenerate_angle;
+  const double* a = &adj.normal[3 * i];
+  const double* c = &adj.normal[3 * j];
+  const double d = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
+  return std::acos((std::max)(-1., (std::min)(1., d))) * (180. / CGAL_PI);
+}
+
 // The dihedral angle of every interior slot. It depends only on the two normals: it is computed
 // on the slot of the smaller face index, then copied to the other side (two faces sharing two
 // edges get the same value).
 template <typename ConcurrencyTag>
-void compute_dihedral_angles(const std::vector<double>& normal, Face_adjacency& adj)
+void compute_dihedral_angles(Face_adjacency& adj)
 {
   const std::size_t nf = adj.number_of_faces;
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
@@ -131,15 +142,7 @@ void compute_dihedral_angles(const std::vector<double>& normal, Face_adjacency& 
       {
         const std::size_t j = adj.neighbor[3 * i + k];
         if(j == Face_adjacency::no_face || j < i) continue;
-        if(adj.degenerate[i] || adj.degenerate[j])
-        {
-          adj.angle[3 * i + k] = Face_adjacency::degenerate_angle;
-          continue;
-        }
-        const double* a = &normal[3 * i];
-        const double* c = &normal[3 * j];
-        const double d = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
-        adj.angle[3 * i + k] = std::acos((std::max)(-1., (std::min)(1., d))) * (180. / CGAL_PI);
+        adj.angle[3 * i + k] = dihedral_angle(adj, i, j);
       }
   }, 1024);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
@@ -184,7 +187,7 @@ Face_adjacency build_face_adjacency(
   }
   adj.normal.assign(3 * nf, 0.);
   compute_face_geometry<ConcurrencyTag>(tm, fim, vpm, gt, face_of, origin, adj, adj.normal);
-  compute_dihedral_angles<ConcurrencyTag>(adj.normal, adj);
+  compute_dihedral_angles<ConcurrencyTag>(adj);
   return adj;
 }
 

@@ -19,12 +19,10 @@
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
 
 #include <CGAL/Union_find.h>
-#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -80,10 +78,7 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
       const std::size_t j = edges[t + 1 < e ? t + 1 : s].second / 3;
       adj.neighbor[slot] = j;
       adj.junction[slot] = e - s > 2;
-      if(adj.degenerate[i] || adj.degenerate[j]) { adj.angle[slot] = Face_adjacency::degenerate_angle; continue; }
-      double d = 0.;
-      for(int a = 0; a < 3; ++a) d += adj.normal[3 * i + a] * adj.normal[3 * j + a];
-      adj.angle[slot] = std::acos((std::max)(-1., (std::min)(1., d))) * (180. / CGAL_PI);
+      adj.angle[slot] = dihedral_angle(adj, i, j);
     }
     s = e;
   }
@@ -93,6 +88,18 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
     if(corners[t].first == corners[t - 1].first)
       adj.twin[corners[t].second] = adj.twin[corners[t - 1].second] != Face_adjacency::no_face
                                       ? adj.twin[corners[t - 1].second] : corners[t - 1].second;
+}
+
+// The face graph of the pieces: the graph of `face_adjacency_of()` with coincident border edges
+// glued (`glue_coincident_border_edges()`).
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename NamedParameters>
+Face_adjacency piece_adjacency(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+                               const NamedParameters& np)
+{
+  Face_adjacency adj = face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  glue_coincident_border_edges(tm, fim, vpm, adj);
+  return adj;
 }
 
 // Whether slot s of `adj` joins three faces or more (see glue_coincident_border_edges()).
@@ -125,15 +132,14 @@ std::size_t face_components(const Face_adjacency& adj, const Join& join, std::ve
   return renumber_by_first_face(label);
 }
 
-// Per face index: the id of its edge-connected component, numbered by first face.
-inline std::vector<std::size_t> label_pieces(const Face_adjacency& adj)
+// Per face index: the id of its edge-connected component, numbered by first face; returns the
+// number of components.
+inline std::size_t label_pieces(const Face_adjacency& adj, std::vector<std::size_t>& piece)
 {
-  std::vector<std::size_t> piece;
-  face_components(adj, [](std::size_t, int) { return true; }, piece);
-  return piece;
+  return face_components(adj, [](std::size_t, int) { return true; }, piece);
 }
 
-// Per piece: 1 if no face of the piece has a border edge.
+// Per piece: 1 if every edge of its faces has exactly two faces (no border, no junction).
 inline std::vector<std::uint8_t> closed_pieces(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
                                                std::size_t number_of_pieces)
 {
