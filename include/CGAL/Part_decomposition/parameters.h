@@ -70,6 +70,10 @@ namespace Part_decomposition {
   X(use_pieces_t, use_pieces, use_pieces)                                            \
   X(crease_angle_t, crease_angle, crease_angle)                                      \
   X(minimum_part_area_t, minimum_part_area, minimum_part_area)                       \
+  /* the part hierarchy and residual patches */                                      \
+  X(number_of_parts_t, number_of_parts, number_of_parts)                             \
+  X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
+  X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -213,6 +217,10 @@ constexpr bool use_pieces = true;
 constexpr double crease_angle = 60.;
 /// the area below which a part is merged into a neighbour, as a fraction of the mesh area
 constexpr double minimum_part_area = 0.005;
+/// whether Freeze-dominant patches that no primitive explains are kept as residual parts
+constexpr bool keep_residual_patches = false;
+/// the distance, in voxels of the finest grid, from which a patch is not explained by its primitive
+constexpr double residual_tolerance = 2.;
 } // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
@@ -280,6 +288,9 @@ package's parameters are:
 | `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |
 | `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
+| `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()`, `Part_decomposer::parts_at_level()` |
+| `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
+| `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 
