@@ -75,6 +75,7 @@ struct Options
   std::vector<std::string> shapes;
   std::vector<std::string> variants; // ablation variants; empty with --ablations = all
   bool ablations = false;
+  bool levels = false; // --levels: mIoU of every level of the hierarchy (with ours_k)
   int threads = 0; // 0: all hardware threads
   std::size_t samples = 10000;
   unsigned seed = 0;
@@ -98,9 +99,16 @@ bool contains(const std::vector<std::string>& v, const std::string& x)
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
+// In run order: "ours" before "ours1", whose labels it checks. "_k": told the shape's part count.
+const std::vector<std::string>& all_methods()
+{
+  static const std::vector<std::string> m = {"sdf", "sdf_k", "ours", "ours_k", "ours1"};
+  return m;
+}
+
 void usage()
 {
-  std::cerr << "usage: benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,ours,ours1] [--shapes a,b]\n"
+  std::cerr << "usage: benchmark_segmentation DATASET_DIR [--out DIR] [--methods sdf,sdf_k,ours,ours_k,ours1] [--levels] [--shapes a,b]\n"
                "                              [--threads N] [--ablations] [--variants v1,v2]\n"
                "                              [--samples N] [--seed S]\n"
                "       benchmark_segmentation DATASET_DIR --scale SHAPE [--scale-faces 100000,300000,1000000]\n"
@@ -108,7 +116,9 @@ void usage()
                "DATASET_DIR holds manifest.tsv (columns shape, category, ...), NAME.off|obj|ply|stl and\n"
                "NAME_k.seg (one label per face, file order). --variants implies --ablations.\n"
                "Methods: sdf (CGAL's SDF segmentation), ours (Hi-TOPS with --threads threads), ours1 (Hi-TOPS\n"
-               "on one thread, reading included, labels compared with ours).\n";
+               "on one thread, reading included, labels compared with ours); sdf_k and ours_k are told the\n"
+               "shape's part count k (the lower median of its human segmentations' counts). --levels adds\n"
+               "ours_k and scores every level of its hierarchy (levels.md, levels.tsv).\n";
 }
 
 bool parse(int argc, char** argv, Options& o)
@@ -140,13 +150,15 @@ bool parse(int argc, char** argv, Options& o)
     else if(a == "--samples") { if(!value(v)) return false; o.samples = std::strtoull(v.c_str(), nullptr, 10); }
     else if(a == "--seed") { if(!value(v)) return false; o.seed = unsigned(std::strtoul(v.c_str(), nullptr, 10)); }
     else if(a == "--ablations") o.ablations = true;
+    else if(a == "--levels") o.levels = true;
     else if(a == "-h" || a == "--help") return false;
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return false; }
     else if(o.dataset.empty()) o.dataset = a;
     else return false;
   }
   for(const std::string& m : o.methods)
-    if(m != "sdf" && m != "ours" && m != "ours1") { std::cerr << "unknown method " << m << "\n"; return false; }
+    if(!contains(all_methods(), m)) { std::cerr << "unknown method " << m << "\n"; return false; }
+  if(o.levels && !contains(o.methods, "ours_k")) o.methods.push_back("ours_k");
   return !o.dataset.empty() && o.samples > 0;
 }
 
@@ -293,6 +305,8 @@ struct Variant
   bool pieces = PD::defaults::use_pieces;
   double crease_angle = PD::defaults::crease_angle;
   double minimum_part_area = PD::defaults::minimum_part_area;
+  bool residual = PD::defaults::keep_residual_patches;
+  double residual_tolerance = PD::defaults::residual_tolerance;
 };
 
 // The paper's settings where this implementation departs from it: r_fit = min(r, 32), no
@@ -355,6 +369,13 @@ std::vector<Variant> all_variants()
   add("no_pieces")->pieces = false;
   for(double a : {45., 75.}) add("crease" + std::to_string(int(a)))->crease_angle = a;
   for(double a : {0.002, 0.01}) add("min_part_area_" + std::to_string(int(a * 1000)))->minimum_part_area = a;
+  // the residual patches, off by default, at three tolerances
+  for(double t : {1., 2., 4.})
+  {
+    Variant* r = add("residual_" + std::to_string(int(t)));
+    r->residual = true;
+    r->residual_tolerance = t;
+  }
   return v;
 }
 
@@ -372,6 +393,9 @@ struct Row
   double t_sdf = NaN, t_sdf_segmentation = NaN, t_method = NaN;
   double peak_mb = NaN, rss_before_mb = NaN;
   std::string same_labels; // ours1: "yes" or "no" against ours on the same shape
+  std::size_t k = 0;       // the oracle count: lower median of the human part counts
+  std::size_t leaves = 0;  // ours_k: the leaves of the hierarchy
+  double t_hierarchy = NaN;
   double end_to_end() const { return t_read + t_method; }
 };
 
@@ -394,7 +418,7 @@ void write_tsv_header(std::ostream& out)
 {
   out << "dataset\tshape\tcategory\tfaces\tmethod\tstatus\tmIoU\tRI\tVoI\tSC\tparts\tgt_parts\tn_gt"
          "\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign\tt_sdf_values\tt_sdf_segmentation"
-         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\n";
+         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\tk\tleaves\tt_hierarchy\n";
 }
 
 void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
@@ -406,7 +430,8 @@ void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
       << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_sdf) << '\t'
       << num(r.t_sdf_segmentation) << '\t' << num(r.t_method) << '\t' << num(r.end_to_end()) << '\t'
       << num(r.peak_mb, 1) << '\t' << num(r.rss_before_mb, 1) << '\t' << r.same_labels << '\t'
-      << clean(r.error) << '\t' << clean(r.note) << '\n';
+      << clean(r.error) << '\t' << clean(r.note) << '\t' << r.k << '\t' << r.leaves << '\t' << num(r.t_hierarchy)
+      << '\n';
   out.flush();
 }
 
@@ -509,6 +534,8 @@ std::string method_label(const std::string& m)
   if(m == "sdf") return "CGAL SDF (defaults)";
   if(m == "ours") return "Hi-TOPS (ours)";
   if(m == "ours1") return "Hi-TOPS (ours), 1 thread";
+  if(m == "sdf_k") return "CGAL SDF, k clusters (told the count)";
+  if(m == "ours_k") return "Hi-TOPS (ours), k parts (told the count)";
   return m;
 }
 
@@ -582,7 +609,7 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
       << "the process's VmHWM during the method.\n\n";
 
   std::vector<std::string> methods;
-  for(const std::string m : {"sdf", "ours", "ours1"})
+  for(const std::string& m : all_methods())
     for(const Row& r : rows)
       if(r.method == m) { methods.push_back(m); break; }
 
@@ -743,11 +770,67 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
   bool any = false;
   for(const Row& r : rows)
   {
-    if(r.method != "sdf" && r.method != "ours" && r.method != "ours1") continue;
+    if(!contains(all_methods(), r.method)) continue;
     if(!r.ok) { out << "- " << r.shape << " / " << r.method << ": error: " << clean(r.error) << "\n"; any = true; }
     if(!r.note.empty()) { out << "- " << r.shape << " / " << r.method << ": " << clean(r.note) << "\n"; any = true; }
   }
   if(!any) out << "None: no error, no guard fired.\n";
+}
+
+// One level of one shape's hierarchy (--levels).
+struct Level_row
+{
+  std::string shape;
+  std::size_t oracle = 0, k = 0, leaves = 0;
+  double miou = NaN, ri = NaN;
+};
+constexpr std::size_t max_level = 64;
+
+// mIoU and RI against the number of parts, absolute and relative to the oracle count.
+void write_levels(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
+                  const std::vector<Level_row>& levels, int threads)
+{
+  std::ofstream tsv(fs::path(o.out) / "levels.tsv");
+  tsv << "shape\toracle_k\tk\tleaves\tmIoU\tRI\n";
+  for(const Level_row& l : levels)
+    tsv << l.shape << '\t' << l.oracle << '\t' << l.k << '\t' << l.leaves << '\t' << num(l.miou) << '\t' << num(l.ri) << '\n';
+  std::ofstream out(fs::path(o.out) / "levels.md");
+  out << "# Levels of the part hierarchy on " << dataset << "\n\nCommand: `" << o.command_line << "`\n\n"
+      << machine_description(threads) << "\n"
+      << "Each shape's hierarchy (from the `ours_k` run) cut at every k from 1 to its number of leaves (at most "
+      << max_level << "), scored as in summary.md. The oracle k is the lower median of the shape's human part "
+      << "counts.\n\n";
+  std::size_t shapes = 0, too_coarse = 0;
+  std::vector<double> leaves;
+  for(const Row& r : rows)
+    if(r.method == "ours_k" && r.ok)
+    {
+      ++shapes;
+      leaves.push_back(double(r.leaves));
+      if(r.leaves < r.k) ++too_coarse;
+    }
+  out << "Leaves (finest level): median " << num(median(leaves), 0) << "; fewer leaves than the oracle k on "
+      << too_coarse << "/" << shapes << " shapes.\n\n## Relative to the oracle count\n\n"
+      << "| k / oracle k | shapes | mIoU ↑ | RI ↑ |\n|---|---|---|---|\n";
+  for(double f : {0.25, 0.5, 0.75, 1., 1.25, 1.5, 2., 3.})
+  {
+    std::vector<double> m, ri;
+    for(const Level_row& l : levels)
+    {
+      const std::size_t want = (std::max)(std::size_t(1), std::size_t(std::lround(f * double(l.oracle))));
+      if(l.k == (std::min)(want, l.leaves)) { m.push_back(l.miou); ri.push_back(l.ri); }
+    }
+    out << "| " << num(f, 2) << " | " << m.size() << " | " << num(mean(m), 3) << " | " << num(mean(ri), 3) << " |\n";
+  }
+  out << "\n## Absolute\n\nShapes whose finest level has fewer than k parts are left out of row k.\n\n"
+      << "| k | shapes | mIoU ↑ | RI ↑ |\n|---|---|---|---|\n";
+  for(std::size_t k = 1; k <= max_level; ++k)
+  {
+    std::vector<double> m, ri;
+    for(const Level_row& l : levels)
+      if(l.k == k) { m.push_back(l.miou); ri.push_back(l.ri); }
+    if(!m.empty()) out << "| " << k << " | " << m.size() << " | " << num(mean(m), 3) << " | " << num(mean(ri), 3) << " |\n";
+  }
 }
 
 void write_ablations(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
@@ -812,7 +895,10 @@ void write_ablations(const Options& o, const std::string& dataset, const std::ve
       << "| crease angle 45 degrees " << metrics("crease45", true) << "\n"
       << "| crease angle 75 degrees " << metrics("crease75", true) << "\n"
       << "| minimum part area 0.002 " << metrics("min_part_area_2", true) << "\n"
-      << "| minimum part area 0.01 " << metrics("min_part_area_10", true) << "\n";
+      << "| minimum part area 0.01 " << metrics("min_part_area_10", true) << "\n"
+      << "| residual patches kept, tolerance 1 voxel " << metrics("residual_1", true) << "\n"
+      << "| residual patches kept, tolerance 2 voxels " << metrics("residual_2", true) << "\n"
+      << "| residual patches kept, tolerance 4 voxels " << metrics("residual_4", true) << "\n";
   for(int r : {16, 32, 64})
     out << "| single scale " << r << ", r_fit = r / 2 (default) " << metrics("r" + std::to_string(r), true) << "\n"
         << "| single scale " << r << ", r_fit = min(r, 32) " << metrics("r" + std::to_string(r) + "_paper_fit_resolution", true) << "\n";
@@ -1015,6 +1101,7 @@ int main(int argc, char** argv)
   if(!peak_ok) std::cerr << "warning: cannot reset the peak memory (/proc/self/clear_refs): peak_mb is the process peak\n";
 
   std::vector<Row> rows;
+  std::vector<Level_row> level_rows;
   std::vector<std::string> categories;
   for(std::size_t si = 0; si < shapes.size(); ++si)
   {
@@ -1050,6 +1137,7 @@ int main(int argc, char** argv)
       samples = PD::sample_faces_by_area(
         mesh, CGAL::parameters::number_of_points_on_faces(o.samples).random_seed(o.seed));
       double gt_parts = 0.;
+      std::vector<std::size_t> gt_counts;
       for(const fs::path& p : e.ground_truths)
       {
         std::vector<long> file_labels;
@@ -1065,9 +1153,12 @@ int main(int argc, char** argv)
         for(std::size_t f : samples) g.push_back(file_labels[info.face_to_input[f]]);
         std::vector<long> sorted(file_labels);
         std::sort(sorted.begin(), sorted.end());
-        gt_parts += double(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+        gt_counts.push_back(std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin()));
+        gt_parts += double(gt_counts.back());
         gt_samples.push_back(std::move(g));
       }
+      std::sort(gt_counts.begin(), gt_counts.end());
+      if(!gt_counts.empty()) base.k = gt_counts[(gt_counts.size() - 1) / 2];
       if(gt_samples.empty()) shape_note += (shape_note.empty() ? "" : "; ") + std::string("no usable ground truth");
       else base.gt_parts = gt_parts / double(gt_samples.size());
       base.n_gt = gt_samples.size();
@@ -1097,7 +1188,7 @@ int main(int argc, char** argv)
     };
 
     std::vector<std::pair<std::string, const Variant*> > runs;
-    for(const std::string m : {"sdf", "ours", "ours1"}) // ours before ours1: its labels are the reference
+    for(const std::string& m : all_methods())
       if(contains(o.methods, m)) runs.emplace_back(m, nullptr);
     if(contains(o.methods, "ours") || o.ablations)
       for(const Variant& v : variants)
@@ -1141,9 +1232,31 @@ int main(int argc, char** argv)
           r.t_assign = st.assignment;
           if(has_ours_labels) r.same_labels = labels == ours_labels ? "yes" : "no";
         }
-        else if(run.first == "sdf")
+        else if(run.first == "ours_k")
         {
-          pd_benchmark::Sdf_peer_result p = pd_benchmark::segment_with_sdf(mesh);
+          if(r.k == 0) throw std::runtime_error("no ground truth: no part count");
+          PD::Stage_timings st;
+          PD::Part_hierarchy<K> h;
+          r.parts = run_ours(mesh, labels,
+                             PD::parameters::combine(PD::parameters::stage_timings(&st),
+                                                     PD::parameters::number_of_parts(r.k),
+                                                     PD::parameters::part_hierarchy(&h)));
+          r.t_method = seconds_since(t0);
+          r.t_hierarchy = st.hierarchy;
+          r.leaves = h.number_of_leaves();
+          if(o.levels)
+            for(std::size_t k = 1; k <= (std::min)(h.number_of_leaves(), max_level); ++k)
+            {
+              Row l = base;
+              score(h.labels(k), samples, gt_samples, l);
+              level_rows.push_back(Level_row{e.name, base.k, k, h.number_of_leaves(), l.miou, l.ri});
+            }
+        }
+        else if(run.first == "sdf" || run.first == "sdf_k")
+        {
+          if(run.first == "sdf_k" && r.k == 0) throw std::runtime_error("no ground truth: no part count");
+          pd_benchmark::Sdf_peer_result p = run.first == "sdf" ? pd_benchmark::segment_with_sdf(mesh)
+                                                               : pd_benchmark::segment_with_sdf(mesh, r.k);
           r.t_method = seconds_since(t0);
           r.t_sdf = p.sdf_seconds;
           r.t_sdf_segmentation = p.segmentation_seconds;
@@ -1179,7 +1292,9 @@ int main(int argc, char** argv)
                                                        PD::parameters::merge_thin_sheets(v.sheet_merge),
                                                        PD::parameters::use_pieces(v.pieces),
                                                        PD::parameters::crease_angle(v.crease_angle),
-                                                       PD::parameters::minimum_part_area(v.minimum_part_area)));
+                                                       PD::parameters::minimum_part_area(v.minimum_part_area),
+                                                       PD::parameters::keep_residual_patches(v.residual),
+                                                       PD::parameters::residual_tolerance(v.residual_tolerance)));
           }
           r.t_method = seconds_since(t0);
           r.t_prior = st.prior;
@@ -1211,6 +1326,7 @@ int main(int argc, char** argv)
   }
 
   write_summary(o, dataset, rows, categories, threads);
+  if(o.levels) write_levels(o, dataset, rows, level_rows, threads);
   if(o.ablations) write_ablations(o, dataset, rows, variants, threads);
   std::cout << "wrote " << (fs::path(o.out) / "results.tsv").string() << ", "
             << (fs::path(o.out) / "summary.md").string()

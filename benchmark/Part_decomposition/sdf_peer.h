@@ -115,8 +115,10 @@ std::size_t orient_closed_components_outward(CGAL::Surface_mesh<Point>& mesh, st
 // - k-means++ in CGAL 5.5.1 loops or reads out of bounds when the faces carry fewer distinct
 //   (log-normalized) SDF values than clusters (a tetrahedron, a regular octahedron): the cluster count is
 //   lowered to that number, and a mesh with a single value is one segment.
+// `clusters`: the number of clusters asked of CGAL (its default, or the oracle count).
 template <typename Point>
-Sdf_peer_result segment_with_sdf(const CGAL::Surface_mesh<Point>& input)
+Sdf_peer_result segment_with_sdf(const CGAL::Surface_mesh<Point>& input,
+                                 std::size_t clusters = sdf_default_number_of_clusters)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Face_index Face;
@@ -149,7 +151,7 @@ Sdf_peer_result segment_with_sdf(const CGAL::Surface_mesh<Point>& input)
     internal::add_note(r.note, std::to_string(no_hit) + " face(s) without SDF value");
   std::sort(values.begin(), values.end());
   r.distinct_sdf_values = std::size_t(std::unique(values.begin(), values.end()) - values.begin());
-  r.number_of_clusters = (std::min)(sdf_default_number_of_clusters, r.distinct_sdf_values);
+  r.number_of_clusters = (std::min)(clusters, r.distinct_sdf_values);
 
   t0 = std::chrono::steady_clock::now();
   if(no_hit == num_faces(mesh) || r.number_of_clusters <= 1)
@@ -161,8 +163,8 @@ Sdf_peer_result segment_with_sdf(const CGAL::Surface_mesh<Point>& input)
   }
   else
   {
-    if(r.number_of_clusters < sdf_default_number_of_clusters)
-      internal::add_note(r.note, "clusters " + std::to_string(sdf_default_number_of_clusters) + "->" +
+    if(r.number_of_clusters < clusters)
+      internal::add_note(r.note, "clusters " + std::to_string(clusters) + "->" +
                                  std::to_string(r.number_of_clusters) + " (" +
                                  std::to_string(r.distinct_sdf_values) + " distinct SDF values)");
     r.number_of_segments = CGAL::segmentation_from_sdf_values(mesh, sdf, segment, r.number_of_clusters,

@@ -50,7 +50,8 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, labels, colored, primitives, primitive_mesh;
+  std::string input, labels, colored, primitives, primitive_mesh, hierarchy;
+  std::size_t parts = 0; // 0: the default granularity
   std::string batch, out_dir;
   std::size_t shard = 0, shards = 1;
   int threads = 0;
@@ -106,6 +107,9 @@ const char* const usage_text =
   "  --colored FILE           the mesh as PLY with one colour per part\n"
   "  --primitives FILE        the superquadric of each part as JSON, in INPUT's coordinates\n"
   "  --primitive-mesh FILE    the superquadrics as one triangle mesh (OFF)\n"
+  "  --parts K                exactly K parts, a level of the part hierarchy (at most its leaves)\n"
+  "  --hierarchy FILE         the part hierarchy as JSON: per node its children, merge cost and\n"
+  "                           superquadric; the leaf of each face of INPUT, in its order\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --verbose                print what each stage does on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
@@ -186,6 +190,8 @@ Options parse(int argc, char** argv)
     else if(a == "--colored") o.colored = value();
     else if(a == "--primitives") o.primitives = value();
     else if(a == "--primitive-mesh") o.primitive_mesh = value();
+    else if(a == "--parts") { o.parts = to_count(a, value()); if(o.parts < 1) throw Usage_error("--parts expects at least 1"); }
+    else if(a == "--hierarchy") o.hierarchy = value();
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
     else if(a == "--verbose") o.verbose = true;
@@ -333,6 +339,7 @@ struct Result
   std::vector<std::size_t> face_part; // per mesh face, in the iteration order of faces(mesh)
   std::vector<Superquadric> primitives;
   PD::Stage_timings timings;
+  PD::Part_hierarchy<K> hierarchy; // with --parts or --hierarchy only
 };
 
 Result run(const Mesh& mesh, const Options& o)
@@ -364,8 +371,19 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::use_seed_exclusion(o.seed_exclusion), PDP::maximum_solver_evaluations(o.solver_evaluations),
                  PDP::maximum_rejections_in_a_row(o.rejections_in_a_row),
                  PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
+                 PDP::part_hierarchy(o.parts > 0 || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
                  PDP::stage_timings(&r.timings)));
   r.face_part.assign(part.begin(), part.end());
+  if(o.parts > 0)
+  {
+    // the level of the hierarchy: decompose() gives the tree with the default parts in one call
+    r.parts = (std::min)(o.parts, r.hierarchy.number_of_leaves());
+    const std::vector<std::size_t> labels = r.hierarchy.labels(r.parts);
+    std::size_t i = 0;
+    for(Mesh::Face_index f : faces(mesh)) r.face_part[i++] = labels[std::size_t(f)];
+    r.primitives.clear();
+    for(std::size_t n : r.hierarchy.level(r.parts)) r.primitives.push_back(r.hierarchy.nodes[n].primitive);
+  }
   return r;
 }
 
@@ -398,21 +416,53 @@ void write_colored(std::ostream& out, const Mesh& mesh, const Result& r)
   }
 }
 
+// A superquadric's JSON members (no braces).
+void write_superquadric(std::ostream& out, const Superquadric& q)
+{
+  const auto R = q.rotation();
+  const auto a = q.scales();
+  const K::Point_3 c = q.center();
+  out << "\"center\":[" << c.x() << ',' << c.y() << ',' << c.z() << "],\"rotation\":[[" << R[0] << ',' << R[1]
+      << ',' << R[2] << "],[" << R[3] << ',' << R[4] << ',' << R[5] << "],[" << R[6] << ',' << R[7] << ','
+      << R[8] << "]],\"scale\":[" << a[0] << ',' << a[1] << ',' << a[2] << "],\"exponents\":[" << q.epsilon1()
+      << ',' << q.epsilon2() << "]";
+}
+
 void write_primitives(std::ostream& out, const Result& r)
 {
   out << "{\"primitives\":[";
   for(std::size_t k = 0; k < r.primitives.size(); ++k)
   {
-    const Superquadric& q = r.primitives[k];
-    const auto R = q.rotation();
-    const auto a = q.scales();
-    const K::Point_3 c = q.center();
-    out << (k ? ",\n" : "\n") << "{\"part\":" << k << ",\"center\":[" << c.x() << ',' << c.y() << ',' << c.z()
-        << "],\"rotation\":[[" << R[0] << ',' << R[1] << ',' << R[2] << "],[" << R[3] << ',' << R[4] << ','
-        << R[5] << "],[" << R[6] << ',' << R[7] << ',' << R[8] << "]],\"scale\":[" << a[0] << ',' << a[1]
-        << ',' << a[2] << "],\"exponents\":[" << q.epsilon1() << ',' << q.epsilon2() << "]}";
+    out << (k ? ",\n" : "\n") << "{\"part\":" << k << ',';
+    write_superquadric(out, r.primitives[k]);
+    out << '}';
   }
   out << "\n]}\n";
+}
+
+void write_hierarchy(std::ostream& out, const PD::IO::Mesh_file_info& info, const Result& r)
+{
+  static const char* const kinds[] = {"leaf", "same_primitive", "same_part", "same_piece", "contact", "no_contact"};
+  const PD::Part_hierarchy<K>& h = r.hierarchy;
+  const std::size_t none = PD::Part_hierarchy<K>::Node::no_node;
+  out << "{\"leaves\":" << h.number_of_leaves() << ",\"default_number_of_parts\":" << h.default_number_of_parts
+      << ",\"root\":" << (h.nodes.empty() ? 0 : h.nodes.size() - 1) << ",\n\"nodes\":[";
+  for(std::size_t n = 0; n < h.nodes.size(); ++n)
+  {
+    const PD::Part_hierarchy<K>::Node& x = h.nodes[n];
+    out << (n ? ",\n" : "\n") << "{\"node\":" << n << ",\"children\":[";
+    if(x.children[0] != none) out << x.children[0] << ',' << x.children[1];
+    out << "],\"parent\":" << (x.parent == none ? std::string("null") : std::to_string(x.parent)) << ",\"kind\":\""
+        << kinds[int(x.kind)] << "\",\"merge_cost\":" << x.merge_cost << ",\"area\":" << x.area
+        << ",\"faces\":" << x.number_of_faces << ',';
+    write_superquadric(out, x.primitive);
+    out << '}';
+  }
+  // the leaf of each face, in the file's face order (faces of Surface_mesh are indexed 0..F-1)
+  out << "\n],\n\"leaf_of_face\":[";
+  const std::vector<std::size_t> leaf = PD::IO::labels_in_file_order(info, h.leaf);
+  for(std::size_t i = 0; i < leaf.size(); ++i) out << (i ? "," : "") << leaf[i];
+  out << "]}\n";
 }
 
 void write_primitive_mesh(std::ostream& out, const Result& r)
@@ -433,7 +483,7 @@ void print_timings(const std::string& name, const Mesh& mesh, const Result& r, d
   std::cerr << std::fixed << std::setprecision(3) << name << ": " << num_faces(mesh) << " faces, "
             << r.parts << " parts; seconds: read " << read_seconds << ", prior " << t.prior << ", tsdf "
             << t.tsdf << ", fitting " << t.fitting << ", over-segmentation " << t.over_segmentation
-            << ", assignment " << t.assignment << ", total " << t.total << std::endl;
+            << ", assignment " << t.assignment << ", hierarchy " << t.hierarchy << ", total " << t.total << std::endl;
 }
 
 int single(const Options& o)
@@ -449,6 +499,7 @@ int single(const Options& o)
   if(!o.colored.empty()) write_colored(outputs.open(o.colored), mesh, r);
   if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
   if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
+  if(!o.hierarchy.empty()) write_hierarchy(outputs.open(o.hierarchy), info, r);
   outputs.commit();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);

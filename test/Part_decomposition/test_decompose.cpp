@@ -581,3 +581,169 @@ TEST_CASE("a part below minimum_part_area joins a neighbour of its piece", "[pie
   for(std::size_t i = 0; i < first_small; ++i) has_big_box_face[part[i]] = true;
   for(std::size_t k = 0; k < K_parts; ++k) CHECK(has_big_box_face[k]);
 }
+
+namespace {
+
+// Three closed boxes in a row along x, touching: two of equal section (one box explains their
+// union) and a small one at the end given by `small_first`. Returns the box of each face.
+Mesh make_three_boxes(bool small_first, std::vector<std::size_t>& box)
+{
+  Mesh m;
+  const double x0 = small_first ? 0.4 : 0.;
+  std::vector<std::pair<Point, Point> > boxes = {{Point(x0, 0, 0), Point(x0 + 1, 1, 1)},
+                                                 {Point(x0 + 1, 0, 0), Point(x0 + 2, 1, 1)}};
+  const std::pair<Point, Point> small =
+    small_first ? std::make_pair(Point(0, 0.3, 0.3), Point(0.4, 0.7, 0.7)) : std::make_pair(Point(2, 0.3, 0.3), Point(2.4, 0.7, 0.7));
+  boxes.insert(small_first ? boxes.begin() : boxes.end(), small);
+  for(std::size_t b = 0; b < 3; ++b)
+  {
+    // different grids: no two boxes have a face with the same corners (that would weld them)
+    test_shapes::append(m, test_shapes::make_box(boxes[b].first, boxes[b].second, int(b) + 2));
+    box.resize(num_faces(m), b);
+  }
+  return m;
+}
+
+// Whether every part of `fine` lies in one part of `coarse`.
+bool refines(const std::vector<std::size_t>& fine, const std::vector<std::size_t>& coarse)
+{
+  std::map<std::size_t, std::size_t> parent;
+  for(std::size_t i = 0; i < fine.size(); ++i)
+    if(parent.emplace(fine[i], coarse[i]).first->second != coarse[i]) return false;
+  return true;
+}
+
+} // namespace
+
+TEST_CASE("three boxes in a row: two parts join the two boxes one box explains", "[hierarchy]")
+{
+  for(bool small_first : {false, true})
+  {
+    CAPTURE(small_first);
+    std::vector<std::size_t> box;
+    const Mesh m = make_three_boxes(small_first, box);
+    const std::size_t small = small_first ? 0 : 2;
+    for(std::size_t k : {1, 2, 3})
+    {
+      CAPTURE(k);
+      std::vector<std::size_t> part(num_faces(m));
+      std::vector<PD::Superquadric<K> > primitives;
+      CHECK(PD::decompose(m, CGAL::make_property_map(part),
+                          PDP::combine(PDP::number_of_parts(k),
+                                       PDP::primitive_output_iterator(std::back_inserter(primitives)))) == k);
+      CHECK(number_of_labels(part) == k);
+      REQUIRE(primitives.size() == k);
+      for(std::size_t i = 0; i < part.size(); ++i)
+        for(std::size_t j = 0; j < part.size(); ++j)
+        {
+          const bool together = part[i] == part[j];
+          if(k == 3) CHECK(together == (box[i] == box[j]));
+          if(k == 2) CHECK(together == ((box[i] == small) == (box[j] == small)));
+        }
+      if(k == 2)
+      {
+        // the two big boxes are one box-like superquadric of half extents 1, 0.5, 0.5
+        const PD::Superquadric<K>& q = primitives[part[small == 0 ? num_faces(m) - 1 : 0]];
+        std::array<double, 3> sc = q.scales();
+        std::sort(sc.begin(), sc.end());
+        CHECK(sc[0] == Approx(0.5));
+        CHECK(sc[2] == Approx(1.));
+      }
+    }
+    // the free function on the boxes as leaves: the same first merge
+    const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(box));
+    REQUIRE(h.number_of_leaves() == 3);
+    REQUIRE(h.nodes.size() == 5);
+    const std::array<std::size_t, 2> first = h.nodes[3].children;
+    CHECK(std::set<std::size_t>(first.begin(), first.end()) ==
+          (small_first ? std::set<std::size_t>{1, 2} : std::set<std::size_t>{0, 1}));
+    CHECK(h.nodes[3].kind == PD::Merge_kind::CONTACT);
+    CHECK(h.nodes[4].parent == PD::Part_hierarchy<K>::Node::no_node);
+    CHECK(h.nodes[4].merge_cost > h.nodes[3].merge_cost);
+  }
+}
+
+TEST_CASE("the levels of the hierarchy have exact counts, are nested and hold the default parts", "[hierarchy][decompose][data]")
+{
+  Mesh m;
+  test_shapes::read_shipped_shape("dumbbell", m);
+  std::vector<std::size_t> reference_leaf;
+  std::vector<std::array<std::size_t, 2> > reference_children;
+  std::vector<double> reference_cost;
+  for(std::size_t threads : {1, 2, 3})
+  {
+    CAPTURE(threads);
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    std::vector<std::size_t> part(num_faces(m));
+    PD::Part_hierarchy<K> h;
+    PD::Stage_timings timings;
+    const std::size_t K_default =
+      PD::decompose(m, CGAL::make_property_map(part), PDP::combine(PDP::part_hierarchy(&h), PDP::stage_timings(&timings)));
+    CHECK(timings.hierarchy > 0.);
+    REQUIRE(h.default_number_of_parts == K_default);
+    REQUIRE(h.number_of_leaves() > K_default);
+    REQUIRE(h.nodes.size() == 2 * h.number_of_leaves() - 1);
+    CHECK(h.labels(K_default) == part); // the default parts are a level
+    std::vector<std::size_t> finer = h.labels(h.number_of_leaves());
+    CHECK(finer == h.leaf);
+    for(std::size_t k = h.number_of_leaves() - 1; k >= 1; --k)
+    {
+      const std::vector<std::size_t> level = h.labels(k);
+      if(number_of_labels(level) != k || !refines(finer, level)) FAIL("level " << k << " is not a k-partition coarser than level " << k + 1);
+      finer = level;
+    }
+    if(threads == 1)
+    {
+      reference_leaf = h.leaf;
+      for(const auto& n : h.nodes) { reference_children.push_back(n.children); reference_cost.push_back(n.merge_cost); }
+    }
+    else
+    {
+      CHECK(h.leaf == reference_leaf);
+      for(std::size_t n = 0; n < h.nodes.size(); ++n)
+        if(h.nodes[n].children != reference_children[n] || h.nodes[n].merge_cost != reference_cost[n])
+          FAIL("node " << n << " differs from the one-thread tree");
+    }
+    // number_of_parts: exact, clamped above the leaves, refused at 0
+    std::vector<std::size_t> cut(num_faces(m));
+    CHECK(PD::decompose(m, CGAL::make_property_map(cut), PDP::number_of_parts(std::size_t(3))) == 3);
+    CHECK(cut == h.labels(3));
+    CHECK(PD::decompose(m, CGAL::make_property_map(cut), PDP::number_of_parts(std::size_t(1) << 40)) == h.number_of_leaves());
+    CHECK(cut == h.leaf);
+    CHECK(error_of([&] { PD::decompose(m, CGAL::make_property_map(cut), PDP::number_of_parts(std::size_t(0))); }) ==
+          PD::Input_error::INVALID_PARAMETER);
+  }
+}
+
+TEST_CASE("residual patches are parts of their own, without a fitted primitive", "[residual][decompose][data]")
+{
+  Mesh m;
+  test_shapes::read_shipped_shape("animal", m);
+  PD::Part_decomposer<Mesh> d(m);
+  std::vector<std::size_t> part(num_faces(m));
+  const auto np = PDP::combine(PDP::keep_residual_patches(true), PDP::residual_tolerance(0.));
+  d.segment_pieces(np);
+  d.compute_prior(np);
+  d.compute_distance_field(np);
+  d.fit_primitives(np);
+  d.over_segment(np);
+  const std::size_t K_parts = d.assign_parts(CGAL::make_property_map(part), np);
+  REQUIRE(d.residual_parts().size() == K_parts);
+  // with a tolerance of 0 every Freeze-dominant patch is residual: some part is, and has no primitive
+  std::size_t residual = 0;
+  for(std::size_t k = 0; k < K_parts; ++k)
+    if(d.residual_parts()[k])
+    {
+      ++residual;
+      CHECK(d.part_to_primitive()[k] == PD::no_primitive);
+    }
+  CHECK(residual > 0);
+  // off by default
+  std::vector<std::size_t> plain(num_faces(m));
+  d.assign_parts(CGAL::make_property_map(plain));
+  CHECK(std::count(d.residual_parts().begin(), d.residual_parts().end(), 1) == 0);
+  CHECK(error_of([&] { d.assign_parts(CGAL::make_property_map(plain), PDP::residual_tolerance(-1.)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+}

@@ -14,6 +14,7 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
+#include <CGAL/Part_decomposition/part_hierarchy.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
@@ -22,6 +23,7 @@
 #include <CGAL/Part_decomposition/tsdf.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/residual_patches.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Default.h>
@@ -55,6 +57,7 @@ struct Stage_timings
   double fitting_zones = 0.;     ///< of which the fitting zones (run next to the distance field when stages overlap)
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
+  double hierarchy = 0.;         ///< the part hierarchy and its cut (with `number_of_parts` only)
   double total = 0.;             ///< the whole call, input checks included
   /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
   /// overlap and their sum exceeds `total`.
@@ -70,53 +73,18 @@ namespace internal {
 template <typename GeomTraits>
 Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<double, 3> >& points)
 {
-  typedef typename GeomTraits::Point_3 Point_3;
   CGAL_precondition(points.size() % 3 == 0);
-  auto vec = [](const std::array<double, 3>& p) { return Eigen::Vector3d(p[0], p[1], p[2]); };
   // moments relative to a corner: far-off meshes stay accurate
-  const Eigen::Vector3d origin = points.empty() ? Eigen::Vector3d::Zero() : vec(points[0]);
-  double total = 0.;
-  Eigen::Vector3d first = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  for(std::size_t t = 0; t + 2 < points.size(); t += 3)
-  {
-    const Eigen::Vector3d a = vec(points[t]) - origin, b = vec(points[t + 1]) - origin, c = vec(points[t + 2]) - origin;
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    const Eigen::Vector3d s = a + b + c;
-    total += area;
-    first += area / 3. * s;
-    // the integral of x x^T over the triangle
-    second += area / 12. * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
-  }
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Identity();
-  if(total > 0.)
-  {
-    mean = first / total;
-    cov = second / total - mean * mean.transpose();
-  }
-  mean += origin;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  Eigen::Matrix3d axes = eig.eigenvectors();
-  if(axes.determinant() < 0) axes.col(0) = -axes.col(0);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for(const std::array<double, 3>& p : points)
-  {
-    const Eigen::Vector3d l = axes.transpose() * (Eigen::Vector3d(p[0], p[1], p[2]) - mean);
-    lo = lo.cwiseMin(l);
-    hi = hi.cwiseMax(l);
-  }
-  const Eigen::Vector3d half = (hi - lo) / 2.;
-  const Eigen::Vector3d center = mean + axes * ((hi + lo) / 2.);
-  // flat or degenerate parts still need positive semi-axes
-  const double floor_axis = (std::max)(1e-6 * half.maxCoeff(), std::numeric_limits<double>::min());
-  std::array<double, 3> scales;
-  for(int i = 0; i < 3; ++i) scales[i] = (std::max)(half[i], floor_axis);
-  typename Superquadric<GeomTraits>::Rotation R;
-  for(int i = 0; i < 3; ++i)
-    for(int j = 0; j < 3; ++j) R[3 * i + j] = axes(i, j);
-  return Superquadric<GeomTraits>(scales, 0.1, 0.1, R, Point_3(center[0], center[1], center[2]));
+  const Eigen::Vector3d origin =
+    points.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(points[0][0], points[0][1], points[0][2]);
+  std::vector<Eigen::Vector3d> relative;
+  relative.reserve(points.size());
+  for(const std::array<double, 3>& p : points) relative.push_back(Eigen::Vector3d(p[0], p[1], p[2]) - origin);
+  Part_box box;
+  for(std::size_t t = 0; t + 2 < relative.size(); t += 3)
+    add_triangle_moments(box, relative[t], relative[t + 1], relative[t + 2]);
+  fit_box_to_points(box, relative);
+  return box_superquadric<GeomTraits>(box, origin);
 }
 
 // Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
@@ -132,6 +100,7 @@ void check_stage_parameters(const NamedParameters& np)
   read_assignment_parameters(np);
   read_sheet_merging_parameters(np);
   read_piece_parameters(np);
+  read_hierarchy_parameters(np);
 }
 
 } // namespace internal
@@ -370,9 +339,11 @@ public:
     if(volumetric)
     {
       check_frame(m_fitting.normalization, "the normalization of the fitting");
+      const internal::Assignment_parameters ap = internal::read_assignment_parameters(np);
       m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
-        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, internal::read_assignment_parameters(np),
-        m_parts);
+        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, ap, m_parts);
+      m_residual_face.clear();
+      if(ap.keep_residual_patches && m_has_prior) keep_residual_patches(ap.residual_tolerance);
       m_has_parts = true;
       if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
         merge_thin_sheet_parts<ConcurrencyTag>();
@@ -380,6 +351,7 @@ public:
     m_has_parts = true;
     if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
     else make_part_primitives();
+    mark_residual_parts();
     for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
     return m_part_to_primitive.size();
   }
@@ -402,6 +374,71 @@ public:
     merge_thin_sheet_parts<ConcurrencyTag>();
     make_part_primitives();
     return m_part_to_primitive.size();
+  }
+
+  /*!
+  builds the part hierarchy of the parts of `assign_parts()` with `build_part_hierarchy()`'s merge
+  order and returns it. Its leaves are the finest parts: the parts of `assign_parts()` cut by the
+  regions of `segment_pieces()` (before small parts were merged) and, in the pieces the volumetric
+  stages decomposed, by the patches of `over_segment()`. The merges inside a part come first, so
+  that the parts of `assign_parts()` are a level of the tree (level `part_primitives().size()`), with their
+  primitives; the other nodes get their box-like superquadric.
+  \pre `assign_parts()` was called.
+  */
+  const Part_hierarchy<Geom_traits>& build_hierarchy()
+  {
+    CGAL_precondition(m_has_parts);
+    if(!m_has_parts)
+      throw std::logic_error("Part_decomposer::build_hierarchy() needs the parts");
+    const internal::Face_adjacency& adj = m_has_pieces ? m_piece_adjacency : m_adjacency;
+    std::vector<std::size_t> piece;
+    std::vector<int> orientation;
+    if(m_has_pieces) { piece = m_pieces.piece; orientation = m_pieces.orientation; }
+    else orientation.assign(internal::label_pieces(adj, piece), 1);
+    // leaves: (part, volumetric part, region, patch); subgroups: (part, volumetric part)
+    const std::size_t nf = m_parts.size();
+    std::vector<std::array<std::size_t, 4> > key(nf);
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      const bool patch = m_has_patches && (!m_has_pieces || m_volumetric_piece[piece[i]]);
+      key[i] = {{m_parts[i], m_volume_part.empty() ? 0 : m_volume_part[i], m_has_pieces ? m_pieces.region[i] : 0,
+                 patch ? m_patches[i] : 0}};
+    }
+    std::vector<std::size_t> leaf, subgroup;
+    internal::index_of_keys(key, leaf);
+    const std::size_t number_of_leaves = internal::renumber_by_first_face(leaf); // the finest level's numbering
+    for(auto& k : key) k[2] = k[3] = 0;
+    internal::index_of_keys(key, subgroup);
+    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
+    m_hierarchy = internal::hierarchy_of_leaves<Geom_traits>(adj, corners, leaf, number_of_leaves, subgroup, m_parts,
+                                                             m_part_primitives, piece, orientation);
+    m_has_hierarchy = true;
+    return m_hierarchy;
+  }
+
+  /*!
+  writes the parts of level `k` of the hierarchy to `face_part_map` (ids `0` to `k - 1`, numbered
+  by smallest face index), their superquadrics to `primitives` in the same order, and returns `k`.
+  A `k` above the number of leaves is clamped to it: the finest level.
+  \tparam FacePartMap a model of `WritablePropertyMap` with
+  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+  \tparam OutputIterator a model of `OutputIterator` accepting `Superquadric<Geom_traits>`
+  \pre `build_hierarchy()` was called.
+  \throws Invalid_input (`INVALID_PARAMETER`) if `k` is 0.
+  */
+  template <typename FacePartMap, typename OutputIterator = CGAL::Emptyset_iterator>
+  std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map,
+                             OutputIterator primitives = OutputIterator()) const
+  {
+    CGAL_precondition(m_has_hierarchy);
+    if(!m_has_hierarchy)
+      throw std::logic_error("Part_decomposer::parts_at_level() needs the hierarchy");
+    internal::check_parameter(k >= 1, "number_of_parts", "at least 1");
+    k = (std::min)(k, m_hierarchy.number_of_leaves());
+    const std::vector<std::size_t> labels = m_hierarchy.labels(k);
+    for(auto f : faces(m_tm)) put(face_part_map, f, labels[std::size_t(get(m_fim, f))]);
+    for(std::size_t n : m_hierarchy.level(k)) *primitives++ = m_hierarchy.nodes[n].primitive;
+    return k;
   }
   /// @}
 
@@ -433,6 +470,12 @@ public:
   /// without one, the box-like superquadric of its principal-axis bounding box.
   /// \pre `assign_parts()` was called.
   const std::vector<Primitive>& part_primitives() const { return m_part_primitives; }
+  /// per part, 1 if it is a residual part: surface details that no primitive explains (see the
+  /// named parameter `keep_residual_patches` of `decompose()`), whose superquadric is only the
+  /// box-like superquadric of its principal-axis bounding box. \pre `assign_parts()` was called.
+  const std::vector<std::uint8_t>& residual_parts() const { return m_residual_parts; }
+  /// the part hierarchy. \pre `build_hierarchy()` was called.
+  const Part_hierarchy<Geom_traits>& hierarchy() const { return m_hierarchy; }
   /// @}
 
 private:
@@ -463,6 +506,31 @@ private:
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
+  // The patches no primitive explains (`internal::residual_faces()`) become parts of their own.
+  void keep_residual_patches(double tolerance_in_voxels)
+  {
+    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
+    m_residual_face = internal::residual_faces<Geom_traits>(
+      m_adjacency, corners, m_patches, m_number_of_patches, m_parts, m_part_to_primitive, m_fitting.primitives,
+      m_prior.classes, m_normalization, tolerance_in_voxels / double(m_prior.classes.resolution()));
+    internal::split_residual_parts(m_adjacency, m_residual_face, m_parts, m_part_to_primitive, no_primitive);
+  }
+
+  // A part is residual if most of its area is residual faces; it keeps no fitted primitive.
+  void mark_residual_parts()
+  {
+    const std::size_t K = m_part_to_primitive.size();
+    m_residual_parts.assign(K, 0);
+    if(m_residual_face.empty()) return;
+    std::vector<double> area(K, 0.), residual(K, 0.);
+    for(std::size_t i = 0; i < m_parts.size(); ++i)
+    {
+      area[m_parts[i]] += m_adjacency.area[i];
+      if(m_residual_face[i]) residual[m_parts[i]] += m_adjacency.area[i];
+    }
+    for(std::size_t k = 0; k < K; ++k) m_residual_parts[k] = area[k] > 0. && 2. * residual[k] > area[k];
+  }
+
   // The thin-sheet merge on the parts, without their primitives (the composition with the pieces
   // makes them after it).
   template <typename ConcurrencyTag>
@@ -478,7 +546,8 @@ private:
   // volumetric part covering most of it, or gets its bounding superquadric.
   void compose_with_pieces(bool volumetric, double minimum_part_area)
   {
-    std::vector<std::size_t> volume_part;
+    std::vector<std::size_t>& volume_part = m_volume_part;
+    volume_part.clear();
     if(volumetric)
     {
       volume_part.swap(m_parts);
@@ -539,9 +608,13 @@ private:
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
   std::vector<std::size_t> m_parts;
+  std::vector<std::uint8_t> m_residual_face; // per face: in a residual patch (empty: none kept)
+  std::vector<std::uint8_t> m_residual_parts;
+  std::vector<std::size_t> m_volume_part; // per face: the volumetric part composed with the pieces, or empty
   std::vector<std::size_t> m_part_to_primitive;
   std::vector<Primitive> m_part_primitives;
-  bool m_has_pieces = false;
+  Part_hierarchy<Geom_traits> m_hierarchy;
+  bool m_has_pieces = false, m_has_hierarchy = false;
   bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false,
        m_has_parts = false;
 };
@@ -735,6 +808,24 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, positive}
     \cgalParamDefault{`1`}
   \cgalParamNEnd
+  \cgalParamNBegin{keep_residual_patches}
+    \cgalParamDescription{if `true`, the residual patches of the assignment (paper Sec.\ 3.4) are kept
+                          as parts of their own instead of being forced onto a primitive: the patches
+                          of the over-segmentation of which at least half of the area lies in Freeze
+                          voxels of the prior and whose faces are on average farther than
+                          `residual_tolerance` from the primitive they were assigned to. Each
+                          edge-connected set of them is one part, without fitted primitive, flagged by
+                          `Part_decomposer::residual_parts()`; like any part, it joins a neighbour if it
+                          is smaller than `minimum_part_area`.}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{residual_tolerance}
+    \cgalParamDescription{the mean distance to its primitive, in voxels of the finest grid, from which a
+                          Freeze-dominant patch is residual}
+    \cgalParamType{`double`, non-negative}
+    \cgalParamDefault{`2`}
+  \cgalParamNEnd
   \cgalParamNBegin{merge_thin_sheets}
     \cgalParamDescription{if `true`, the parts are merged by `merge_thin_sheet_parts()`: adjacent
                           parts whose primitives are flat and thin are merged when less than half
@@ -782,6 +873,20 @@ are chained with `parameters::combine()`)
     \cgalParamType{a model of `OutputIterator` accepting `Superquadric<GeomTraits>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{number_of_parts}
+    \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
+                          hierarchy (`Part_decomposer::build_hierarchy()`), each with the superquadric
+                          of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
+                          leaves. Without it, the parts are those of the default granularity.}
+    \cgalParamType{`std::size_t`, at least 1}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{part_hierarchy}
+    \cgalParamDescription{if not null, receives the part hierarchy (`Part_decomposer::build_hierarchy()`),
+                          built after the parts}
+    \cgalParamType{`Part_hierarchy<GeomTraits>*`}
+    \cgalParamDefault{`nullptr`}
+  \cgalParamNEnd
   \cgalParamNBegin{stage_timings}
     \cgalParamDescription{receives the wall-clock time of each stage}
     \cgalParamType{`Stage_timings*`}
@@ -789,7 +894,7 @@ are chained with `parameters::combine()`)
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the number `K` of parts.
+\returns the number `K` of parts (the clamped \f$k\f$ with `number_of_parts`).
 
 \par Complexity
 The sum of the costs of the stages, \f$O(F \log F + F\,N_{face} + r^3)\f$ for \f$F\f$ faces and the finest
@@ -799,7 +904,8 @@ resolution \f$r\f$, plus the superquadric fits, whose number and cost depend on 
 \throws Invalid_input if `tm` cannot be decomposed (no face, a face that is not a triangle, a
 non-finite coordinate, all vertices equal, coordinates out of the range of `maximum_coordinate` and
 `minimum_extent`, a `CGAL::Surface_mesh` with garbage: see `check_input()`) or a named parameter is
-out of its range (`INVALID_PARAMETER`, also for a `normalization` that is not the one computed).
+out of its range (`INVALID_PARAMETER`, also for a `normalization` that is not the one computed, or
+a `number_of_parts` of 0).
 
 \cgalExample{Part_decomposition/decompose_example.cpp}
 */
@@ -861,12 +967,30 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
     });
 
   // the assignment, then the thin-sheet merge unless merge_thin_sheets(false), then the one write
-  const auto t = std::chrono::steady_clock::now();
-  const std::size_t K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
+  // (of the level of the hierarchy if a number of parts is asked for)
+  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),
                               CGAL::Emptyset_iterator());
-  for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
+  Part_hierarchy<GT>* hierarchy_out =
+    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
+  const auto t = std::chrono::steady_clock::now();
+  std::size_t K = 0;
+  if(!hp.has_number_of_parts)
+  {
+    K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
+    for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
+  }
+  else
+    decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
   timings.assignment = internal::seconds_since(t);
+  if(hp.has_number_of_parts || hierarchy_out != nullptr)
+  {
+    const auto th = std::chrono::steady_clock::now();
+    decomposer.build_hierarchy();
+    if(hp.has_number_of_parts) K = decomposer.parts_at_level(hp.number_of_parts, face_part_map, out);
+    if(hierarchy_out != nullptr) *hierarchy_out = decomposer.hierarchy();
+    timings.hierarchy = internal::seconds_since(th);
+  }
 
   timings.total = internal::seconds_since(t0);
   if(Stage_timings* st = choose_parameter(get_parameter(np, internal_np::stage_timings),

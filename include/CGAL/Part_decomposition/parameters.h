@@ -74,6 +74,7 @@ namespace Part_decomposition {
   X(number_of_parts_t, number_of_parts, number_of_parts)                             \
   X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
   X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
+  X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -288,7 +289,8 @@ package's parameters are:
 | `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |
 | `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
-| `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()`, `Part_decomposer::parts_at_level()` |
+| `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()` |
+| `part_hierarchy()` | `Part_hierarchy<GeomTraits>*` | `nullptr` | `decompose()` |
 | `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |

@@ -15,6 +15,10 @@
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
 
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -216,6 +220,108 @@ struct Piece_segmentation
     for(std::uint8_t c : closed)
       if(c) return true;
     return false;
+  }
+};
+
+
+/*!
+\ingroup PkgPartDecompositionRef
+How two parts of a `Part_hierarchy` are related when they are merged; the merges are made in this
+order, each kind by increasing `Part_hierarchy_node::merge_cost`.
+*/
+enum class Merge_kind
+{
+  NONE,           ///< a leaf: no merge
+  SAME_PRIMITIVE, ///< two pieces of one part of the default decomposition explained by one fitted primitive
+  SAME_PART,      ///< two pieces of one part of the default decomposition
+  SAME_PIECE,   ///< two parts of one piece of the mesh that share an edge
+  CONTACT,      ///< two parts of different pieces whose surfaces touch
+  NO_CONTACT    ///< two parts that do not touch (the parts of a mesh in separate places)
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+A node of a `Part_hierarchy`: a leaf (a finest part) or the union of its two children.
+*/
+template <typename GeomTraits>
+struct Part_hierarchy_node
+{
+  /// the index of a node that does not exist (the children of a leaf, the parent of the root)
+  static constexpr std::size_t no_node = (std::numeric_limits<std::size_t>::max)();
+  /// the two children, `no_node` for a leaf.
+  std::array<std::size_t, 2> children = {{no_node, no_node}};
+  /// the parent, `no_node` for the root.
+  std::size_t parent = no_node;
+  /// how the children are related (`NONE` for a leaf).
+  Merge_kind kind = Merge_kind::NONE;
+  /// the cost of the merge that made the node (0 for a leaf): the volume that one box-like
+  /// superquadric of the union adds to the boxes of the two children, as a fraction of the box of
+  /// the whole mesh, plus a term for the concavity of their common boundary (see `build_part_hierarchy()`).
+  double merge_cost = 0.;
+  /// the area of the node's faces.
+  double area = 0.;
+  /// the number of the node's faces.
+  std::size_t number_of_faces = 0;
+  /// the smallest face index of the node's faces; the parts of a level are numbered by it.
+  std::size_t first_face = 0;
+  /// the superquadric that explains the node, in input coordinates: the primitive of the part of
+  /// the default decomposition the node is equal to, if there is one, else the box-like
+  /// superquadric of the principal axes of the node's area moments.
+  Superquadric<GeomTraits> primitive;
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+A binary merge tree of the parts of a mesh (`build_part_hierarchy()`,
+`Part_decomposer::build_hierarchy()`): the leaves are the finest parts, each inner node is the
+union of two nodes, and the root is the whole mesh. Leaves are nodes `0` to
+`number_of_leaves() - 1`; the merges follow in the order they were made, so that the `k` parts of
+level `k` are the nodes left after the first `number_of_leaves() - k` merges. Each level is a
+partition of the faces, and the parts of a level are unions of the parts of any finer level.
+Vectors indexed by face are indexed by the face index map.
+*/
+template <typename GeomTraits>
+struct Part_hierarchy
+{
+  /// the node type
+  typedef Part_hierarchy_node<GeomTraits> Node;
+  /// the leaves, then one node per merge, in merge order; the root is the last node.
+  std::vector<Node> nodes;
+  /// the leaf of each face.
+  std::vector<std::size_t> leaf;
+  /// the number of parts of the default decomposition (a level of the tree), 0 if unknown.
+  std::size_t default_number_of_parts = 0;
+
+  /// the number of leaves, the finest level.
+  std::size_t number_of_leaves() const { return (nodes.size() + 1) / 2; }
+
+  /// the nodes of level `k`, ordered by their smallest face index.
+  /// \pre `1 <= k <= number_of_leaves()`
+  std::vector<std::size_t> level(std::size_t k) const
+  {
+    CGAL_precondition(k >= 1 && k <= number_of_leaves());
+    const std::size_t end = 2 * number_of_leaves() - k; // nodes made by the first L - k merges
+    std::vector<std::size_t> result;
+    for(std::size_t n = 0; n < end && n < nodes.size(); ++n)
+      if(nodes[n].parent == Node::no_node || nodes[n].parent >= end) result.push_back(n);
+    std::sort(result.begin(), result.end(),
+              [&](std::size_t a, std::size_t b) { return nodes[a].first_face < nodes[b].first_face; });
+    return result;
+  }
+
+  /// the part (`0` to `k - 1`, in the order of `level(k)`) of each face at level `k`.
+  /// \pre `1 <= k <= number_of_leaves()`
+  std::vector<std::size_t> labels(std::size_t k) const
+  {
+    const std::vector<std::size_t> parts = level(k);
+    const std::size_t end = 2 * number_of_leaves() - k;
+    std::vector<std::size_t> part_of_node(nodes.size(), Node::no_node);
+    for(std::size_t p = 0; p < parts.size(); ++p) part_of_node[parts[p]] = p;
+    for(std::size_t n = end; n-- > 0;) // parents come after their children
+      if(part_of_node[n] == Node::no_node && nodes[n].parent < end) part_of_node[n] = part_of_node[nodes[n].parent];
+    std::vector<std::size_t> result(leaf.size());
+    for(std::size_t i = 0; i < leaf.size(); ++i) result[i] = part_of_node[leaf[i]];
+    return result;
   }
 };
 

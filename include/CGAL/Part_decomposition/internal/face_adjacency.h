@@ -17,6 +17,8 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/number_type_config.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -45,6 +47,33 @@ struct Face_adjacency
   std::vector<std::uint8_t> degenerate; // per face: zero or non-finite normal
   std::vector<std::uint8_t> junction;   // per slot: glued across a non-manifold edge (empty: none)
   std::vector<std::size_t> twin;        // per face: a face with the same corners, or no_face (empty: none)
+};
+
+// The corners of each face as doubles, by face index, in the order of halfedge(f, tm) along next().
+struct Face_corners
+{
+  std::vector<Eigen::Vector3d> point; // per vertex
+  std::vector<std::size_t> vertex;    // three per face
+
+  template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+  Face_corners(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm)
+  {
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    point.resize(num_vertices(tm));
+    for(auto v : vertices(tm))
+    {
+      const auto& p = get(vpm, v);
+      point[std::size_t(get(vim, v))] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    vertex.resize(3 * num_faces(tm));
+    for(auto f : faces(tm))
+    {
+      std::size_t k = 3 * std::size_t(get(fim, f));
+      for(auto v : vertices_around_face(halfedge(f, tm), tm)) vertex[k++] = std::size_t(get(vim, v));
+    }
+  }
+
+  const Eigen::Vector3d& operator()(std::size_t face, int k) const { return point[vertex[3 * face + std::size_t(k)]]; }
 };
 
 // The index of halfedge h in its face, counted from halfedge(face(h), tm).

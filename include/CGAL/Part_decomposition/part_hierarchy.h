@@ -1,0 +1,325 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_PART_HIERARCHY_H
+#define CGAL_PART_DECOMPOSITION_PART_HIERARCHY_H
+
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/stage_results.h>
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/part_merging.h>
+#include <CGAL/Part_decomposition/internal/piece_regions.h>
+#include <CGAL/Part_decomposition/piece_segmentation.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// The package parameters of the hierarchy and of the cut at a number of parts.
+struct Hierarchy_parameters
+{
+  bool has_number_of_parts = false;
+  std::size_t number_of_parts = 0;
+};
+
+template <typename NamedParameters>
+Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Part_decomposition::internal_np;
+  Hierarchy_parameters p;
+  p.has_number_of_parts = !CGAL::parameters::is_default_parameter<NamedParameters, inp::number_of_parts_t>::value;
+  p.number_of_parts = choose_parameter(get_parameter(np, inp::number_of_parts), std::size_t(0));
+  if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts", "at least 1");
+  return p;
+}
+
+// Surfaces of two pieces closer than this fraction of the bounding box diagonal touch; a box is
+// at least twice as thick (about one voxel of the default 64^3 grid).
+constexpr double contact_fraction = 0.01;
+// The weight of the concavity of the common boundary: parts meet along concave creases.
+constexpr double merge_crease_weight = 0.05;
+// The dihedral angle (degrees) from which a concave edge counts fully in that concavity.
+constexpr double merge_crease_angle = 60.;
+
+// The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`.
+template <typename Corner>
+std::vector<Part_box> leaf_boxes(std::size_t number_of_faces, const Corner& corner, const std::vector<std::size_t>& leaf,
+                                 std::size_t number_of_leaves, const Eigen::Vector3d& origin)
+{
+  std::vector<Part_box> box(number_of_leaves);
+  std::vector<std::vector<Eigen::Vector3d> > points(number_of_leaves);
+  for(std::size_t i = 0; i < number_of_faces; ++i)
+  {
+    add_triangle_moments(box[leaf[i]], corner(i, 0) - origin, corner(i, 1) - origin, corner(i, 2) - origin);
+    for(int k = 0; k < 3; ++k) points[leaf[i]].push_back(corner(i, k) - origin);
+  }
+  for(std::size_t l = 0; l < number_of_leaves; ++l)
+  {
+    fit_box_to_points(box[l], points[l]);
+    std::vector<Eigen::Vector3d>().swap(points[l]);
+  }
+  return box;
+}
+
+// The rank of each key among the distinct keys (`index`), and their number.
+template <typename Key>
+std::size_t index_of_keys(const std::vector<Key>& key, std::vector<std::size_t>& index)
+{
+  std::vector<Key> sorted(key);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  index.resize(key.size());
+  for(std::size_t i = 0; i < key.size(); ++i)
+    index[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
+  return sorted.size();
+}
+
+// The value of a per-face label on each leaf, `none` if the leaf's faces disagree.
+inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& face_label, const std::vector<std::size_t>& leaf,
+                                                std::size_t number_of_leaves, std::size_t none)
+{
+  std::vector<std::size_t> result(number_of_leaves, none);
+  std::vector<std::uint8_t> seen(number_of_leaves, 0);
+  for(std::size_t i = 0; i < leaf.size(); ++i)
+  {
+    std::size_t& r = result[leaf[i]];
+    if(!seen[leaf[i]]) { seen[leaf[i]] = 1; r = face_label[i]; }
+    else if(r != face_label[i]) r = none;
+  }
+  return result;
+}
+
+// The hierarchy of the leaves of a mesh given by its face graph `adj` and the corners of its faces
+// (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
+// whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face.
+template <typename GeomTraits, typename Corner>
+Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const Corner& corner,
+                                               const std::vector<std::size_t>& leaf, std::size_t number_of_leaves,
+                                               const std::vector<std::size_t>& subgroup,
+                                               const std::vector<std::size_t>& group,
+                                               const std::vector<Superquadric<GeomTraits> >& group_primitive,
+                                               const std::vector<std::size_t>& piece,
+                                               const std::vector<int>& orientation)
+{
+  typedef Part_hierarchy_node<GeomTraits> Node;
+  const std::size_t none = Node::no_node, nf = adj.number_of_faces;
+  Part_hierarchy<GeomTraits> h;
+  h.leaf = leaf;
+  h.default_number_of_parts = group_primitive.size();
+  if(nf == 0 || number_of_leaves == 0) return h;
+
+  // the scale: the bounding box of the corners
+  const Eigen::Vector3d origin = corner(0, 0);
+  Eigen::Vector3d lo = origin, hi = origin;
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k) { lo = lo.cwiseMin(corner(i, k)); hi = hi.cwiseMax(corner(i, k)); }
+  const double diagonal = (std::max)((hi - lo).norm(), std::numeric_limits<double>::min());
+  Merge_parameters p;
+  p.contact_distance = contact_fraction * diagonal;
+  p.thickness = contact_fraction * diagonal;
+  p.crease_weight = merge_crease_weight;
+  double total_volume = 1.;
+  for(int d = 0; d < 3; ++d) total_volume *= (std::max)(hi[d] - lo[d], 2. * p.thickness);
+
+  const std::vector<std::size_t> leaf_group = group.empty() ? std::vector<std::size_t>(number_of_leaves, none)
+                                                            : label_of_leaves(group, leaf, number_of_leaves, none);
+  const std::vector<std::size_t> leaf_subgroup = subgroup.empty() ? std::vector<std::size_t>(number_of_leaves, none)
+                                                                  : label_of_leaves(subgroup, leaf, number_of_leaves, none);
+  const std::vector<std::size_t> leaf_piece = label_of_leaves(piece, leaf, number_of_leaves, none);
+  Part_agglomeration agglomeration(leaf_boxes(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
+                                   leaf_piece, p, total_volume);
+
+  // links: leaves sharing an edge (with the length and concavity of their boundary), and leaves
+  // of different pieces whose surfaces touch
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::array<double, 2> > > shared;
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j == Face_adjacency::no_face || leaf[j] <= leaf[i]) continue; // each edge once, from one side
+      const double length = (corner(i, k) - corner(i, (k + 2) % 3)).norm();
+      const bool concave = crease_sign(adj, i, k) * orientation[piece[i]] < 0;
+      const double weight = concave ? (std::min)(1., adj.angle[3 * i + k] / merge_crease_angle) : 0.;
+      shared.push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
+    }
+  std::sort(shared.begin(), shared.end());
+  for(std::size_t e = 0; e < shared.size();)
+  {
+    std::size_t f = e;
+    std::array<double, 2> sum = {{0., 0.}};
+    for(; f < shared.size() && shared[f].first == shared[e].first; ++f)
+    {
+      sum[0] += shared[f].second[0];
+      sum[1] += shared[f].second[1];
+    }
+    agglomeration.link(shared[e].first.first, shared[e].first.second, false, sum[0], sum[1]);
+    e = f;
+  }
+  if(std::any_of(leaf_piece.begin(), leaf_piece.end(), [&](std::size_t q) { return q != leaf_piece[0]; }))
+  {
+    for(const auto& e : touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance))
+      agglomeration.link(e.first, e.second, true);
+  }
+  const std::size_t number_of_nodes = agglomeration.run();
+
+  // the nodes
+  h.nodes.resize(number_of_nodes);
+  std::vector<std::size_t> group_faces;
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    Node& n = h.nodes[leaf[i]];
+    if(n.number_of_faces == 0) n.first_face = i;
+    ++n.number_of_faces;
+    n.area += adj.area[i];
+    if(!group.empty())
+    {
+      if(group[i] >= group_faces.size()) group_faces.resize(group[i] + 1, 0);
+      ++group_faces[group[i]];
+    }
+  }
+  for(std::size_t m = 0; m < number_of_nodes; ++m)
+  {
+    Node& n = h.nodes[m];
+    n.children = agglomeration.children()[m];
+    n.kind = agglomeration.kinds()[m];
+    n.merge_cost = agglomeration.costs()[m];
+    if(n.children[0] != none)
+    {
+      const Node &a = h.nodes[n.children[0]], &b = h.nodes[n.children[1]];
+      n.area = a.area + b.area;
+      n.number_of_faces = a.number_of_faces + b.number_of_faces;
+      n.first_face = (std::min)(a.first_face, b.first_face);
+      h.nodes[n.children[0]].parent = h.nodes[n.children[1]].parent = m;
+    }
+    const std::size_t g = agglomeration.groups()[m];
+    if(g != none && g < group_primitive.size() && g < group_faces.size() && group_faces[g] == n.number_of_faces)
+      n.primitive = group_primitive[g];
+    else
+      n.primitive = box_superquadric<GeomTraits>(agglomeration.boxes()[m], origin);
+  }
+  return h;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPartDecompositionRef
+builds the part hierarchy of a mesh from its finest parts, given by `face_part_map`: a binary merge
+tree whose leaves are these parts and whose root is the whole mesh.
+
+The parts are merged two at a time, greedily. Two parts may merge if they share an edge, if they
+belong to different pieces (edge-connected components) whose surfaces come within 1% of the
+bounding box diagonal of each other (a contact), or, once no such pair is left, if they are
+neighbours in the Hilbert order of their centres (parts in separate places). The pairs are taken
+by kind first, parts of one piece before parts in contact before the others, so that the pieces
+of the mesh are a level of the tree, and within a kind by increasing cost
+\f[ c(a, b) = \frac{\max(0,\ V(a \cup b) - V(a) - V(b))}{V(M)} + 0.05\,\frac{C(a, b)}{L(a, b)}, \f]
+where \f$V\f$ is the volume of the box, on the principal axes of the area moments of a part's
+surface, that holds the part (its box-like superquadric), with a thickness of at least 1% of the
+diagonal, \f$V(M)\f$ that of the bounding box of the mesh, \f$L(a, b)\f$ the length of the
+common boundary of the two parts (0: the term is 0) and \f$C(a, b)\f$ that length weighted by
+concavity (an edge counts with \f$\min(1, \theta / 60^\circ)\f$ if it is concave with dihedral angle
+\f$\theta\f$, 0 if convex; open pieces are oriented as in `segment_pieces()`): two parts merge
+early when one box explains their union about as well as their two boxes (two halves of one
+plate, a knob on a door, the two parts of a limb that is straight), late when the union would
+leave much space empty (a leg and the seat, two perpendicular plates). The box of a merged node
+holds the boxes of its two children.
+
+`Part_decomposer::build_hierarchy()` builds the hierarchy of a decomposition, whose default parts
+are a level of the tree.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
+\tparam FacePartMap a model of `ReadablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh
+\param face_part_map the finest part of each face, from `0` to `K - 1`
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_index_map}
+    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+                          `0` and `num_faces(tm) - 1`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+                   `std::size_t` as value type}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a model of `PartDecompositionTraits`}
+    \cgalParamDefault{the kernel of the point type of the vertex point map}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `CGAL::is_triangle_mesh(tm)` and the values of `face_part_map` are `0` to `K - 1`, each used.
+
+\returns the hierarchy: `K` leaves, leaf `k` being part `k`, and `K - 1` merges. Every node's
+primitive is its box-like superquadric. The result does not depend on the number of threads.
+
+\par Complexity
+\f$O(F \log F)\f$ for \f$F\f$ faces, plus \f$O(E \log E)\f$ for the \f$E\f$ pairs of parts that
+are linked.
+
+\throws Invalid_input (`INVALID_PARAMETER`) if a part id is not below the number of faces.
+*/
+template <typename TriangleMesh, typename FacePartMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Part_hierarchy<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>
+build_part_hierarchy(const TriangleMesh& tm, FacePartMap face_part_map,
+                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const internal::Face_adjacency adj = internal::piece_adjacency<CGAL::Sequential_tag>(tm, fim, vpm, np);
+  const Piece_segmentation pieces = internal::segment_pieces_of_graph(adj, internal::Piece_parameters());
+  std::vector<std::size_t> leaf(adj.number_of_faces, 0);
+  std::size_t number_of_leaves = 0;
+  for(auto f : faces(tm))
+  {
+    const std::size_t k = std::size_t(get(face_part_map, f));
+    internal::check_parameter(k < adj.number_of_faces, "face_part_map", "part ids below the number of faces");
+    leaf[std::size_t(get(fim, f))] = k;
+    number_of_leaves = (std::max)(number_of_leaves, k + 1);
+  }
+  const internal::Face_corners corners(tm, fim, vpm);
+  return internal::hierarchy_of_leaves<GT>(adj, corners, leaf, number_of_leaves, std::vector<std::size_t>(),
+                                           std::vector<std::size_t>(), std::vector<Superquadric<GT> >(), pieces.piece,
+                                           pieces.orientation);
+}
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_PART_HIERARCHY_H
