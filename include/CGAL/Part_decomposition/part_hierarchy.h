@@ -81,19 +81,6 @@ std::vector<Part_box> leaf_boxes(std::size_t number_of_faces, const Corner& corn
   return box;
 }
 
-// The rank of each key among the distinct keys (`index`), and their number.
-template <typename Key>
-std::size_t index_of_keys(const std::vector<Key>& key, std::vector<std::size_t>& index)
-{
-  std::vector<Key> sorted(key);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-  index.resize(key.size());
-  for(std::size_t i = 0; i < key.size(); ++i)
-    index[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
-  return sorted.size();
-}
-
 // The value of a per-face label on each leaf, `none` if the leaf's faces disagree.
 inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& face_label, const std::vector<std::size_t>& leaf,
                                                 std::size_t number_of_leaves, std::size_t none)

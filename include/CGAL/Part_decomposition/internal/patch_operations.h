@@ -172,6 +172,19 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
   return renumber_by_first_face(label);
 }
 
+// The rank of each key among the distinct keys (`index`), and their number.
+template <typename Key>
+std::size_t index_of_keys(const std::vector<Key>& key, std::vector<std::size_t>& index)
+{
+  std::vector<Key> sorted(key);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  index.resize(key.size());
+  for(std::size_t i = 0; i < key.size(); ++i)
+    index[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
+  return sorted.size();
+}
+
 // Merges every patch whose area is below `min_area` into the neighbouring patch across its
 // weakest shared edge (smallest dihedral angle; ties: the smaller neighbour, then the smaller
 // id, so that equal fragments pair up rather than pile onto one), smallest patch first,

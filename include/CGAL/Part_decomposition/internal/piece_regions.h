@@ -274,13 +274,8 @@ inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const s
   std::vector<std::pair<std::size_t, std::size_t> > key(nf);
   for(std::size_t i = 0; i < nf; ++i)
     key[i] = std::make_pair(region[i], volumetric && volume_part[i] != none ? volume_part[i] + 1 : 0);
-  std::vector<std::pair<std::size_t, std::size_t> > sorted(key);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-  part.resize(nf);
-  for(std::size_t i = 0; i < nf; ++i)
-    part[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
-  merge_small_patches(adj, part, sorted.size(), min_area);
+  const std::size_t number_of_keys = index_of_keys(key, part);
+  merge_small_patches(adj, part, number_of_keys, min_area);
   const std::size_t count = renumber_by_first_face(part);
 
   std::vector<std::size_t> source(count, none);
