@@ -2,7 +2,9 @@
 same labels as the hitops tool. Run by ctest (test python_pytest), which sets PYTHONPATH to the
 module, PD_EXAMPLE_DATA_DIR to the shipped meshes and PD_HITOPS to the hitops tool."""
 
+import json
 import os
+import struct
 import subprocess
 import tempfile
 import threading
@@ -264,3 +266,72 @@ def test_decompose_file_gives_the_labels_of_hitops(name, options, keywords):
     r = pd.decompose_file(path, threads=2, **keywords)
     assert r.labels.shape == expected.shape
     assert (r.labels == expected).all()
+
+
+def write_glb(path, meshes, nodes, scene_nodes):
+    """A GLB file: meshes is a list of (positions float32 (n, 3), indices (m, 3) of some integer dtype)."""
+    binary = b""
+    views, accessors, gltf_meshes = [], [], []
+
+    def add(array, component_type, kind, count):
+        nonlocal binary
+        binary += b"\0" * (-len(binary) % 4)
+        views.append({"buffer": 0, "byteOffset": len(binary), "byteLength": array.nbytes})
+        binary += array.tobytes()
+        accessors.append({"bufferView": len(views) - 1, "componentType": component_type, "type": kind, "count": count})
+        return len(accessors) - 1
+
+    types = {np.dtype(np.uint8): 5121, np.dtype(np.uint16): 5123, np.dtype(np.uint32): 5125}
+    for positions, indices in meshes:
+        p = add(np.ascontiguousarray(positions, dtype="<f4"), 5126, "VEC3", len(positions))
+        i = add(np.ascontiguousarray(indices.ravel()), types[indices.dtype], "SCALAR", indices.size)
+        gltf_meshes.append({"primitives": [{"attributes": {"POSITION": p}, "indices": i}]})
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": scene_nodes}], "nodes": nodes,
+           "meshes": gltf_meshes, "accessors": accessors, "bufferViews": views,
+           "buffers": [{"byteLength": len(binary)}]}
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    with open(path, "wb") as f:
+        f.write(struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text) + 8 + len(binary)))
+        f.write(struct.pack("<I4s", len(text), b"JSON") + text)
+        f.write(struct.pack("<I4s", len(binary), b"BIN\0") + binary)
+
+
+def write_off(path, vertices, faces):
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(vertices), len(faces)))
+        for v in vertices:
+            f.write("%r %r %r\n" % tuple(float(x) for x in v))
+        for t in faces:
+            f.write("3 %d %d %d\n" % tuple(t))
+
+
+def test_glb_of_several_meshes_with_node_transforms_gives_the_parts_of_the_same_off():
+    dumbbell = read_off(os.path.join(DATA, "dumbbell.off"))
+    table = read_off(os.path.join(DATA, "table.off"))
+    a = (dumbbell[0].astype(np.float32), dumbbell[1].astype(np.uint16))
+    b = (table[0].astype(np.float32), table[1].astype(np.uint32))
+    # parent: T * R * S with half a turn about z; child: a matrix (x, y, z) -> (z, x, y) + (0, 5, 0)
+    nodes = [{"mesh": 0, "children": [1], "translation": [3.0, 0.0, 0.0], "rotation": [0.0, 0.0, 1.0, 0.0],
+              "scale": [2.0, 2.0, 2.0]},
+             {"mesh": 1, "matrix": [0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 5, 0, 1]}]
+
+    def parent(p):
+        return np.column_stack([3.0 - 2.0 * p[:, 0], -2.0 * p[:, 1], 2.0 * p[:, 2]])
+
+    pa = parent(a[0].astype(np.float64))
+    pb64 = b[0].astype(np.float64)
+    pb = parent(np.column_stack([pb64[:, 2], pb64[:, 0] + 5.0, pb64[:, 1]]))
+    vertices = np.vstack([pa, pb])
+    faces = np.vstack([a[1].astype(np.int64), b[1].astype(np.int64) + len(pa)])
+    with tempfile.TemporaryDirectory() as d:
+        write_glb(os.path.join(d, "scene.glb"), [a, b], nodes, [0])
+        write_off(os.path.join(d, "scene.off"), vertices, faces)
+        from_glb = pd.decompose_file(os.path.join(d, "scene.glb"), **FAST)
+        from_off = pd.decompose_file(os.path.join(d, "scene.off"), **FAST)
+    assert from_glb.labels.shape == (len(a[1]) + len(b[1]),)
+    assert (from_glb.labels == from_off.labels).all()
+    # the two objects are apart: no part holds triangles of both
+    assert not set(from_glb.labels[:len(a[1])]) & set(from_glb.labels[len(a[1]):])
+    assert from_glb.number_of_parts >= 3

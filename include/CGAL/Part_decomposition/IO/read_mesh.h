@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/read_stl_soup.h>
@@ -21,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -131,6 +133,28 @@ inline bool read_obj_soup(const std::string& filename, Polygon_soup_arrays& soup
   return true;
 }
 
+// glTF (.gltf, .glb): a broken file throws UNREADABLE_FILE with the reason.
+inline void read_gltf_soup(const std::string& filename, const File_contents& contents, Polygon_soup_arrays& soup)
+{
+#ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+  const std::size_t slash = filename.find_last_of('/');
+  try
+  {
+    Gltf_soup_reader(contents.begin(), contents.end(), slash == std::string::npos ? std::string() : filename.substr(0, slash + 1))
+      .read(soup);
+  }
+  catch(const Gltf_error& e)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as glTF: " + e.what());
+  }
+#else
+  CGAL_USE(contents);
+  CGAL_USE(soup);
+  throw Invalid_input(Input_error::UNREADABLE_FILE,
+                      "cannot read '" + filename + "': glTF needs nlohmann/json.hpp (Debian: nlohmann-json3-dev)");
+#endif
+}
+
 // Parses the file into `soup`; false if it cannot be parsed.
 inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays& soup)
 {
@@ -148,6 +172,11 @@ inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays&
     if(extension == "off") return Off_soup_reader(contents.begin(), contents.end()).read(soup);
     if(extension == "ply") return Ply_soup_reader(contents.begin(), contents.end()).read(soup);
     if(extension == "stl") return Stl_soup_reader(contents.begin(), contents.end()).read(soup);
+    if(extension == "gltf" || extension == "glb")
+    {
+      read_gltf_soup(filename, contents, soup);
+      return true;
+    }
     if(extension == "obj")
     {
       contents = File_contents(); // CGAL reads the file again
@@ -155,6 +184,10 @@ inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays&
     }
     // only these formats: CGAL's reader of every format costs a user seconds of compilation
     return false;
+  }
+  catch(const Invalid_input&)
+  {
+    throw;
   }
   catch(const std::exception&)
   {
@@ -542,7 +575,8 @@ namespace IO {
 
 /*!
 \ingroup PkgPartDecompositionIO
-reads the file `filename` (OFF, OBJ, PLY, STL; chosen by extension) into the triangle mesh `tm`,
+reads the file `filename` (OFF, OBJ, PLY, STL, glTF 2.0 as `.gltf` or `.glb`; chosen by extension)
+into the triangle mesh `tm`,
 whatever the file holds: polygons are triangulated, vertices with equal coordinates are merged,
 the soup is oriented consistently (vertices are duplicated where the surface is non-manifold or
 not orientable), and every closed connected component is oriented outward. Open, non-manifold,
@@ -577,7 +611,7 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
   internal::File_soup soup;
   if(!internal::parse_polygon_soup(filename, soup.file))
     throw Invalid_input(Input_error::UNREADABLE_FILE,
-                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY or STL mesh");
+                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY, STL or glTF mesh");
   Mesh_file_info info = internal::build_triangle_mesh(soup, "'" + filename + "'", tm);
   if(CGAL::IO::internal::get_file_extension(filename) == "stl")
   {
