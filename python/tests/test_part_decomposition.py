@@ -335,3 +335,70 @@ def test_glb_of_several_meshes_with_node_transforms_gives_the_parts_of_the_same_
     # the two objects are apart: no part holds triangles of both
     assert not set(from_glb.labels[:len(a[1])]) & set(from_glb.labels[len(a[1]):])
     assert from_glb.number_of_parts >= 3
+
+
+def read_glb(path):
+    """The JSON and the binary chunk of a GLB file, checking its container."""
+    with open(path, "rb") as f:
+        data = f.read()
+    magic, version, length = struct.unpack_from("<4sII", data, 0)
+    assert magic == b"glTF" and version == 2 and length == len(data)
+    json_length, json_type = struct.unpack_from("<I4s", data, 12)
+    assert json_type == b"JSON" and json_length % 4 == 0
+    doc = json.loads(data[20:20 + json_length])
+    bin_length, bin_type = struct.unpack_from("<I4s", data, 20 + json_length)
+    assert bin_type == b"BIN\0" and 28 + json_length + bin_length == len(data)
+    return doc, data[28 + json_length:]
+
+
+def accessor_array(doc, binary, index):
+    a = doc["accessors"][index]
+    view = doc["bufferViews"][a["bufferView"]]
+    dtype = {5126: "<f4", 5125: "<u4"}[a["componentType"]]
+    width = {"VEC3": 3, "SCALAR": 1}[a["type"]]
+    flat = np.frombuffer(binary, dtype=dtype, count=a["count"] * width, offset=view["byteOffset"])
+    assert view["byteOffset"] % 4 == 0 and flat.nbytes == view["byteLength"]
+    return flat.reshape(-1, width) if width > 1 else flat
+
+
+@pytest.mark.skipif(not HITOPS, reason="PD_HITOPS (the hitops tool) not given")
+def test_hitops_parts_glb_has_one_mesh_per_part_and_the_primitives():
+    path = os.path.join(DATA, "animal.off")
+    vertices, faces = read_off(path)
+    with tempfile.TemporaryDirectory() as d:
+        glb, seg = os.path.join(d, "parts.glb"), os.path.join(d, "parts.seg")
+        subprocess.run([HITOPS, path, "--labels", seg, "--parts-glb", glb, "--parts-glb-primitives", "--threads", "2"],
+                       check=True, stdout=subprocess.DEVNULL)
+        labels = np.loadtxt(seg, dtype=np.int64)
+        doc, binary = read_glb(glb)
+        # the package's own reader takes the file back: every part and primitive triangle
+        back = pd.decompose_file(glb, **FAST)
+    k = labels.max() + 1
+    names = [m["name"] for m in doc["meshes"]]
+    assert names == ["part_%d" % i for i in range(k)] + ["primitive_%d" % i for i in range(k)]
+    scene = [doc["nodes"][n]["name"] for n in doc["scenes"][doc["scene"]]["nodes"]]
+    assert scene == ["parts", "primitives"]
+    colours = set()
+    total = 0
+    for i, mesh in enumerate(doc["meshes"]):
+        (primitive,) = mesh["primitives"]
+        positions = accessor_array(doc, binary, primitive["attributes"]["POSITION"])
+        indices = accessor_array(doc, binary, primitive["indices"])
+        accessor = doc["accessors"][primitive["attributes"]["POSITION"]]
+        assert np.allclose(accessor["min"], positions.min(axis=0)) and np.allclose(accessor["max"], positions.max(axis=0))
+        assert indices.max() < len(positions) and len(indices) % 3 == 0
+        material = doc["materials"][primitive["material"]]
+        if i < k:
+            # part i: its triangles and nothing else, at the input's positions
+            assert len(indices) // 3 == (labels == i).sum()
+            part_corners = np.sort(positions[indices].reshape(-1, 3, 3).reshape(-1, 9), axis=0)
+            input_corners = np.sort(vertices[faces[labels == i]].astype(np.float32).reshape(-1, 9), axis=0)
+            assert np.array_equal(np.unique(part_corners.reshape(-1, 3), axis=0),
+                                  np.unique(input_corners.reshape(-1, 3), axis=0))
+            colours.add(tuple(material["pbrMetallicRoughness"]["baseColorFactor"]))
+            total += len(indices) // 3
+        else:
+            assert material["pbrMetallicRoughness"]["baseColorFactor"][3] == 0.5 and material["alphaMode"] == "BLEND"
+    assert total == len(faces)
+    assert len(colours) == k
+    assert len(back.labels) > total
