@@ -1,7 +1,8 @@
 // hitops: the Hi-TOPS part decomposition of a mesh file, or of a list of files, from the command line.
 //
 //   hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]
-//                [--primitive-mesh OUT.off] [--threads N] [parameter options]
+//                [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]
+//                [--threads N] [parameter options]
 //   hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]
 //
 // `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
@@ -11,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/decompose.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -53,6 +55,8 @@ struct Options
   std::string input, labels, colored, primitives, primitive_mesh, hierarchy;
   std::size_t parts = 0; // 0: the default granularity
   std::string batch, out_dir;
+  std::string parts_glb;
+  bool parts_glb_primitives = false;
   std::size_t shard = 0, shards = 1;
   int threads = 0;
   bool timings = false, verbose = false;
@@ -97,10 +101,11 @@ struct Options
 
 const char* const usage_text =
   "usage: hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]\n"
-  "                    [--primitive-mesh OUT.off] [--threads N] [parameter options]\n"
+  "                    [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]\n"
+  "                    [--threads N] [parameter options]\n"
   "       hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]\n"
   "\n"
-  "Decomposes a triangle mesh (OFF, OBJ, PLY, STL) into parts with the Hi-TOPS method.\n"
+  "Decomposes a triangle mesh (OFF, OBJ, PLY, STL, glTF .gltf/.glb) into parts with the Hi-TOPS method.\n"
   "\n"
   "outputs:\n"
   "  --labels FILE            one part id per line, one line per face of INPUT, in its order\n"
@@ -110,6 +115,9 @@ const char* const usage_text =
   "  --parts K                exactly K parts, a level of the part hierarchy (at most its leaves)\n"
   "  --hierarchy FILE         the part hierarchy as JSON: per node its children, merge cost and\n"
   "                           superquadric; the leaf of each face of INPUT, in its order\n"
+  "  --parts-glb FILE         the parts as binary glTF: one mesh and node part_K per part, its colour as\n"
+  "                           material, to pick parts one by one in Blender or any glTF viewer\n"
+  "  --parts-glb-primitives   with --parts-glb: also the superquadrics, nodes primitive_K (half transparent)\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --verbose                print what each stage does on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
@@ -192,6 +200,8 @@ Options parse(int argc, char** argv)
     else if(a == "--primitive-mesh") o.primitive_mesh = value();
     else if(a == "--parts") { o.parts = to_count(a, value()); if(o.parts < 1) throw Usage_error("--parts expects at least 1"); }
     else if(a == "--hierarchy") o.hierarchy = value();
+    else if(a == "--parts-glb") o.parts_glb = value();
+    else if(a == "--parts-glb-primitives") o.parts_glb_primitives = true;
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
     else if(a == "--verbose") o.verbose = true;
@@ -274,6 +284,7 @@ Options parse(int argc, char** argv)
   if(o.batch.empty() && o.input.empty()) throw Usage_error("no input file (see --help)");
   if(!o.batch.empty() && !o.input.empty()) throw Usage_error("give either an input file or --batch, not both");
   if(!o.batch.empty() && o.out_dir.empty()) throw Usage_error("--batch needs --out DIR");
+  if(o.parts_glb_primitives && o.parts_glb.empty()) throw Usage_error("--parts-glb-primitives needs --parts-glb FILE");
   return o;
 }
 
@@ -500,6 +511,9 @@ int single(const Options& o)
   if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
   if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
   if(!o.hierarchy.empty()) write_hierarchy(outputs.open(o.hierarchy), info, r);
+  if(!o.parts_glb.empty())
+    PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts,
+                            o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>());
   outputs.commit();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);

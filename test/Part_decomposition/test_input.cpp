@@ -9,9 +9,16 @@
 
 #include "test_shapes.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -217,4 +224,236 @@ TEST_CASE("the oriented-manifold check lets only clean soups skip the orienter",
   // a closed fan (cycle) around vertex 0 and a cycle with a dangling fan at the same vertex
   CHECK(is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}}, 4));
   CHECK(!is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}, {{0, 4, 5}}}, 6));
+}
+
+// ---- glTF
+
+namespace {
+
+typedef std::array<float, 3> Float3;
+typedef std::array<std::uint32_t, 3> Tri;
+
+// The triangles of a test shape, with float coordinates (what a glTF file stores).
+void shape_arrays(const Mesh& m, std::vector<Float3>& points, std::vector<Tri>& tris)
+{
+  for(auto v : vertices(m)) points.push_back({{float(m.point(v).x()), float(m.point(v).y()), float(m.point(v).z())}});
+  for(auto f : faces(m))
+  {
+    Tri t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) t[k++] = std::uint32_t(v);
+    tris.push_back(t);
+  }
+}
+
+// Assembles a glTF file: one buffer, one view and accessor per array.
+struct Gltf_builder
+{
+  nlohmann::json j = {{"asset", {{"version", "2.0"}}}, {"bufferViews", nlohmann::json::array()},
+                      {"accessors", nlohmann::json::array()}, {"meshes", nlohmann::json::array()},
+                      {"nodes", nlohmann::json::array()}};
+  std::string bin;
+
+  template <typename T>
+  std::size_t accessor(const std::vector<T>& items, int component_type, const char* type, std::size_t count)
+  {
+    while(bin.size() % 4) bin += '\0';
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", items.size() * sizeof(T)}});
+    bin.append(reinterpret_cast<const char*>(items.data()), items.size() * sizeof(T));
+    j["accessors"].push_back({{"bufferView", j["bufferViews"].size() - 1}, {"componentType", component_type},
+                              {"type", type}, {"count", count}});
+    return j["accessors"].size() - 1;
+  }
+  std::size_t positions(const std::vector<Float3>& p) { return accessor(p, 5126, "VEC3", p.size()); }
+  template <typename Index>
+  std::size_t indices(const std::vector<Tri>& tris)
+  {
+    std::vector<Index> flat;
+    for(const Tri& t : tris)
+      for(std::uint32_t i : t) flat.push_back(Index(i));
+    return accessor(flat, sizeof(Index) == 2 ? 5123 : 5125, "SCALAR", flat.size());
+  }
+  std::string json_text(const nlohmann::json& buffer)
+  {
+    nlohmann::json out = j;
+    out["buffers"] = nlohmann::json::array({buffer});
+    return out.dump();
+  }
+  std::string glb()
+  {
+    std::string text = json_text({{"byteLength", bin.size()}});
+    while(text.size() % 4) text += ' ';
+    std::string data = bin;
+    while(data.size() % 4) data += '\0';
+    auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    return "glTF" + u32(2) + u32(std::uint32_t(12 + 8 + text.size() + 8 + data.size())) + u32(std::uint32_t(text.size())) +
+           "JSON" + text + u32(std::uint32_t(data.size())) + std::string("BIN\0", 4) + data;
+  }
+  std::string embedded()
+  {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string b64;
+    for(std::size_t i = 0; i < bin.size(); i += 3)
+    {
+      const std::size_t n = (std::min)(std::size_t(3), bin.size() - i);
+      std::uint32_t v = 0;
+      for(std::size_t k = 0; k < 3; ++k) v = (v << 8) | (k < n ? std::uint32_t((unsigned char)bin[i + k]) : 0u);
+      b64 += digits[(v >> 18) & 63];
+      b64 += digits[(v >> 12) & 63];
+      b64 += n > 1 ? digits[(v >> 6) & 63] : '=';
+      b64 += n > 2 ? digits[v & 63] : '=';
+    }
+    return json_text({{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + b64}});
+  }
+};
+
+// The scene of the tests: a box (uint16 indices) under a TRS node whose child, with a matrix,
+// holds a sphere (uint32 indices) and a non-indexed triangle. The transforms are exact in
+// floating point, so the same geometry written as OFF gives the same soup bit for bit.
+struct Gltf_scene
+{
+  Gltf_builder b;
+  std::string off; // the same triangles, in the reader's documented order
+  std::size_t number_of_triangles = 0;
+
+  Gltf_scene()
+  {
+    std::vector<Float3> box_points, sphere_points;
+    std::vector<Tri> box_tris, sphere_tris;
+    shape_arrays(test_shapes::make_box(Point(0, 0, 0), Point(1, 0.5, 0.25), 2), box_points, box_tris);
+    shape_arrays(test_shapes::make_sphere(Point(0, 0, 0), 0.5, 2), sphere_points, sphere_tris);
+    const std::vector<Float3> loose = {{{0.f, 0.f, 2.f}}, {{1.f, 0.f, 2.f}}, {{0.f, 1.f, 2.f}}};
+    const std::size_t box_pos = b.positions(box_points), box_idx = b.indices<std::uint16_t>(box_tris);
+    const std::size_t sphere_pos = b.positions(sphere_points), sphere_idx = b.indices<std::uint32_t>(sphere_tris);
+    const std::size_t loose_pos = b.positions(loose);
+    b.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", box_pos}}}, {"indices", box_idx}}}}});
+    b.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", sphere_pos}}}, {"indices", sphere_idx}, {"mode", 4}},
+                                             {{"attributes", {{"POSITION", loose_pos}}}}}}});
+    // parent: scale 2, half a turn about z, then a shift along x
+    b.j["nodes"].push_back({{"mesh", 0}, {"children", {1}}, {"translation", {3., 0., 0.}},
+                            {"rotation", {0., 0., 1., 0.}}, {"scale", {2., 2., 2.}}});
+    // child: (x, y, z) -> (z, x, y) + (0, 5, 0), column-major
+    b.j["nodes"].push_back({{"mesh", 1}, {"matrix", {0., 1., 0., 0., 0., 0., 1., 0., 1., 0., 0., 0., 0., 5., 0., 1.}}});
+    b.j["scenes"] = {{{"nodes", {0}}}};
+    b.j["scene"] = 0;
+
+    auto parent = [](double x, double y, double z) { return std::array<double, 3>{{3. - 2. * x, -2. * y, 2. * z}}; };
+    auto world = [&](const Float3& p) { return parent(p[2], double(p[0]) + 5., p[1]); };
+    std::vector<std::array<double, 3> > points;
+    std::vector<std::array<std::size_t, 3> > tris;
+    auto add = [&](const std::vector<Float3>& ps, const std::vector<Tri>& ts, bool child) {
+      const std::size_t base = points.size();
+      for(const Float3& p : ps) points.push_back(child ? world(p) : parent(p[0], p[1], p[2]));
+      for(const Tri& t : ts) tris.push_back({{base + t[0], base + t[1], base + t[2]}});
+    };
+    add(box_points, box_tris, false);
+    add(sphere_points, sphere_tris, true);
+    add(loose, {{{0, 1, 2}}}, true);
+    std::ostringstream out;
+    out.precision(17);
+    out << "OFF\n" << points.size() << ' ' << tris.size() << " 0\n";
+    for(const auto& p : points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for(const auto& t : tris) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    off = out.str();
+    number_of_triangles = tris.size();
+  }
+};
+
+// The triangles of a mesh, by their corners, in the order of faces(m).
+std::vector<std::array<Point, 3> > corners_of(const Mesh& m)
+{
+  std::vector<std::array<Point, 3> > out;
+  for(auto f : faces(m))
+  {
+    std::array<Point, 3> c;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) c[k++] = m.point(v);
+    out.push_back(c);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("glTF: nested node transforms, uint16 and uint32 indices, GLB, embedded and side-by-side buffers", "[io][gltf]")
+{
+  Gltf_scene scene;
+  Mesh from_off;
+  const PD::IO::Mesh_file_info off_info = PD::IO::read_triangle_mesh(write_temp("scene.off", scene.off), from_off);
+  REQUIRE(off_info.number_of_input_faces == scene.number_of_triangles);
+
+  write_temp("scene.bin", scene.b.bin);
+  nlohmann::json side = nlohmann::json::parse(scene.b.json_text({{"byteLength", scene.b.bin.size()}, {"uri", "pd_test_scene.bin"}}));
+  for(const std::string& path : {write_temp("scene.glb", scene.b.glb()), write_temp("embedded.gltf", scene.b.embedded()),
+                                 write_temp("side.gltf", side.dump())})
+  {
+    Mesh m;
+    const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, m);
+    // one file face per triangle, and the very mesh of the same triangles written as OFF
+    CHECK(info.number_of_input_faces == scene.number_of_triangles);
+    CHECK(info.face_to_input == off_info.face_to_input);
+    CHECK(corners_of(m) == corners_of(from_off));
+    std::vector<std::size_t> labels(info.face_to_input.begin(), info.face_to_input.end());
+    CHECK(PD::IO::labels_in_file_order(info, labels).size() == scene.number_of_triangles);
+  }
+  // the child's sphere lies at x in [2, 4] after both transforms: the matrix was applied, then the TRS
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(from_off)) box += from_off.point(v).bbox();
+  CHECK(box.xmin() == Approx(-1.));
+  CHECK(box.xmax() == Approx(4.));
+  std::remove("pd_test_scene.bin");
+}
+
+TEST_CASE("glTF: broken and hostile files are refused with UNREADABLE_FILE", "[io][gltf]")
+{
+  Gltf_scene scene;
+  const std::string glb = scene.b.glb();
+  // truncated anywhere: never a crash, always the documented error
+  for(std::size_t n : {std::size_t(0), std::size_t(4), std::size_t(11), std::size_t(20), glb.size() / 3, glb.size() - 200})
+    CHECK(read_error(write_temp("truncated.glb", glb.substr(0, n))) == PD::Input_error::UNREADABLE_FILE);
+
+  auto refused = [&](const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
+    Gltf_builder b = scene.b;
+    edit(b.j);
+    return read_error(write_temp(name, b.glb()));
+  };
+  using J = nlohmann::json;
+  CHECK(refused("view.glb", [](J& j) { j["bufferViews"][0]["byteOffset"] = 1u << 30; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("length.glb", [](J& j) { j["bufferViews"][1]["byteLength"] = 1u << 20; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("count.glb", [](J& j) { j["accessors"][0]["count"] = 1000000; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("offset.glb", [](J& j) { j["accessors"][1]["byteOffset"] = 4000000000u; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("stride.glb", [](J& j) { j["bufferViews"][0]["byteStride"] = 4; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("negative.glb", [](J& j) { j["accessors"][0]["count"] = -3; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("type.glb", [](J& j) { j["accessors"][0]["componentType"] = 5130; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("accessor.glb", [](J& j) { j["meshes"][0]["primitives"][0]["indices"] = 99; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("cycle.glb", [](J& j) { j["nodes"][1]["children"] = {0}; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("self.glb", [](J& j) { j["nodes"][0]["children"] = {0}; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("node.glb", [](J& j) { j["scenes"][0]["nodes"] = {7}; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("draco.glb", [](J& j) { j["extensionsRequired"] = {"KHR_draco_mesh_compression"}; }) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("version.glb", [](J& j) { j["asset"]["version"] = "1.0"; }) == PD::Input_error::UNREADABLE_FILE);
+  // a buffer outside the file's folder is never opened
+  try
+  {
+    Mesh m;
+    PD::IO::read_triangle_mesh(write_temp("escape.gltf", scene.b.json_text({{"byteLength", 4}, {"uri", "../x.bin"}})), m);
+    FAIL("no exception");
+  }
+  catch(const PD::Invalid_input& e)
+  {
+    CHECK(std::string(e.what()).find("is not a file next to the glTF file") != std::string::npos);
+  }
+  for(const char* uri : {"../secret.bin", "/etc/passwd", "file:///etc/passwd", "sub/../../x.bin"})
+    CHECK(read_error(write_temp("escape.gltf", scene.b.json_text({{"byteLength", 4}, {"uri", uri}}))) ==
+          PD::Input_error::UNREADABLE_FILE);
+  CHECK(refused("matrix.glb", [](J& j) { j["nodes"][1]["matrix"] = {1., 2.}; }) == PD::Input_error::UNREADABLE_FILE);
+  // an index past the positions is the reader's out-of-range face
+  std::string bad = glb;
+  const std::size_t at = bad.find("BIN") + 3 + 1 + std::size_t(scene.b.j["bufferViews"][1]["byteOffset"].get<std::size_t>());
+  bad[at] = char(0xff);
+  bad[at + 1] = char(0xff);
+  CHECK(read_error(write_temp("index.glb", bad)) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("json.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [")) == PD::Input_error::UNREADABLE_FILE);
+  CHECK(read_error(write_temp("base64.gltf", "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":3,\"uri\":\"data:,abc\"}]}")) ==
+        PD::Input_error::UNREADABLE_FILE);
+  CHECK(read_error(write_temp("nothing.gltf", "{\"asset\":{\"version\":\"2.0\"}}")) == PD::Input_error::NO_FACES);
 }

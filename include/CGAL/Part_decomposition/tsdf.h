@@ -189,10 +189,13 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
 // CGAL's AABB tree of the triangles, nearest child first, whose initial bound is the distance to
 // the closest triangle of the previous voxel of the row, or to the triangles of the nearest surface
 // voxel, capped at tau. The tree is built before the parallel loop; rows are processed whole by
-// one thread, so the result does not depend on the thread count.
+// one thread, so the result does not depend on the thread count. The tree keeps its own copy of
+// the triangles: `release`, if given, is `&tris`, emptied once the tree is built (a hundred
+// megabytes on a million faces, while the queries run).
 template <typename ConcurrencyTag>
 Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>& tris,
-                                             const Surface_voxels& sv, int r, double tau)
+                                             const Surface_voxels& sv, int r, double tau,
+                                             std::vector<Triangle_points>* release = nullptr)
 {
   const std::size_t R = std::size_t(r);
   const double h = 1. / double(r);
@@ -203,6 +206,7 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
   run_side_by_side<ConcurrencyTag>([&] { tree_holder.reset(new Triangle_soup_aabb_tree(tris)); },
                                    [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest); });
   const Triangle_soup_aabb_tree& tree = *tree_holder;
+  if(release) std::vector<Triangle_points>().swap(*release);
   const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
   const double reach2 = reach * reach;
 
@@ -225,7 +229,8 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
         double bound2 = std::numeric_limits<double>::infinity();
         std::uint32_t bound_triangle = 0;
         auto try_triangle = [&](std::uint32_t t) {
-          const double d = squared_distance_to_triangle(c, tris[t][0], tris[t][1], tris[t][2]);
+          const Triangle_points tri = tree.triangle(t);
+          const double d = squared_distance_to_triangle(c, tri[0], tri[1], tri[2]);
           if(d < bound2 || (d == bound2 && t < bound_triangle))
           {
             bound2 = d;
@@ -311,11 +316,11 @@ Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh&
   out.truncation = parameters.truncation_voxels / double(r);
   out.sign_method = method;
 
-  const std::vector<Triangle_points> tris = normalized_triangles(tm, vpm, out.normalization);
+  std::vector<Triangle_points> tris = normalized_triangles(tm, vpm, out.normalization);
   const bool closed = faces_form_closed_surface(tm);
   const Surface_voxels sv = surface_voxels<ConcurrencyTag>(tris, r);
   const std::vector<std::uint8_t> inside = inside_flags<ConcurrencyTag>(tris, closed, method, sv, r);
-  out.values = clipped_unsigned_distance<ConcurrencyTag>(tris, sv, r, out.truncation);
+  out.values = clipped_unsigned_distance<ConcurrencyTag>(tris, sv, r, out.truncation, &tris);
   for(std::size_t i = 0; i < out.values.size(); ++i)
     if(inside[i]) out.values[i] = -out.values[i];
   return out;

@@ -41,6 +41,8 @@ bool starts_with(const std::uint8_t* data, std::size_t size, const char* prefix)
 // every seed keep reaching their parser.
 std::string extension_of(const std::uint8_t* data, std::size_t size)
 {
+  if(starts_with(data, size, "glTF")) return ".glb";
+  if(starts_with(data, size, "{")) return ".gltf";
   if(starts_with(data, size, "ply")) return ".ply";
   if(starts_with(data, size, "solid")) return ".stl";
   if(starts_with(data, size, "v ") || starts_with(data, size, "o ") || starts_with(data, size, "# obj")) return ".obj";

@@ -9,17 +9,20 @@
 #define CGAL_PART_DECOMPOSITION_IO_READ_MESH_H
 
 #include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
+#include <CGAL/Part_decomposition/internal/read_stl_soup.h>
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -34,59 +37,11 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// The largest single allocation, in bytes, of the containers the file parser fills on this thread.
-inline std::size_t& read_allocation_limit()
-{
-  thread_local std::size_t limit = std::size_t(-1);
-  return limit;
-}
-
-// Sets the limit for the lifetime of the object.
-class Read_allocation_limit
-{
-public:
-  explicit Read_allocation_limit(std::size_t bytes) : m_previous(read_allocation_limit())
-  {
-    read_allocation_limit() = bytes;
-  }
-  ~Read_allocation_limit() { read_allocation_limit() = m_previous; }
-  Read_allocation_limit(const Read_allocation_limit&) = delete;
-  Read_allocation_limit& operator=(const Read_allocation_limit&) = delete;
-
-private:
-  std::size_t m_previous;
-};
-
-// std::allocator that throws std::bad_alloc beyond read_allocation_limit().
-template <typename T>
-struct Bounded_allocator
-{
-  typedef T value_type;
-  Bounded_allocator() = default;
-  template <typename U>
-  Bounded_allocator(const Bounded_allocator<U>&) {}
-  T* allocate(std::size_t n)
-  {
-    if(n > read_allocation_limit() / sizeof(T)) throw std::bad_alloc();
-    return std::allocator<T>().allocate(n);
-  }
-  void deallocate(T* p, std::size_t n) { std::allocator<T>().deallocate(p, n); }
-  template <typename U>
-  bool operator==(const Bounded_allocator<U>&) const { return true; }
-  template <typename U>
-  bool operator!=(const Bounded_allocator<U>&) const { return false; }
-};
-
-} // namespace internal
-/// \endcond
 
 namespace IO {
 
@@ -129,58 +84,110 @@ typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
 // The polygon soup of a file, as read, and the triangles made from it.
 struct File_soup
 {
-  std::vector<Read_point> file_points;
-  std::vector<std::vector<std::size_t> > polygons;
+  Polygon_soup_arrays file;
   // the file points with equal coordinates merged; merged[i] is the point of file point i
   std::vector<std::array<double, 3> > points;
   std::vector<std::size_t> merged;
   // the triangles with three distinct points, the file face of each, the faces that gave none
-  std::vector<std::vector<std::size_t> > triangles;
+  std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<std::size_t> triangle_to_input;
   std::vector<std::size_t> dropped;
 };
 
-inline std::size_t size_of_file(const std::string& filename)
+// The bytes of a file, read at once: parsing in memory is several times faster than a stream.
+struct File_contents
 {
-  std::ifstream probe(filename, std::ios::binary | std::ios::ate);
-  if(!probe)
+  std::unique_ptr<char[]> data;
+  std::size_t size = 0;
+  const char* begin() const { return data.get(); }
+  const char* end() const { return data.get() + size; }
+};
+
+// Throws UNREADABLE_FILE if the file cannot be opened; false if it cannot be read.
+inline bool read_file_contents(const std::string& filename, File_contents& contents)
+{
+  std::ifstream in(filename, std::ios::binary | std::ios::ate);
+  if(!in)
     throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
-  const std::streamoff end = probe.tellg();
-  return end > 0 ? std::size_t(end) : 0;
+  const std::streamoff end = in.tellg();
+  if(end < 0) return false;
+  contents.size = std::size_t(end);
+  contents.data.reset(new char[contents.size + 1]);
+  in.seekg(0, std::ios::beg);
+  return contents.size == 0 || bool(in.read(contents.data.get(), std::streamsize(contents.size)));
 }
 
-// Parses the file into `soup.file_points` and `soup.polygons`; false if it cannot be parsed.
-inline bool parse_polygon_soup(const std::string& filename, File_soup& soup)
+// The OBJ parser of CGAL, whose output is copied into the flat arrays.
+inline bool read_obj_soup(const std::string& filename, Polygon_soup_arrays& soup)
 {
-  const std::size_t file_size = size_of_file(filename);
+  std::vector<Read_point, Bounded_allocator<Read_point> > points;
+  std::vector<std::vector<std::size_t, Bounded_allocator<std::size_t> >,
+              Bounded_allocator<std::vector<std::size_t, Bounded_allocator<std::size_t> > > > polygons;
+  if(!CGAL::IO::read_OBJ(filename, points, polygons, CGAL::parameters::verbose(false))) return false;
+  for(const Read_point& p : points) soup.add_point(p.x(), p.y(), p.z());
+  for(const auto& polygon : polygons)
+  {
+    for(std::size_t id : polygon) soup.add_vertex_index(id);
+    soup.end_polygon();
+  }
+  return true;
+}
+
+// glTF (.gltf, .glb): a broken file throws UNREADABLE_FILE with the reason.
+inline void read_gltf_soup(const std::string& filename, const File_contents& contents, Polygon_soup_arrays& soup)
+{
+#ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+  const std::size_t slash = filename.find_last_of('/');
+  try
+  {
+    Gltf_soup_reader(contents.begin(), contents.end(), slash == std::string::npos ? std::string() : filename.substr(0, slash + 1))
+      .read(soup);
+  }
+  catch(const Gltf_error& e)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as glTF: " + e.what());
+  }
+#else
+  CGAL_USE(contents);
+  CGAL_USE(soup);
+  throw Invalid_input(Input_error::UNREADABLE_FILE,
+                      "cannot read '" + filename + "': glTF needs nlohmann/json.hpp (Debian: nlohmann-json3-dev)");
+#endif
+}
+
+// Parses the file into `soup`; false if it cannot be parsed.
+inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays& soup)
+{
+  File_contents contents;
+  if(!read_file_contents(filename, contents)) return false;
   try
   {
     // A header may promise more than the file holds (an OFF count or face degree of 10^9 in a
     // few bytes): no single allocation of the parser may exceed a multiple of the file size.
-    Read_allocation_limit limit(64 * file_size + (std::size_t(1) << 20));
-    std::vector<Read_point, Bounded_allocator<Read_point> > bounded_points;
-    std::vector<std::vector<std::size_t, Bounded_allocator<std::size_t> >,
-                Bounded_allocator<std::vector<std::size_t, Bounded_allocator<std::size_t> > > >
-      bounded_polygons;
+    Read_allocation_limit limit(64 * contents.size + (std::size_t(1) << 20));
     // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
-    // broken files: these two formats are read by our own parsers.
+    // broken files, and its STL reader looks every corner up in a std::map: these formats are
+    // read by our own parsers.
     const std::string extension = CGAL::IO::internal::get_file_extension(filename);
-    std::ifstream in(filename, std::ios::binary);
-    bool ok = false;
-    if(extension == "off")
-      ok = Off_soup_reader(in).read(bounded_points, bounded_polygons);
-    else if(extension == "ply")
-      ok = Ply_soup_reader(in).read(bounded_points, bounded_polygons);
-    else if(extension == "obj")
-      ok = CGAL::IO::read_OBJ(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
-    else if(extension == "stl")
-      ok = CGAL::IO::read_STL(filename, bounded_points, bounded_polygons, CGAL::parameters::verbose(false));
-    // only the four formats: CGAL's reader of every format costs a user seconds of compilation
-    if(!ok) return false;
-    soup.file_points.assign(bounded_points.begin(), bounded_points.end());
-    soup.polygons.reserve(bounded_polygons.size());
-    for(const auto& poly : bounded_polygons) soup.polygons.emplace_back(poly.begin(), poly.end());
-    return true;
+    if(extension == "off") return Off_soup_reader(contents.begin(), contents.end()).read(soup);
+    if(extension == "ply") return Ply_soup_reader(contents.begin(), contents.end()).read(soup);
+    if(extension == "stl") return Stl_soup_reader(contents.begin(), contents.end()).read(soup);
+    if(extension == "gltf" || extension == "glb")
+    {
+      read_gltf_soup(filename, contents, soup);
+      return true;
+    }
+    if(extension == "obj")
+    {
+      contents = File_contents(); // CGAL reads the file again
+      return read_obj_soup(filename, soup);
+    }
+    // only these formats: CGAL's reader of every format costs a user seconds of compilation
+    return false;
+  }
+  catch(const Invalid_input&)
+  {
+    throw;
   }
   catch(const std::exception&)
   {
@@ -188,36 +195,57 @@ inline bool parse_polygon_soup(const std::string& filename, File_soup& soup)
   }
 }
 
-inline void check_polygon_soup(const std::string& filename, const File_soup& soup)
+// `name` is the file name in quotes, or what the soup is.
+inline void check_polygon_soup(const std::string& name, const Polygon_soup_arrays& soup)
 {
-  if(soup.polygons.empty())
-    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face");
-  for(const Read_point& p : soup.file_points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
-                          "'" + filename + "' has a vertex with a non-finite coordinate");
-  for(const std::vector<std::size_t>& poly : soup.polygons)
+  if(soup.number_of_polygons() == 0)
+    throw Invalid_input(Input_error::NO_FACES, name + " has no face");
+  for(const std::array<double, 3>& p : soup.points)
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw Invalid_input(Input_error::NON_FINITE_COORDINATES, name + " has a vertex with a non-finite coordinate");
+  const std::size_t n = soup.number_of_points();
+  for(std::size_t f = 0; f < soup.number_of_polygons(); ++f)
   {
-    if(poly.size() < 3)
-      throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with fewer than 3 vertices");
-    for(std::size_t id : poly)
-      if(id >= soup.file_points.size())
-        throw Invalid_input(Input_error::INVALID_FACE,
-                            "'" + filename + "' has a face with an out-of-range vertex index");
+    if(soup.polygon_size(f) < 3)
+      throw Invalid_input(Input_error::INVALID_FACE, name + " has a face with fewer than 3 vertices");
+    for(const std::size_t* id = soup.polygon_begin(f); id != soup.polygon_end(f); ++id)
+      if(*id >= n)
+        throw Invalid_input(Input_error::INVALID_FACE, name + " has a face with an out-of-range vertex index");
   }
 }
 
-// Merges points with equal coordinates (STL stores each triangle's corners separately).
+// Merges points with equal coordinates (STL stores each triangle's corners separately); the
+// merged points keep the order of their first occurrence. A sort, not a std::map: no allocation
+// per point.
 inline void merge_equal_points(File_soup& soup)
 {
-  soup.merged.resize(soup.file_points.size());
-  std::map<std::array<double, 3>, std::size_t> index;
-  for(std::size_t i = 0; i < soup.file_points.size(); ++i)
+  const auto& p = soup.file.points;
+  const std::size_t n = p.size();
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = i;
+  // equal points in a row, the first occurrence first (-0 and 0 are equal, as for std::map)
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    for(int k = 0; k < 3; ++k)
+    {
+      if(p[a][k] < p[b][k]) return true;
+      if(p[b][k] < p[a][k]) return false;
+    }
+    return a < b;
+  });
+  std::vector<std::size_t> first(n);
+  for(std::size_t i = 0; i < n; ++i)
+    first[order[i]] = (i > 0 && p[order[i]] == p[order[i - 1]]) ? first[order[i - 1]] : order[i];
+  soup.merged.resize(n);
+  soup.points.clear();
+  for(std::size_t i = 0; i < n; ++i)
   {
-    const std::array<double, 3> c = {{soup.file_points[i].x(), soup.file_points[i].y(), soup.file_points[i].z()}};
-    auto res = index.emplace(c, soup.points.size());
-    if(res.second) soup.points.push_back(c);
-    soup.merged[i] = res.first->second;
+    if(first[i] != i)
+    {
+      soup.merged[i] = soup.merged[first[i]];
+      continue;
+    }
+    soup.merged[i] = soup.points.size();
+    soup.points.push_back(p[i]);
   }
 }
 
@@ -228,11 +256,29 @@ inline std::size_t triangulate_polygons(File_soup& soup)
   std::size_t triangulated = 0;
   auto xyz = [&](std::size_t i) { return soup.points[i]; };
   std::vector<std::array<std::size_t, 3> > tris;
-  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+  std::vector<std::size_t> poly;
+  const std::size_t nf = soup.file.number_of_polygons();
+  soup.triangles.reserve(nf);
+  soup.triangle_to_input.reserve(nf);
+  for(std::size_t f = 0; f < nf; ++f)
   {
-    std::vector<std::size_t> poly;
-    for(std::size_t id : soup.polygons[f])
-      if(poly.empty() || poly.back() != soup.merged[id]) poly.push_back(soup.merged[id]);
+    const std::size_t* first = soup.file.polygon_begin(f);
+    const std::size_t* last = soup.file.polygon_end(f);
+    if(last - first == 3)
+    {
+      // the common case; a triangle with a repeated point gives none
+      const std::array<std::size_t, 3> t = {{soup.merged[first[0]], soup.merged[first[1]], soup.merged[first[2]]}};
+      if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) soup.dropped.push_back(f);
+      else
+      {
+        soup.triangles.push_back(t);
+        soup.triangle_to_input.push_back(f);
+      }
+      continue;
+    }
+    poly.clear();
+    for(const std::size_t* id = first; id != last; ++id)
+      if(poly.empty() || poly.back() != soup.merged[*id]) poly.push_back(soup.merged[*id]);
     while(poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
     tris.clear();
     if(poly.size() >= 3)
@@ -244,7 +290,7 @@ inline std::size_t triangulate_polygons(File_soup& soup)
     for(const std::array<std::size_t, 3>& t : tris)
     {
       if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
-      soup.triangles.push_back({t[0], t[1], t[2]});
+      soup.triangles.push_back(t);
       soup.triangle_to_input.push_back(f);
       any = true;
     }
@@ -257,20 +303,21 @@ inline std::size_t triangulate_polygons(File_soup& soup)
 // order; points no triangle uses are not added. Returns the face of each triangle (null if refused).
 template <typename TriangleMesh, typename Point>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-add_triangles(const std::vector<Point>& soup_points, const std::vector<std::vector<std::size_t> >& triangles,
+add_triangles(const std::vector<Point>& soup_points, const std::vector<std::array<std::size_t, 3> >& triangles,
               TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<typename GT::vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
-  for(const std::vector<std::size_t>& t : triangles)
+  auto vpm = get(CGAL::vertex_point, tm);
+  for(const std::array<std::size_t, 3>& t : triangles)
     for(std::size_t id : t)
       if(vmap[id] == GT::null_vertex())
       {
         vmap[id] = add_vertex(tm);
-        put(get(CGAL::vertex_point, tm), vmap[id], soup_points[id]);
+        put(vpm, vmap[id], soup_points[id]);
       }
   std::vector<typename GT::face_descriptor> triangle_face(triangles.size(), GT::null_face());
-  std::vector<typename GT::vertex_descriptor> corners(3);
+  std::array<typename GT::vertex_descriptor, 3> corners;
   for(std::size_t t = 0; t < triangles.size(); ++t)
   {
     for(int k = 0; k < 3; ++k) corners[k] = vmap[triangles[t][k]];
@@ -285,7 +332,7 @@ void drop_faces_of_refused_triangles(
   const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& triangle_face, File_soup& soup)
 {
   const auto null_face = boost::graph_traits<TriangleMesh>::null_face();
-  std::vector<char> input_has_face(soup.polygons.size(), 0);
+  std::vector<char> input_has_face(soup.file.number_of_polygons(), 0);
   for(std::size_t t = 0; t < triangle_face.size(); ++t)
     if(triangle_face[t] != null_face) input_has_face[soup.triangle_to_input[t]] = 1;
   for(std::size_t t = 0; t < triangle_face.size(); ++t)
@@ -296,26 +343,95 @@ void drop_faces_of_refused_triangles(
     }
 }
 
+// The edge-connected components of the triangles of `tm`, numbered in the order of faces(tm)
+// (a union-find over the face indices: CGAL's connected_components() is several times slower on
+// a million faces). Returns their number.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::size_t face_components(const TriangleMesh& tm, const FaceIndexMap& index, std::vector<std::size_t>& component)
+{
+  const std::size_t n = component.size();
+  std::vector<std::size_t> parent(n);
+  for(std::size_t i = 0; i < n; ++i) parent[i] = i;
+  auto root = [&](std::size_t i) {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for(auto f : faces(tm))
+  {
+    auto h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      const auto g = face(opposite(h, tm), tm);
+      if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
+      const std::size_t a = root(get(index, f)), b = root(get(index, g));
+      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  }
+  std::size_t count = 0;
+  std::vector<std::size_t> id_of_root(n, std::size_t(-1));
+  for(auto f : faces(tm))
+  {
+    const std::size_t r = root(get(index, f));
+    if(id_of_root[r] == std::size_t(-1)) id_of_root[r] = count++;
+    component[get(index, f)] = id_of_root[r];
+  }
+  return count;
+}
+
+// The components of the triangles of an oriented manifold soup (what orient_polygon_soup()
+// returns, or a soup that needed no orientation), each triangle added as a face: triangles that
+// share a point share an edge, since the triangles around each point form one fan. A union-find
+// over the points, whose array is smaller and read in a more local order than the faces of the
+// mesh. `fcc` is indexed by the index of the face of each triangle.
+template <typename FaceIndexMap, typename FaceDescriptor>
+std::size_t soup_components(const std::vector<std::array<std::size_t, 3> >& triangles, std::size_t number_of_points,
+                            const std::vector<FaceDescriptor>& triangle_face, const FaceIndexMap& findex,
+                            std::vector<std::size_t>& fcc)
+{
+  std::vector<std::size_t> parent(number_of_points);
+  for(std::size_t i = 0; i < number_of_points; ++i) parent[i] = i;
+  auto root = [&](std::size_t i) {
+    while(parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for(const std::array<std::size_t, 3>& t : triangles)
+    for(int k = 1; k < 3; ++k)
+    {
+      const std::size_t a = root(t[0]), b = root(t[k]);
+      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::size_t count = 0;
+  std::vector<std::size_t> id_of_root(number_of_points, std::size_t(-1));
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const std::size_t r = root(triangles[t][0]);
+    if(id_of_root[r] == std::size_t(-1)) id_of_root[r] = count++;
+    fcc[get(findex, triangle_face[t])] = id_of_root[r];
+  }
+  return count;
+}
+
 // Orients every closed connected component outward (positive enclosed volume); returns how many
 // were reversed. Closedness is per component here, so not CGAL::is_closed().
-template <typename TriangleMesh>
-std::size_t orient_closed_components_outward(TriangleMesh& tm)
+// `fcc` and `ncc`: the component of each face (by its index in `findex`) and their number.
+template <typename TriangleMesh, typename FaceIndexMap>
+std::size_t orient_closed_components_outward(TriangleMesh& tm, const FaceIndexMap& findex,
+                                             const std::vector<std::size_t>& fcc, std::size_t ncc)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
-  auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
-  const std::size_t ncc = CGAL::Polygon_mesh_processing::connected_components(tm, fcc);
   std::vector<double> volume(ncc, 0.);
   std::vector<char> closed(ncc, 1);
+  const auto vpm = get(CGAL::vertex_point, tm);
   for(face_descriptor f : faces(tm))
   {
-    const std::size_t c = get(fcc, f);
+    const std::size_t c = fcc[get(findex, f)];
     std::array<std::array<double, 3>, 3> p;
-    int k = 0;
-    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+    auto h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
     {
-      const Point& q = get(get(CGAL::vertex_point, tm), target(h, tm));
-      p[k++] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+      const Point& q = get(vpm, target(h, tm));
+      p[k] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
       if(is_border(opposite(h, tm), tm)) closed[c] = 0;
     }
     volume[c] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1])
@@ -324,7 +440,7 @@ std::size_t orient_closed_components_outward(TriangleMesh& tm)
   }
   std::vector<face_descriptor> to_reverse;
   for(face_descriptor f : faces(tm))
-    if(closed[get(fcc, f)] && volume[get(fcc, f)] < 0.) to_reverse.push_back(f);
+    if(closed[fcc[get(findex, f)]] && volume[fcc[get(findex, f)]] < 0.) to_reverse.push_back(f);
   std::size_t reversed = 0;
   for(std::size_t c = 0; c < ncc; ++c)
     if(closed[c] && volume[c] < 0.) ++reversed;
@@ -340,16 +456,18 @@ std::size_t donor_of_dropped_face(std::size_t f, const File_soup& soup, const st
                                   const std::vector<std::size_t>& triangle_of_point,
                                   const std::vector<std::size_t>& position_of_triangle)
 {
-  for(std::size_t id : soup.polygons[f])
+  const std::size_t* first = soup.file.polygon_begin(f);
+  const std::size_t* last = soup.file.polygon_end(f);
+  for(const std::size_t* id = first; id != last; ++id)
   {
-    const std::size_t t = triangle_of_point[soup.merged[id]];
+    const std::size_t t = triangle_of_point[soup.merged[*id]];
     if(t != std::size_t(-1) && position_of_triangle[t] != std::size_t(-1)) return position_of_triangle[t];
   }
   // isolated degenerate face: the mesh face with the nearest centroid
   std::size_t donor = std::size_t(-1);
   std::array<double, 3> c = {{0., 0., 0.}};
-  for(std::size_t id : soup.polygons[f])
-    for(int a = 0; a < 3; ++a) c[a] += soup.points[soup.merged[id]][a] / double(soup.polygons[f].size());
+  for(const std::size_t* id = first; id != last; ++id)
+    for(int a = 0; a < 3; ++a) c[a] += soup.points[soup.merged[*id]][a] / double(last - first);
   double best = std::numeric_limits<double>::infinity();
   for(std::size_t t = 0; t < soup.triangles.size(); ++t)
   {
@@ -390,57 +508,33 @@ void record_face_correspondence(
     info.dropped_faces.emplace_back(f, donor_of_dropped_face(f, soup, soup_points, triangle_of_point, position_of_triangle));
 }
 
-} // namespace internal
-/// \endcond
+// An index of a polygon given by the user: a negative one is no vertex.
+template <typename Integer>
+std::size_t soup_index(Integer id)
+{
+  if constexpr(std::is_signed<Integer>::value)
+    if(id < 0) return invalid_vertex_index;
+  return std::size_t(id);
+}
 
-namespace IO {
-
-/*!
-\ingroup PkgPartDecompositionIO
-reads the file `filename` (OFF, OBJ, PLY, STL; chosen by extension) into the triangle mesh `tm`,
-whatever the file holds: polygons are triangulated, vertices with equal coordinates are merged,
-the soup is oriented consistently (vertices are duplicated where the surface is non-manifold or
-not orientable), and every closed connected component is oriented outward. Open, non-manifold,
-self-intersecting meshes and meshes made of many pieces are all accepted. Faces with fewer than
-three distinct vertices are left out of `tm` and reported in the returned information.
-
-\tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
-
-\param filename the file
-\param tm an empty mesh that receives the triangles
-
-\returns the correspondence between the faces of `tm` and those of the file.
-
-\par Complexity
-\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices), plus the ear clipping of
-the polygons, quadratic in the number of vertices of each polygon, and the orientation of the soup
-by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the triangles
-already form a consistently oriented manifold (checked in \f$O(n \log n)\f$).
-
-\throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
-(`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
-(`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`).
-*/
+// Builds `tm` from the parsed soup: the common part of every reader. `name` is the file name in
+// quotes, or what the soup is, for the messages.
 template <typename TriangleMesh>
-Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name, TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type VPM;
   typedef typename boost::property_traits<VPM>::value_type Point;
 
-  Mesh_file_info info;
-  internal::File_soup soup;
-  if(!internal::parse_polygon_soup(filename, soup))
-    throw Invalid_input(Input_error::UNREADABLE_FILE,
-                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY or STL mesh");
-  info.number_of_input_faces = soup.polygons.size();
-  info.number_of_input_vertices = soup.file_points.size();
-  internal::check_polygon_soup(filename, soup);
-  internal::merge_equal_points(soup);
-  info.number_of_merged_vertices = soup.file_points.size() - soup.points.size();
-  info.number_of_triangulated_faces = internal::triangulate_polygons(soup);
+  IO::Mesh_file_info info;
+  info.number_of_input_faces = soup.file.number_of_polygons();
+  info.number_of_input_vertices = soup.file.number_of_points();
+  check_polygon_soup(name, soup.file);
+  merge_equal_points(soup);
+  info.number_of_merged_vertices = soup.file.number_of_points() - soup.points.size();
+  info.number_of_triangulated_faces = triangulate_polygons(soup);
   if(soup.triangles.empty())
-    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' has no face with three distinct vertices");
+    throw Invalid_input(Input_error::NO_FACES, name + " has no face with three distinct vertices");
 
   // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
   std::vector<std::size_t> triangle_of_point(soup.points.size(), std::size_t(-1));
@@ -451,17 +545,121 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
   std::vector<Point> soup_points;
   soup_points.reserve(soup.points.size());
   for(const std::array<double, 3>& c : soup.points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  if(!internal::is_oriented_manifold_soup(soup.triangles, soup_points.size()))
+  if(!is_oriented_manifold_soup(soup.triangles, soup_points.size()))
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
   info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
-  const std::vector<typename GT::face_descriptor> triangle_face = internal::add_triangles(soup_points, soup.triangles, tm);
-  internal::drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
+  reserve(tm, typename boost::graph_traits<TriangleMesh>::vertices_size_type(soup_points.size()),
+          typename boost::graph_traits<TriangleMesh>::edges_size_type(3 * soup.triangles.size() / 2 + 3),
+          typename boost::graph_traits<TriangleMesh>::faces_size_type(soup.triangles.size()));
+  const std::vector<typename GT::face_descriptor> triangle_face = add_triangles(soup_points, soup.triangles, tm);
+  drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
-    throw Invalid_input(Input_error::NO_FACES, "'" + filename + "' gives no valid triangle");
-  info.number_of_reversed_components = internal::orient_closed_components_outward(tm);
-  internal::record_face_correspondence(tm, soup, soup_points, triangle_of_point, triangle_face, info);
+    throw Invalid_input(Input_error::NO_FACES, name + " gives no valid triangle");
+  const auto findex = CGAL::get_initialized_face_index_map(tm);
+  std::vector<std::size_t> fcc(num_faces(tm));
+  // a refused triangle may join two components through its points: then the mesh decides
+  const std::size_t ncc =
+    std::find(triangle_face.begin(), triangle_face.end(), GT::null_face()) == triangle_face.end()
+      ? soup_components(soup.triangles, soup_points.size(), triangle_face, findex, fcc)
+      : face_components(tm, findex, fcc);
+  info.number_of_reversed_components = orient_closed_components_outward(tm, findex, fcc, ncc);
+  record_face_correspondence(tm, soup, soup_points, triangle_of_point, triangle_face, info);
   return info;
+}
+
+} // namespace internal
+/// \endcond
+
+namespace IO {
+
+/*!
+\ingroup PkgPartDecompositionIO
+reads the file `filename` (OFF, OBJ, PLY, STL, glTF 2.0 as `.gltf` or `.glb`; chosen by extension)
+into the triangle mesh `tm`,
+whatever the file holds: polygons are triangulated, vertices with equal coordinates are merged,
+the soup is oriented consistently (vertices are duplicated where the surface is non-manifold or
+not orientable), and every closed connected component is oriented outward. Open, non-manifold,
+self-intersecting meshes and meshes made of many pieces are all accepted. Faces with fewer than
+three distinct vertices are left out of `tm` and reported in the returned information.
+
+The file is read into memory at once and parsed in place (OFF, PLY and STL by the package's own
+parsers, OBJ by \cgal's). An STL file stores the corners of each triangle apart: its vertices are
+the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts them and
+`Mesh_file_info::number_of_merged_vertices` is 0.
+
+\tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
+
+\param filename the file
+\param tm an empty mesh that receives the triangles
+
+\returns the correspondence between the faces of `tm` and those of the file.
+
+\par Complexity
+\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices, a sort), plus the ear
+clipping of the polygons, quadratic in the number of vertices of each polygon, and the orientation
+of the soup by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the
+triangles already form a consistently oriented manifold (checked in linear time).
+
+\throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
+(`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
+(`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`).
+*/
+template <typename TriangleMesh>
+Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+{
+  internal::File_soup soup;
+  if(!internal::parse_polygon_soup(filename, soup.file))
+    throw Invalid_input(Input_error::UNREADABLE_FILE,
+                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY, STL or glTF mesh");
+  Mesh_file_info info = internal::build_triangle_mesh(soup, "'" + filename + "'", tm);
+  if(CGAL::IO::internal::get_file_extension(filename) == "stl")
+  {
+    // the distinct corners are the file's vertices
+    info.number_of_input_vertices -= info.number_of_merged_vertices;
+    info.number_of_merged_vertices = 0;
+  }
+  return info;
+}
+
+/*!
+\ingroup PkgPartDecompositionIO
+builds the triangle mesh `tm` from a polygon soup exactly as `read_triangle_mesh()` builds it from
+the points and faces of a file (triangulation, merging of equal points, orientation, faces with
+fewer than three distinct vertices left out), so that one label per polygon is obtained with
+`labels_in_file_order()`, polygon `i` being the `i`-th face of the "file".
+
+\tparam PointRange a model of `RandomAccessRange` whose value type `p` gives its coordinates as
+`p[0]`, `p[1]`, `p[2]` (convertible to `double`), e.g.\ `std::array<double, 3>`
+\tparam PolygonRange a model of `RandomAccessRange` whose value type is a range of integer vertex
+indices, e.g.\ `std::vector<std::array<std::size_t, 3> >`
+\tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
+
+\param points the points
+\param polygons the polygons, each as indices into `points`
+\param tm an empty mesh that receives the triangles
+
+\returns the correspondence between the faces of `tm` and the polygons.
+
+\throws Invalid_input if there is no polygon (`NO_FACES`), a polygon with fewer than three
+vertices or an index out of `[0, points.size())` (`INVALID_FACE`), a non-finite coordinate
+(`NON_FINITE_COORDINATES`), or no polygon with three distinct points (`NO_FACES`).
+*/
+template <typename PointRange, typename PolygonRange, typename TriangleMesh>
+Mesh_file_info triangle_mesh_from_polygon_soup(const PointRange& points, const PolygonRange& polygons,
+                                               TriangleMesh& tm)
+{
+  internal::File_soup soup;
+  soup.file.points.reserve(points.size());
+  for(const auto& p : points) soup.file.add_point(double(p[0]), double(p[1]), double(p[2]));
+  soup.file.polygon_start.reserve(polygons.size() + 1);
+  for(const auto& polygon : polygons)
+  {
+    for(const auto& id : polygon)
+      soup.file.add_vertex_index(internal::soup_index(id));
+    soup.file.end_polygon();
+  }
+  return internal::build_triangle_mesh(soup, "the polygon soup", tm);
 }
 
 /*!

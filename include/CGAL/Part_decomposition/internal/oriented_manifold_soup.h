@@ -25,27 +25,20 @@ and most files skip CGAL's general orienter, the largest cost of reading a big m
 
 - No directed edge occurs twice. This is edge-manifoldness and consistent orientation at once
   (three triangles on one edge give two of them the same direction).
+  A directed edge v -> b is the first end of the link edge b -> c of triangle (v, b, c), so the
+  check is done vertex by vertex on the links, with no global sort.
 - The link of every vertex is connected. Without repeated directed edges, each link vertex has at
   most one outgoing and one incoming link edge, so the link is disjoint paths and cycles: walking it
   from its start covers every link edge exactly when it is one path or one cycle.
 
-O(T log T) for T triangles (one sort of the directed edges), linear memory.
+O(T) for T triangles (a vertex with more than 64 incident triangles fails early), linear memory.
 */
 template <typename TriangleRange>
 bool is_oriented_manifold_soup(const TriangleRange& triangles, std::size_t number_of_points)
 {
-  const std::size_t T = triangles.size();
-  std::vector<std::pair<std::size_t, std::size_t> > directed;
-  directed.reserve(3 * T);
   std::vector<std::uint32_t> degree(number_of_points + 1, 0);
   for(const auto& t : triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      directed.emplace_back(t[k], t[(k + 1) % 3]);
-      ++degree[t[k]];
-    }
-  std::sort(directed.begin(), directed.end());
-  if(std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
+    for(int k = 0; k < 3; ++k) ++degree[t[k]];
 
   // Link edges of each vertex, b -> c for a triangle (v, b, c), in compressed rows.
   std::vector<std::size_t> offset(number_of_points + 1, 0);
@@ -62,6 +55,10 @@ bool is_oriented_manifold_soup(const TriangleRange& triangles, std::size_t numbe
     if(n < 2) continue;
     if(n > 64) return false; // a large fan: left to the general orienter (quadratic walk)
     const std::pair<std::size_t, std::size_t>* e = link.data() + first;
+    // a repeated directed edge from v
+    for(std::size_t i = 1; i < n; ++i)
+      for(std::size_t j = 0; j < i; ++j)
+        if(e[i].first == e[j].first) return false;
     // start at an edge whose source ends no other edge (a path's start), else anywhere (a cycle)
     std::size_t start = 0;
     for(std::size_t i = 0; i < n; ++i)

@@ -25,6 +25,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <utility>
 #include <vector>
@@ -33,22 +34,73 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
+// A hash of sorted coordinates that equal coordinates share (-0 and 0 included).
+inline std::uint64_t hash_of_points(const double* x, std::size_t n)
+{
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double v = x[i] == 0. ? 0. : x[i];
+    std::uint64_t u;
+    std::memcpy(&u, &v, 8);
+    h ^= u + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h = (h ^ (h >> 31)) * 0xbf58476d1ce4e5b9ull;
+  }
+  return h;
+}
+
+// Faces with the same three corners are twins (`adj.twin`: the first of them). Faces are grouped
+// by a hash of their sorted corners and compared exactly within a group: sorting the corners of a
+// million faces costs seconds and a hundred bytes per face.
+template <typename Corners>
+void find_twin_faces(const Corners& corners, Face_adjacency& adj)
+{
+  typedef std::array<std::array<double, 3>, 3> C;
+  const std::size_t nf = adj.number_of_faces;
+  auto sorted_corners = [&](std::size_t i) {
+    C c = corners(i);
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t> > hashed(nf);
+  for(std::size_t i = 0; i < nf; ++i) hashed[i] = std::make_pair(hash_of_points(sorted_corners(i)[0].data(), 9), i);
+  std::sort(hashed.begin(), hashed.end());
+  adj.twin.assign(nf, Face_adjacency::no_face);
+  std::vector<std::pair<C, std::size_t> > group;
+  for(std::size_t s = 0; s < nf;)
+  {
+    std::size_t e = s + 1;
+    while(e < nf && hashed[e].first == hashed[s].first) ++e;
+    if(e - s > 1)
+    {
+      group.clear();
+      for(std::size_t t = s; t < e; ++t) group.emplace_back(sorted_corners(hashed[t].second), hashed[t].second);
+      std::sort(group.begin(), group.end());
+      for(std::size_t t = 1; t < group.size(); ++t)
+        if(group[t].first == group[t - 1].first)
+          adj.twin[group[t].second] = adj.twin[group[t - 1].second] != Face_adjacency::no_face
+                                        ? adj.twin[group[t - 1].second] : group[t - 1].second;
+    }
+    s = e;
+  }
+}
+
 // Gives the border slots of `adj` whose edges have the same two end points as other edges (edges
 // the reader split because they are non-manifold or join faces of opposite orientations) a
 // neighbour: each such slot is linked to the face of the next slot of its edge in slot order,
 // cyclically, so that the faces of one edge are connected. The dihedral angle of a linked slot is
 // taken from the two normals; the slots of an edge of three faces or more are marked in
-// `adj.junction`. Faces with the same three corners are twins (`adj.twin`: the first of them).
+// `adj.junction`. Faces with the same three corners are twins (`find_twin_faces()`).
+// Only the edges of border slots are sorted (none on a closed mesh), then every slot on one of
+// them (a fin on a plate glues a border edge to an interior one).
 template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
                                   Face_adjacency& adj)
 {
   typedef std::array<double, 3> P;
-  std::vector<std::pair<std::array<P, 2>, std::size_t> > edges; // (end points, slot)
-  std::vector<std::pair<std::array<P, 3>, std::size_t> > corners; // (corners, face)
+  typedef std::array<P, 2> Edge;
   const auto face_of = faces_by_index(tm, fim);
-  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
-  {
+  auto corners = [&](std::size_t i) {
     auto h = halfedge(face_of[i], tm);
     std::array<P, 3> c;
     for(int k = 0; k < 3; ++k, h = next(h, tm))
@@ -56,14 +108,26 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
       const auto& p = get(vpm, source(h, tm));
       c[k] = P{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
     }
+    return c;
+  };
+  auto edge = [](const std::array<P, 3>& c, int k) {
+    Edge e = {{c[k], c[(k + 1) % 3]}};
+    if(e[1] < e[0]) std::swap(e[0], e[1]);
+    return e;
+  };
+  std::vector<Edge> border;
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
     for(int k = 0; k < 3; ++k)
-    {
-      std::array<P, 2> e = {{c[k], c[(k + 1) % 3]}};
-      if(e[1] < e[0]) std::swap(e[0], e[1]);
-      edges.emplace_back(e, 3 * i + std::size_t(k));
-    }
-    std::sort(c.begin(), c.end());
-    corners.emplace_back(c, i);
+      if(adj.neighbor[3 * i + std::size_t(k)] == Face_adjacency::no_face) border.push_back(edge(corners(i), k));
+  std::sort(border.begin(), border.end());
+  border.erase(std::unique(border.begin(), border.end()), border.end());
+
+  std::vector<std::pair<Edge, std::size_t> > edges; // (end points, slot), on a border edge
+  for(std::size_t i = 0; i < adj.number_of_faces && !border.empty(); ++i)
+  {
+    const std::array<P, 3> c = corners(i);
+    for(int k = 0; k < 3; ++k)
+      if(std::binary_search(border.begin(), border.end(), edge(c, k))) edges.emplace_back(edge(c, k), 3 * i + std::size_t(k));
   }
   std::sort(edges.begin(), edges.end());
   adj.junction.assign(adj.neighbor.size(), 0);
@@ -82,12 +146,7 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
     }
     s = e;
   }
-  std::sort(corners.begin(), corners.end());
-  adj.twin.assign(adj.number_of_faces, Face_adjacency::no_face);
-  for(std::size_t t = 1; t < corners.size(); ++t)
-    if(corners[t].first == corners[t - 1].first)
-      adj.twin[corners[t].second] = adj.twin[corners[t - 1].second] != Face_adjacency::no_face
-                                      ? adj.twin[corners[t - 1].second] : corners[t - 1].second;
+  find_twin_faces(corners, adj);
 }
 
 // The face graph of the pieces: the graph of `face_adjacency_of()` with coincident border edges

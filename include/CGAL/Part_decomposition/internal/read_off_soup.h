@@ -8,14 +8,15 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
 
+#include <CGAL/Part_decomposition/internal/polygon_soup.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <istream>
 #include <limits>
-#include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -25,7 +26,7 @@ namespace internal {
 
 // A whole token of a mesh file as a double, whatever the locale; overflow gives an infinity (a
 // non-finite coordinate error downstream) and underflow a zero.
-inline bool to_double(const std::string& s, double& d)
+inline bool to_double(std::string_view s, double& d)
 {
   const char* first = s.data();
   const char* last = first + s.size();
@@ -37,7 +38,7 @@ inline bool to_double(const std::string& s, double& d)
   {
     const std::size_t e = s.find_first_of("eE");
     const bool negative = s[0] == '-';
-    if(e != std::string::npos && e + 1 < s.size() && s[e + 1] == '-') d = negative ? -0. : 0.;
+    if(e != std::string_view::npos && e + 1 < s.size() && s[e + 1] == '-') d = negative ? -0. : 0.;
     else d = negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
   }
   else if(r.ec != std::errc())
@@ -48,22 +49,29 @@ inline bool to_double(const std::string& s, double& d)
 // Whether `d` is an integer that a std::size_t holds exactly.
 inline bool is_count(double d) { return d >= 0. && d < 9007199254740992. && std::floor(d) == d; }
 
-// A vertex index that is an integer but no vertex (negative, or too large): the caller of the
-// readers reports it as an out-of-range index.
-constexpr std::size_t invalid_vertex_index = std::size_t(-1);
-
 // The index `id` read from a file with `nv` vertices, or invalid_vertex_index.
 inline std::size_t vertex_index(double id, std::size_t nv)
 {
   return (is_count(id) && id < double(nv)) ? std::size_t(id) : invalid_vertex_index;
 }
 
+// A token of plain decimal digits (the common case of a count or an index), parsed without going
+// through a double; false for anything else, which the caller then parses with to_double().
+inline bool to_unsigned(std::string_view s, std::uint64_t& u)
+{
+  const char* last = s.data() + s.size();
+  const std::from_chars_result r = std::from_chars(s.data(), last, u);
+  return r.ec == std::errc() && r.ptr == last && u < (std::uint64_t(1) << 53);
+}
+
 /*
 A reader of OFF files (the Geomview variants [ST][C][N][4][n]OFF, ASCII, and binary without
-colours or texture coordinates) that keeps only the vertex coordinates and the vertex indices
-of the faces. It exists because CGAL 5.5's File_scanner_OFF turns hostile files into undefined
-behaviour: it casts any parsed double to an index or a face degree, looks colour indices up in
-a fixed table and reads texture entries past the end of a line, all unchecked.
+colours or texture coordinates) from a memory buffer, that keeps only the vertex coordinates and
+the vertex indices of the faces. It exists because CGAL 5.5's File_scanner_OFF turns hostile
+files into undefined behaviour: it casts any parsed double to an index or a face degree, looks
+colour indices up in a fixed table and reads texture entries past the end of a line, all
+unchecked; and because reading the whole file at once and parsing it in place is several times
+faster than a stream.
 
 Nothing is allocated from a count of the header: vertices and faces are appended as they are
 read, so a lying header costs no memory. Tokens are parsed independently of the locale.
@@ -71,12 +79,11 @@ read, so a lying header costs no memory. Tokens are parsed independently of the 
 class Off_soup_reader
 {
 public:
-  explicit Off_soup_reader(std::istream& in) : m_in(in) {}
+  Off_soup_reader(const char* begin, const char* end) : m_pos(begin), m_end(end) {}
 
-  // Appends the points (as {x, y, z}) and the faces of the file to `points` and `polygons`.
-  // Returns false if the file is not OFF, is truncated or holds a token that is not a number.
-  template <typename PointRange, typename PolygonRange>
-  bool read(PointRange& points, PolygonRange& polygons)
+  // Appends the points and the faces of the file to `soup`. Returns false if the file is not
+  // OFF, is truncated or holds a token that is not a number.
+  bool read(Polygon_soup_arrays& soup)
   {
     if(!next_line()) return false;
     std::size_t t = 0;
@@ -88,7 +95,7 @@ public:
       {
         // the binary part starts right after the header line
         if(t + 1 != m_tokens.size()) return false;
-        return read_binary(points, polygons);
+        return read_binary(soup);
       }
     }
     if(m_dimension_follows && !take_count(t, m_dimension)) return false;
@@ -104,30 +111,17 @@ public:
       double c[4] = {0., 0., 0., 1.};
       for(std::size_t k = 0; k < coordinates; ++k)
         if(!to_double(m_tokens[k], c[k])) return false;
-      push_point(points, c);
+      soup.add_point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
     }
     for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(!next_line()) return false;
-      double degree = 0.;
-      // trailing tokens are the face colour
-      if(!to_double(m_tokens[0], degree) || !is_count(degree) || degree >= double(m_tokens.size())) return false;
-      typename PolygonRange::value_type polygon;
-      for(std::size_t k = 1; k <= std::size_t(degree); ++k)
-      {
-        double id = 0.;
-        if(!to_double(m_tokens[k], id) || std::floor(id) != id) return false;
-        polygon.push_back(vertex_index(id, nv));
-      }
-      polygons.push_back(std::move(polygon));
-    }
+      if(!next_line() || !read_face(soup, nv)) return false;
     return true;
   }
 
 private:
-  std::istream& m_in;
-  std::string m_line;
-  std::vector<std::string> m_tokens;
+  const char* m_pos;
+  const char* m_end;
+  std::vector<std::string_view> m_tokens;
   bool m_homogeneous = false, m_dimension_follows = false, m_normals = false, m_colors = false, m_texture = false;
   std::size_t m_dimension = 3;
 
@@ -139,33 +133,62 @@ private:
   // The tokens of the next line that has any, comments (from '#') removed.
   bool next_line()
   {
-    while(std::getline(m_in, m_line))
+    while(m_pos != m_end)
     {
-      const std::size_t hash = m_line.find('#');
-      if(hash != std::string::npos) m_line.resize(hash);
+      const char* eol = static_cast<const char*>(std::memchr(m_pos, '\n', std::size_t(m_end - m_pos)));
+      const char* line_end = eol ? eol : m_end;
+      const char* hash = static_cast<const char*>(std::memchr(m_pos, '#', std::size_t(line_end - m_pos)));
+      const char* last = hash ? hash : line_end;
       m_tokens.clear();
-      for(std::size_t i = 0; i < m_line.size();)
+      for(const char* p = m_pos; p != last;)
       {
-        while(i < m_line.size() && is_space(m_line[i])) ++i;
-        const std::size_t start = i;
-        while(i < m_line.size() && !is_space(m_line[i])) ++i;
-        if(i > start) m_tokens.emplace_back(m_line, start, i - start);
+        while(p != last && is_space(*p)) ++p;
+        const char* start = p;
+        while(p != last && !is_space(*p)) ++p;
+        if(p != start) m_tokens.emplace_back(start, std::size_t(p - start));
       }
+      m_pos = eol ? eol + 1 : m_end;
       if(!m_tokens.empty()) return true;
     }
     return false;
   }
 
+  // One face line: the degree, the indices, then ignored tokens (the face colour).
+  bool read_face(Polygon_soup_arrays& soup, std::size_t nv)
+  {
+    std::uint64_t degree = 0;
+    if(!to_unsigned(m_tokens[0], degree))
+    {
+      double d = 0.;
+      if(!to_double(m_tokens[0], d) || !is_count(d)) return false;
+      degree = std::uint64_t(d);
+    }
+    if(degree >= m_tokens.size()) return false;
+    for(std::size_t k = 1; k <= std::size_t(degree); ++k)
+    {
+      std::uint64_t u = 0;
+      if(to_unsigned(m_tokens[k], u))
+      {
+        soup.add_vertex_index(u < nv ? std::size_t(u) : invalid_vertex_index);
+        continue;
+      }
+      double id = 0.;
+      if(!to_double(m_tokens[k], id) || std::floor(id) != id) return false;
+      soup.add_vertex_index(vertex_index(id, nv));
+    }
+    soup.end_polygon();
+    return true;
+  }
+
   // [ST][C][N][4][n]OFF
-  bool read_keyword(const std::string& k)
+  bool read_keyword(std::string_view k)
   {
     const std::size_t n = k.size();
-    if(n < 3 || k.compare(n - 3, 3, "OFF") != 0) return false;
+    if(n < 3 || k.substr(n - 3) != "OFF") return false;
     std::size_t i = 0;
-    auto take = [&](const char* p) {
-      const std::size_t l = std::strlen(p);
-      if(i + l > n - 3 || k.compare(i, l, p) != 0) return false;
-      i += l;
+    auto take = [&](std::string_view p) {
+      if(i + p.size() > n - 3 || k.substr(i, p.size()) != p) return false;
+      i += p.size();
       return true;
     };
     m_texture = take("ST");
@@ -176,7 +199,7 @@ private:
     return i == n - 3;
   }
 
-  static bool is_number(const std::string& s)
+  static bool is_number(std::string_view s)
   {
     double d;
     return to_double(s, d);
@@ -196,20 +219,14 @@ private:
     return true;
   }
 
-  template <typename PointRange>
-  static void push_point(PointRange& points, const double c[4])
-  {
-    typedef typename PointRange::value_type Point;
-    points.push_back(Point(c[0] / c[3], c[1] / c[3], c[2] / c[3]));
-  }
-
   // Binary OFF: big-endian 32-bit integers and floats after the header line.
   bool read_int(std::int32_t& v)
   {
-    unsigned char b[4];
-    if(!m_in.read(reinterpret_cast<char*>(b), 4)) return false;
+    if(m_end - m_pos < 4) return false;
+    const unsigned char* b = reinterpret_cast<const unsigned char*>(m_pos);
     const std::uint32_t u = (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
     std::memcpy(&v, &u, 4);
+    m_pos += 4;
     return true;
   }
 
@@ -223,8 +240,7 @@ private:
     return true;
   }
 
-  template <typename PointRange, typename PolygonRange>
-  bool read_binary(PointRange& points, PolygonRange& polygons)
+  bool read_binary(Polygon_soup_arrays& soup)
   {
     // colours and texture coordinates have no agreed binary layout
     if(m_colors || m_texture || m_dimension_follows) return false;
@@ -239,20 +255,19 @@ private:
       double ignored;
       for(int k = 0; m_normals && k < coordinates; ++k)
         if(!read_float(ignored)) return false;
-      push_point(points, c);
+      soup.add_point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
     }
     for(std::int32_t i = 0; i < nf; ++i)
     {
       std::int32_t degree = 0, colors = 0;
       if(!read_int(degree) || degree < 0) return false;
-      typename PolygonRange::value_type polygon;
       for(std::int32_t k = 0; k < degree; ++k)
       {
         std::int32_t id = 0;
         if(!read_int(id)) return false;
-        polygon.push_back(vertex_index(double(id), std::size_t(nv)));
+        soup.add_vertex_index(vertex_index(double(id), std::size_t(nv)));
       }
-      polygons.push_back(std::move(polygon));
+      soup.end_polygon();
       if(!read_int(colors) || colors < 0 || colors > 4) return false;
       for(std::int32_t k = 0; k < colors; ++k)
       {

@@ -155,17 +155,21 @@ public:
         for(int a = 0; a < 3; ++a) code = (code << 1) | ((q[a] >> b) & 1u);
       key[i] = std::make_pair(code, std::uint32_t(i));
     }
+    std::vector<Vec3>().swap(centroid); // freed before the tree's nodes are allocated
     std::sort(key.begin(), key.end());
 
     auto point = [](const Vec3& p) { return Aabb_kernel::Point_3(p[0], p[1], p[2]); };
     m_triangles.reserve(n);
     m_soup_index.reserve(n);
+    m_position.resize(n);
     for(const auto& k : key)
     {
       const Triangle_points& t = soup[k.second];
+      m_position[k.second] = std::uint32_t(m_triangles.size());
       m_triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
       m_soup_index.push_back(k.second);
     }
+    std::vector<std::pair<std::uint64_t, std::uint32_t> >().swap(key);
     m_tree.insert(m_triangles.begin(), m_triangles.end());
     m_tree.build();
   }
@@ -186,9 +190,19 @@ public:
 
   const Aabb_triangle_tree& tree() const { return m_tree; }
 
+  /// the corners of the triangle of soup index `t`, as in the soup: the soup itself can be freed.
+  Triangle_points triangle(std::uint32_t t) const
+  {
+    const Aabb_kernel::Triangle_3& tri = m_triangles[m_position[t]];
+    Triangle_points out;
+    for(int k = 0; k < 3; ++k) out[k] = {{tri[k].x(), tri[k].y(), tri[k].z()}};
+    return out;
+  }
+
 private:
   std::vector<Aabb_kernel::Triangle_3> m_triangles;
   std::vector<std::uint32_t> m_soup_index;
+  std::vector<std::uint32_t> m_position; // soup index -> index in m_triangles
   Aabb_triangle_tree m_tree;
 };
 

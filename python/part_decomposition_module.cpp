@@ -1,0 +1,462 @@
+// The Python module part_decomposition: decompose() on numpy arrays and decompose_file() on a mesh
+// file, with every named parameter of CGAL::Part_decomposition::decompose() as a keyword.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/decompose.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Part_decomposition::Superquadric<K> Superquadric;
+namespace PD = CGAL::Part_decomposition;
+namespace PDP = CGAL::Part_decomposition::parameters;
+
+// The keywords, at the library's defaults (PD::defaults).
+struct Parameters
+{
+  std::vector<int> voxel_resolutions = PD::defaults::voxel_resolutions();
+  unsigned int number_of_points_per_face = PD::defaults::number_of_points_per_face;
+  unsigned int number_of_neighbors = PD::defaults::number_of_neighbors;
+  double curvature_percentile = PD::defaults::curvature_percentile;
+  std::array<double, 4> cue_weights = PD::defaults::cue_weights;
+  double freeze_ratio = PD::defaults::freeze_ratio;
+  bool use_density = PD::defaults::use_density;
+  double normalization_margin = PD::defaults::normalization_margin;
+  double tsdf_truncation = PD::defaults::tsdf_truncation;
+  PD::Tsdf_sign_method tsdf_sign_method = PD::defaults::tsdf_sign_method;
+  double flow_zone_tolerance = PD::defaults::flow_zone_tolerance;
+  std::vector<double> trust_region_scales = PD::defaults::trust_region_scales();
+  double body_seed_threshold = PD::defaults::body_seed_threshold;
+  double minimum_body_volume = PD::defaults::minimum_body_volume;
+  double minimum_surface_volume = PD::defaults::minimum_surface_volume;
+  double exterior_penalty = PD::defaults::exterior_penalty;
+  double coverage_target = PD::defaults::coverage_target;
+  double roi_radius = PD::defaults::roi_radius;
+  PD::Interior_weight_mode interior_weight_mode = PD::defaults::interior_weight_mode;
+  std::size_t maximum_number_of_primitives = PD::defaults::maximum_number_of_primitives;
+  bool use_freeze_zone = PD::defaults::use_freeze_zone;
+  bool use_tsdf_guidance = PD::defaults::use_tsdf_guidance;
+  bool use_body_seeds = PD::defaults::use_body_seeds;
+  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
+  bool use_exterior_band_samples = PD::defaults::use_exterior_band_samples;
+  bool use_reachable_regions = PD::defaults::use_reachable_regions;
+  bool use_seed_exclusion = PD::defaults::use_seed_exclusion;
+  int maximum_solver_evaluations = PD::defaults::maximum_solver_evaluations;
+  std::size_t maximum_rejections_in_a_row = PD::defaults::maximum_rejections_in_a_row;
+  double dihedral_percentile = PD::defaults::dihedral_percentile;
+  unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
+  double minimum_patch_size = PD::defaults::minimum_patch_size;
+  double patch_split_size = PD::defaults::patch_split_size;
+  double vote_temperature = PD::defaults::vote_temperature;
+  bool merge_thin_sheets = PD::defaults::merge_thin_sheets;
+  bool use_pieces = PD::defaults::use_pieces;
+  double crease_angle = PD::defaults::crease_angle;
+  double minimum_part_area = PD::defaults::minimum_part_area;
+  std::optional<std::size_t> number_of_parts; // none: the default granularity
+  bool keep_residual_patches = PD::defaults::keep_residual_patches;
+  double residual_tolerance = PD::defaults::residual_tolerance;
+  // not named parameters of decompose()
+  int threads = 0; // 0: all cores
+  bool verbose = false;
+};
+
+// Enumerations as strings: the enumerator in lower case, or the short name of hitops.
+const std::map<std::string, PD::Tsdf_sign_method> sign_methods = {
+  {"automatic", PD::Tsdf_sign_method::AUTOMATIC},     {"auto", PD::Tsdf_sign_method::AUTOMATIC},
+  {"inside_test", PD::Tsdf_sign_method::INSIDE_TEST}, {"inside", PD::Tsdf_sign_method::INSIDE_TEST},
+  {"winding_number", PD::Tsdf_sign_method::WINDING_NUMBER}, {"winding", PD::Tsdf_sign_method::WINDING_NUMBER},
+  {"flood_fill", PD::Tsdf_sign_method::FLOOD_FILL},   {"flood", PD::Tsdf_sign_method::FLOOD_FILL}};
+const std::map<std::string, PD::Interior_weight_mode> weight_modes = {
+  {"one_shot", PD::Interior_weight_mode::ONE_SHOT}, {"one-shot", PD::Interior_weight_mode::ONE_SHOT},
+  {"mps_reestimated", PD::Interior_weight_mode::MPS_REESTIMATED}, {"mps", PD::Interior_weight_mode::MPS_REESTIMATED}};
+
+// The enumerator's own name: the longest of its names, with '_' rather than '-'.
+template <typename T>
+std::string name_of(const std::map<std::string, T>& names, T value)
+{
+  std::string best;
+  for(const auto& n : names)
+    if(n.second == value && (n.first.size() > best.size() || (n.first.size() == best.size() && n.first.find('_') != std::string::npos)))
+      best = n.first;
+  return best;
+}
+
+// A Python value of the type of the field; a TypeError that names the keyword otherwise.
+template <typename T>
+T cast(const std::string& keyword, py::handle value, const char* expected)
+{
+  try
+  {
+    return value.cast<T>();
+  }
+  catch(const py::cast_error&)
+  {
+    throw py::type_error("keyword '" + keyword + "' expects " + expected + ", got " +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+  }
+}
+
+template <typename T>
+T enumerator(const std::string& keyword, py::handle value, const std::map<std::string, T>& names)
+{
+  const std::string s = cast<std::string>(keyword, value, "a string");
+  const auto it = names.find(s);
+  if(it != names.end()) return it->second;
+  std::string choices;
+  for(const auto& n : names) choices += (choices.empty() ? "'" : ", '") + n.first + "'";
+  throw py::value_error("keyword '" + keyword + "' expects one of " + choices + ", got '" + s + "'");
+}
+
+typedef std::function<void(Parameters&, const std::string&, py::handle)> Setter;
+typedef std::function<py::object(const Parameters&)> Getter;
+struct Keyword
+{
+  Setter set;
+  Getter get;
+};
+
+template <typename T>
+Keyword field(T Parameters::*member, const char* expected)
+{
+  return {[member, expected](Parameters& p, const std::string& k, py::handle v) { p.*member = cast<T>(k, v, expected); },
+          [member](const Parameters& p) { return py::cast(p.*member); }};
+}
+
+// Every keyword, with how it is read and its default (for DEFAULTS and the documentation).
+const std::map<std::string, Keyword>& keywords()
+{
+  static const std::map<std::string, Keyword> table = {
+    {"voxel_resolutions", field(&Parameters::voxel_resolutions, "a sequence of int")},
+    {"number_of_points_per_face", field(&Parameters::number_of_points_per_face, "a non-negative int")},
+    {"number_of_neighbors", field(&Parameters::number_of_neighbors, "a non-negative int")},
+    {"curvature_percentile", field(&Parameters::curvature_percentile, "a float")},
+    {"cue_weights", field(&Parameters::cue_weights, "a sequence of 4 floats")},
+    {"freeze_ratio", field(&Parameters::freeze_ratio, "a float")},
+    {"use_density", field(&Parameters::use_density, "a bool")},
+    {"normalization_margin", field(&Parameters::normalization_margin, "a float")},
+    {"tsdf_truncation", field(&Parameters::tsdf_truncation, "a float")},
+    {"tsdf_sign_method",
+     {[](Parameters& p, const std::string& k, py::handle v) { p.tsdf_sign_method = enumerator(k, v, sign_methods); },
+      [](const Parameters& p) { return py::cast(name_of(sign_methods, p.tsdf_sign_method)); }}},
+    {"flow_zone_tolerance", field(&Parameters::flow_zone_tolerance, "a float")},
+    {"trust_region_scales", field(&Parameters::trust_region_scales, "a sequence of float")},
+    {"body_seed_threshold", field(&Parameters::body_seed_threshold, "a float")},
+    {"minimum_body_volume", field(&Parameters::minimum_body_volume, "a float")},
+    {"minimum_surface_volume", field(&Parameters::minimum_surface_volume, "a float")},
+    {"exterior_penalty", field(&Parameters::exterior_penalty, "a float")},
+    {"coverage_target", field(&Parameters::coverage_target, "a float")},
+    {"roi_radius", field(&Parameters::roi_radius, "a float")},
+    {"interior_weight_mode",
+     {[](Parameters& p, const std::string& k, py::handle v) { p.interior_weight_mode = enumerator(k, v, weight_modes); },
+      [](const Parameters& p) { return py::cast(name_of(weight_modes, p.interior_weight_mode)); }}},
+    {"maximum_number_of_primitives", field(&Parameters::maximum_number_of_primitives, "a non-negative int")},
+    {"use_freeze_zone", field(&Parameters::use_freeze_zone, "a bool")},
+    {"use_tsdf_guidance", field(&Parameters::use_tsdf_guidance, "a bool")},
+    {"use_body_seeds", field(&Parameters::use_body_seeds, "a bool")},
+    {"fitting_resolution_cap", field(&Parameters::fitting_resolution_cap, "an int")},
+    {"use_exterior_band_samples", field(&Parameters::use_exterior_band_samples, "a bool")},
+    {"use_reachable_regions", field(&Parameters::use_reachable_regions, "a bool")},
+    {"use_seed_exclusion", field(&Parameters::use_seed_exclusion, "a bool")},
+    {"maximum_solver_evaluations", field(&Parameters::maximum_solver_evaluations, "an int")},
+    {"maximum_rejections_in_a_row", field(&Parameters::maximum_rejections_in_a_row, "a non-negative int")},
+    {"dihedral_percentile", field(&Parameters::dihedral_percentile, "a float")},
+    {"smoothing_iterations", field(&Parameters::smoothing_iterations, "a non-negative int")},
+    {"minimum_patch_size", field(&Parameters::minimum_patch_size, "a float")},
+    {"patch_split_size", field(&Parameters::patch_split_size, "a float")},
+    {"vote_temperature", field(&Parameters::vote_temperature, "a float")},
+    {"merge_thin_sheets", field(&Parameters::merge_thin_sheets, "a bool")},
+    {"use_pieces", field(&Parameters::use_pieces, "a bool")},
+    {"crease_angle", field(&Parameters::crease_angle, "a float")},
+    {"minimum_part_area", field(&Parameters::minimum_part_area, "a float")},
+    {"number_of_parts", field(&Parameters::number_of_parts, "None or a positive int")},
+    {"keep_residual_patches", field(&Parameters::keep_residual_patches, "a bool")},
+    {"residual_tolerance", field(&Parameters::residual_tolerance, "a float")},
+    {"threads", field(&Parameters::threads, "None or a positive int")},
+    {"verbose", field(&Parameters::verbose, "a bool")}};
+  return table;
+}
+
+Parameters parameters_from(const py::kwargs& kwargs)
+{
+  Parameters p;
+  for(const auto& item : kwargs)
+  {
+    const std::string k = py::str(item.first);
+    const auto it = keywords().find(k);
+    if(it == keywords().end())
+      throw py::type_error("unexpected keyword argument '" + k + "' (part_decomposition.DEFAULTS lists them)");
+    // None keeps the default: the spelling of an absent number_of_parts or threads
+    if(!item.second.is_none()) it->second.set(p, k, item.second);
+  }
+  if(p.number_of_parts && *p.number_of_parts == 0) throw py::value_error("number_of_parts must be at least 1");
+  if(p.threads < 0) throw py::value_error("threads must be at least 1");
+  return p;
+}
+
+py::dict default_parameters()
+{
+  const Parameters p;
+  py::dict d;
+  for(const auto& k : keywords()) d[py::str(k.first)] = k.second.get(p);
+  d["number_of_parts"] = py::none();
+  d["threads"] = py::none();
+  return d;
+}
+
+// One superquadric in the input's coordinates.
+struct Primitive
+{
+  std::array<double, 3> center, scales;
+  std::array<double, 9> rotation; // row by row; column j is the local axis j
+  std::array<double, 2> exponents;
+};
+
+struct Result
+{
+  std::vector<std::size_t> labels; // one per input face
+  std::size_t number_of_parts = 0;
+  std::vector<Primitive> primitives;
+  PD::Stage_timings timings;
+  double read_seconds = 0.;
+};
+
+template <typename NamedParameters>
+std::size_t decompose_with(const Mesh& mesh, std::vector<std::size_t>& part, const Parameters& p,
+                           const NamedParameters& np)
+{
+  if(p.number_of_parts)
+    return PD::decompose(mesh, CGAL::make_property_map(part), PDP::combine(np, PDP::number_of_parts(*p.number_of_parts)));
+  return PD::decompose(mesh, CGAL::make_property_map(part), np);
+}
+
+// decompose() with the parameters; labels per mesh face, in the order of faces(mesh).
+std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
+{
+  std::vector<std::size_t> part(num_faces(mesh), 0);
+  std::vector<Superquadric> primitives;
+  auto np = PDP::combine(
+    CGAL::parameters::number_of_points_per_face(p.number_of_points_per_face).verbose(p.verbose),
+    PDP::voxel_resolutions(p.voxel_resolutions), PDP::number_of_neighbors(p.number_of_neighbors),
+    PDP::curvature_percentile(p.curvature_percentile), PDP::cue_weights(p.cue_weights),
+    PDP::freeze_ratio(p.freeze_ratio), PDP::use_density(p.use_density),
+    PDP::normalization_margin(p.normalization_margin), PDP::tsdf_truncation(p.tsdf_truncation),
+    PDP::tsdf_sign_method(p.tsdf_sign_method), PDP::flow_zone_tolerance(p.flow_zone_tolerance),
+    PDP::trust_region_scales(p.trust_region_scales), PDP::body_seed_threshold(p.body_seed_threshold),
+    PDP::minimum_body_volume(p.minimum_body_volume), PDP::minimum_surface_volume(p.minimum_surface_volume),
+    PDP::exterior_penalty(p.exterior_penalty), PDP::coverage_target(p.coverage_target),
+    PDP::roi_radius(p.roi_radius), PDP::interior_weight_mode(p.interior_weight_mode),
+    PDP::maximum_number_of_primitives(p.maximum_number_of_primitives), PDP::use_freeze_zone(p.use_freeze_zone),
+    PDP::use_tsdf_guidance(p.use_tsdf_guidance), PDP::use_body_seeds(p.use_body_seeds),
+    PDP::fitting_resolution_cap(p.fitting_resolution_cap), PDP::use_exterior_band_samples(p.use_exterior_band_samples),
+    PDP::use_reachable_regions(p.use_reachable_regions), PDP::use_seed_exclusion(p.use_seed_exclusion),
+    PDP::maximum_solver_evaluations(p.maximum_solver_evaluations),
+    PDP::maximum_rejections_in_a_row(p.maximum_rejections_in_a_row), PDP::dihedral_percentile(p.dihedral_percentile),
+    PDP::smoothing_iterations(p.smoothing_iterations), PDP::minimum_patch_size(p.minimum_patch_size),
+    PDP::patch_split_size(p.patch_split_size), PDP::vote_temperature(p.vote_temperature),
+    PDP::merge_thin_sheets(p.merge_thin_sheets), PDP::use_pieces(p.use_pieces), PDP::crease_angle(p.crease_angle),
+    PDP::minimum_part_area(p.minimum_part_area), PDP::keep_residual_patches(p.keep_residual_patches),
+    PDP::residual_tolerance(p.residual_tolerance),
+    PDP::primitive_output_iterator(std::back_inserter(primitives)), PDP::stage_timings(&r.timings));
+#ifdef CGAL_LINKED_WITH_TBB
+  // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
+  tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);
+  arena.execute([&] { r.number_of_parts = decompose_with(mesh, part, p, np); });
+#else
+  r.number_of_parts = decompose_with(mesh, part, p, np);
+#endif
+  for(const Superquadric& q : primitives)
+  {
+    const K::Point_3 c = q.center();
+    r.primitives.push_back(Primitive{{{c.x(), c.y(), c.z()}}, q.scales(), q.rotation(), {{q.epsilon1(), q.epsilon2()}}});
+  }
+  return part;
+}
+
+py::array_t<double> vector_array(const double* data, std::vector<py::ssize_t> shape)
+{
+  py::array_t<double> a(shape);
+  std::copy(data, data + a.size(), a.mutable_data());
+  return a;
+}
+
+py::dict timings_dict(const Result& r)
+{
+  py::dict d;
+  d["read"] = r.read_seconds;
+  d["pieces"] = r.timings.pieces;
+  d["prior"] = r.timings.prior;
+  d["tsdf"] = r.timings.tsdf;
+  d["fitting"] = r.timings.fitting;
+  d["fitting_zones"] = r.timings.fitting_zones;
+  d["over_segmentation"] = r.timings.over_segmentation;
+  d["assignment"] = r.timings.assignment;
+  d["total"] = r.timings.total;
+  d["overlapping"] = r.timings.overlapping;
+  return d;
+}
+
+// (n, 3) finite coordinates, as doubles.
+std::vector<std::array<double, 3> > read_vertices(py::handle object)
+{
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
+  if(!a) throw py::value_error("vertices must be an (n, 3) array of floats");
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    throw py::value_error("vertices must be an (n, 3) array of floats, got shape " + std::string(py::str(a.attr("shape"))));
+  std::vector<std::array<double, 3> > out(std::size_t(a.shape(0)));
+  const double* d = a.data();
+  for(std::size_t i = 0; i < out.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      out[i][k] = d[3 * i + std::size_t(k)];
+      if(!std::isfinite(out[i][k]))
+        throw py::value_error("vertices[" + std::to_string(i) + "] has a non-finite coordinate");
+    }
+  return out;
+}
+
+// (m, 3) integers in [0, n).
+std::vector<std::array<std::int64_t, 3> > read_faces(py::handle object, std::size_t n)
+{
+  const py::array any = py::array::ensure(object);
+  if(!any) throw py::value_error("faces must be an (m, 3) array of integers");
+  const char kind = any.dtype().kind();
+  if(kind != 'i' && kind != 'u')
+    throw py::value_error("faces must be an (m, 3) array of integers, got dtype " + std::string(py::str(any.dtype())));
+  if(any.ndim() != 2 || any.shape(1) != 3)
+    throw py::value_error("faces must be an (m, 3) array of integers, got shape " + std::string(py::str(any.attr("shape"))));
+  // an unsigned index beyond the int64 range is out of range anyway
+  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(any);
+  std::vector<std::array<std::int64_t, 3> > out(std::size_t(a.shape(0)));
+  const std::int64_t* d = a.data();
+  const bool wrapped = kind == 'u' && any.dtype().itemsize() == 8;
+  for(std::size_t i = 0; i < out.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::int64_t id = d[3 * i + std::size_t(k)];
+      out[i][k] = id;
+      if(id < 0 || std::uint64_t(id) >= n)
+        throw py::value_error("faces[" + std::to_string(i) + ", " + std::to_string(k) + "] = " +
+                              (wrapped && id < 0 ? std::to_string(std::uint64_t(id)) : std::to_string(id)) +
+                              " is not a vertex index: vertices has " + std::to_string(n) + " rows");
+    }
+  return out;
+}
+
+Result decompose_arrays(py::handle vertices, py::handle faces, const py::kwargs& kwargs)
+{
+  const Parameters p = parameters_from(kwargs);
+  const std::vector<std::array<double, 3> > points = read_vertices(vertices);
+  const std::vector<std::array<std::int64_t, 3> > triangles = read_faces(faces, points.size());
+  Result r;
+  py::gil_scoped_release release;
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh;
+  // the reader's own construction: welded, oriented, one label per row of `faces`
+  const PD::IO::Mesh_file_info info = PD::IO::triangle_mesh_from_polygon_soup(points, triangles, mesh);
+  r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
+  return r;
+}
+
+Result decompose_path(py::object path_like, const py::kwargs& kwargs)
+{
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
+  const Parameters p = parameters_from(kwargs);
+  Result r;
+  py::gil_scoped_release release;
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, mesh);
+  r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
+  return r;
+}
+
+std::string keyword_documentation()
+{
+  std::string doc;
+  const py::dict d = default_parameters();
+  for(const auto& item : d)
+    doc += "    " + std::string(py::str(item.first)) + "=" + std::string(py::repr(item.second)) + "\n";
+  return doc;
+}
+
+} // namespace
+
+PYBIND11_MODULE(part_decomposition, m)
+{
+  m.doc() = "Hi-TOPS part decomposition of triangle meshes (the CGAL package Part_decomposition).";
+
+  // a ValueError, so that `except ValueError` catches every refused input
+  py::register_exception<PD::Invalid_input>(m, "InvalidInput", PyExc_ValueError);
+
+  py::class_<Primitive>(m, "Primitive", "The superquadric of one part, in the input's coordinates.")
+    .def_property_readonly("center", [](const Primitive& q) { return vector_array(q.center.data(), {3}); },
+                           "(3,) the centre")
+    .def_property_readonly("rotation", [](const Primitive& q) { return vector_array(q.rotation.data(), {3, 3}); },
+                           "(3, 3) the rotation, local to world: column j is the local axis j")
+    .def_property_readonly("scales", [](const Primitive& q) { return vector_array(q.scales.data(), {3}); },
+                           "(3,) the semi-axes along the local axes")
+    .def_property_readonly("exponents", [](const Primitive& q) { return vector_array(q.exponents.data(), {2}); },
+                           "(2,) epsilon1 (along the local z axis) and epsilon2 (in the local xy plane)")
+    .def("__repr__", [](const Primitive& q) {
+      return "Primitive(center=[" + std::to_string(q.center[0]) + ", " + std::to_string(q.center[1]) + ", " +
+             std::to_string(q.center[2]) + "], scales=[" + std::to_string(q.scales[0]) + ", " +
+             std::to_string(q.scales[1]) + ", " + std::to_string(q.scales[2]) + "])";
+    });
+
+  py::class_<Result>(m, "Decomposition", "The parts of a mesh.")
+    .def_property_readonly("labels", [](const Result& r) {
+        py::array_t<std::int64_t> a(py::ssize_t(r.labels.size()));
+        std::copy(r.labels.begin(), r.labels.end(), a.mutable_data());
+        return a;
+      }, "(m,) int64: the part of each input face, in [0, number_of_parts)")
+    .def_readonly("number_of_parts", &Result::number_of_parts, "the number of parts")
+    .def_readonly("primitives", &Result::primitives, "one Primitive per part, part k explained by primitives[k]")
+    .def_property_readonly("timings", &timings_dict,
+                           "wall-clock seconds: read (the mesh from the file or arrays) and each stage of decompose()")
+    .def("__repr__", [](const Result& r) {
+      return "Decomposition(" + std::to_string(r.labels.size()) + " faces, " + std::to_string(r.number_of_parts) + " parts)";
+    });
+
+  // static: pybind11 keeps the pointers
+  static const std::string decompose_doc = std::string("decompose(vertices, faces, **parameters) -> Decomposition\n\n"
+         "Decomposes the triangle mesh given by vertices, an (n, 3) float array, and faces, an (m, 3)\n"
+         "integer array of vertex indices. The mesh is built as the package's reader builds it from a\n"
+         "file (equal vertices welded, the soup oriented, closed pieces outward); labels has one part\n"
+         "per row of faces. Runs with the GIL released, on `threads` threads (default: all cores;\n"
+         "the labels do not depend on it). Raises ValueError (InvalidInput for the library's checks)\n"
+         "for a bad array or a parameter out of its range, TypeError for an unknown keyword.\n\n"
+         "Keywords (the named parameters of CGAL::Part_decomposition::decompose()), with defaults:\n") +
+    keyword_documentation();
+  m.def("decompose", &decompose_arrays, py::arg("vertices"), py::arg("faces"), decompose_doc.c_str());
+  m.def("decompose_file", &decompose_path, py::arg("path"),
+        "decompose_file(path, **parameters) -> Decomposition\n\n"
+         "Reads the mesh file (OFF, OBJ, PLY, STL, glTF .gltf/.glb) with the package's reader and\n"
+         "decomposes it: the labels are in the file's face order, as written by hitops --labels.\n"
+         "Same keywords as decompose().\n");
+  m.attr("DEFAULTS") = default_parameters();
+}
