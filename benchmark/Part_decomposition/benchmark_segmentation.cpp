@@ -16,6 +16,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
 #include <CGAL/version.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
@@ -950,6 +952,23 @@ std::string subdivision_steps(double base_faces, double target)
   return best;
 }
 
+// Seconds to read `m` written to `file` as binary PLY or STL (by extension) with
+// IO::read_triangle_mesh(), the file deleted afterwards; NaN if it cannot be written.
+double binary_read_seconds(const Mesh& m, const fs::path& file)
+{
+  {
+    std::ofstream out(file, std::ios::binary);
+    CGAL::IO::set_binary_mode(out);
+    if(!(file.extension() == ".ply" ? CGAL::IO::write_PLY(out, m) : CGAL::IO::write_STL(out, m))) return NaN;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh back;
+  PD::IO::read_triangle_mesh(file.string(), back);
+  const double seconds = seconds_since(t0);
+  fs::remove(file);
+  return seconds;
+}
+
 int run_scale(const Options& o, int threads)
 {
   const fs::path dir(o.dataset);
@@ -964,7 +983,7 @@ int run_scale(const Options& o, int threads)
   if(!reset_peak_memory()) std::cerr << "warning: cannot reset the peak memory: peak_mb is the process peak\n";
 
   std::ofstream tsv(fs::path(o.out) / "scale.tsv");
-  tsv << "shape\tsteps\tfaces\tvertices\tfile_mb\tt_generate\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign"
+  tsv << "shape\tsteps\tfaces\tvertices\tfile_mb\tt_generate\tt_read\tt_read_ply\tt_read_stl\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign"
          "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tparts\terror\n";
   std::ostringstream table;
   std::vector<std::pair<double, double> > sizes; // (faces, end-to-end seconds)
@@ -992,6 +1011,7 @@ int run_scale(const Options& o, int threads)
     reset_peak_memory();
     Row r;
     std::size_t vertices = 0;
+    double t_read_ply = NaN, t_read_stl = NaN;
     t0 = std::chrono::steady_clock::now();
     try
     {
@@ -1011,13 +1031,17 @@ int run_scale(const Options& o, int threads)
       r.t_overseg = st.over_segmentation;
       r.t_assign = st.assignment;
       r.ok = true;
+      r.peak_mb = status_mb("VmHWM:");
+      // the same mesh as binary files, read only (after the peak memory of the OFF run)
+      t_read_ply = binary_read_seconds(mesh, fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".ply"));
+      t_read_stl = binary_read_seconds(mesh, fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".stl"));
     }
     catch(const std::exception& e) { r.error = e.what(); }
-    r.peak_mb = status_mb("VmHWM:");
+    if(std::isnan(r.peak_mb)) r.peak_mb = status_mb("VmHWM:");
     fs::remove(file);
 
     tsv << o.scale_shape << '\t' << steps << '\t' << r.faces << '\t' << vertices << '\t' << num(file_mb, 1) << '\t'
-        << num(t_generate) << '\t' << num(r.t_read) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t'
+        << num(t_generate) << '\t' << num(r.t_read) << '\t' << num(t_read_ply) << '\t' << num(t_read_stl) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t'
         << num(r.t_fitting) << '\t' << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_method) << '\t'
         << num(r.end_to_end()) << '\t' << num(r.peak_mb, 1) << '\t' << num(rss_before, 1) << '\t' << r.parts << '\t'
         << clean(r.error) << std::endl;
@@ -1030,6 +1054,7 @@ int run_scale(const Options& o, int threads)
       slope = std::log(r.end_to_end() / sizes.back().second) / std::log(double(r.faces) / sizes.back().first);
     sizes.emplace_back(double(r.faces), r.end_to_end());
     table << "| " << steps << " | " << r.faces << " | " << num(file_mb, 0) << " | " << num(r.t_read, 2) << " | "
+          << num(t_read_ply, 2) << " | " << num(t_read_stl, 2) << " | "
           << num(r.t_prior, 2) << " | " << num(r.t_tsdf, 2) << " | " << num(r.t_fitting, 2) << " | "
           << num(r.t_overseg, 2) << " | " << num(r.t_assign, 2) << " | " << num(r.t_method, 2) << " | "
           << num(r.end_to_end(), 2) << " | " << num(1e5 * r.end_to_end() / double(r.faces), 3) << " | "
@@ -1042,13 +1067,14 @@ int run_scale(const Options& o, int threads)
      << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
      << "Each size is made by Loop (L, 1 to 4 faces) and sqrt(3) (S, 1 to 3) subdivision steps of CGAL's "
         "Subdivision_method_3, written as an OFF file, then read with IO::read_triangle_mesh() and decomposed "
-        "with decompose() at the default parameters; the file is deleted afterwards. Seconds are wall-clock; "
+        "with decompose() at the default parameters; the file is deleted afterwards. The same mesh is then "
+        "written as binary PLY and binary STL and read again (read only). Seconds are wall-clock; "
         "end-to-end = read + decompose; peak MB is the process's VmHWM from just before the read to the end "
         "(the mesh, the file buffer and every stage). Growth exponent: log(t2/t1)/log(F2/F1) of the "
         "end-to-end time against the previous size (1 = linear).\n\n"
-     << "| steps | faces | file MB | read s | prior s | TSDF s | fitting s | over-seg. s | assignment s "
-        "| decompose s | end-to-end s | s per 100k faces | growth exponent | peak MB | parts |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+     << "| steps | faces | file MB | read s | read binary PLY s | read binary STL s | prior s | TSDF s | fitting s "
+        "| over-seg. s | assignment s | decompose s | end-to-end s | s per 100k faces | growth exponent | peak MB | parts |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
      << table.str();
   if(sizes.size() >= 2)
     md << "\nFrom " << num(sizes.front().first, 0) << " to " << num(sizes.back().first, 0) << " faces ("
