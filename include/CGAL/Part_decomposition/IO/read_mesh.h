@@ -15,6 +15,7 @@
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/read_stl_soup.h>
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
+#include <CGAL/Part_decomposition/internal/oriented_soup_to_mesh.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
 #include <CGAL/IO/OBJ.h>
@@ -299,12 +300,12 @@ inline std::size_t triangulate_polygons(File_soup& soup)
   return triangulated;
 }
 
-// Adds the triangles to `tm` one by one, so that a face refused by add_face cannot shift the
-// order; points no triangle uses are not added. Returns the face of each triangle (null if refused).
+// Adds the points the triangles use to `tm`, in the order the triangles reach them; returns the
+// vertex of each point (null if unused).
 template <typename TriangleMesh, typename Point>
-std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-add_triangles(const std::vector<Point>& soup_points, const std::vector<std::array<std::size_t, 3> >& triangles,
-              TriangleMesh& tm)
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+add_used_points(const std::vector<Point>& soup_points, const std::vector<std::array<std::size_t, 3> >& triangles,
+                TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<typename GT::vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
@@ -316,6 +317,17 @@ add_triangles(const std::vector<Point>& soup_points, const std::vector<std::arra
         vmap[id] = add_vertex(tm);
         put(vpm, vmap[id], soup_points[id]);
       }
+  return vmap;
+}
+
+// Adds the triangles to `tm` one by one, so that a face refused by add_face cannot shift the
+// order. Returns the face of each triangle (null if refused).
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+add_triangles(const std::vector<std::array<std::size_t, 3> >& triangles,
+              const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap, TriangleMesh& tm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<typename GT::face_descriptor> triangle_face(triangles.size(), GT::null_face());
   std::array<typename GT::vertex_descriptor, 3> corners;
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -545,14 +557,21 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   std::vector<Point> soup_points;
   soup_points.reserve(soup.points.size());
   for(const std::array<double, 3>& c : soup.points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  if(!is_oriented_manifold_soup(soup.triangles, soup_points.size()))
+  bool oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
+  if(!oriented_manifold)
+  {
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
+    oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
+  }
   info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
   reserve(tm, typename boost::graph_traits<TriangleMesh>::vertices_size_type(soup_points.size()),
           typename boost::graph_traits<TriangleMesh>::edges_size_type(3 * soup.triangles.size() / 2 + 3),
           typename boost::graph_traits<TriangleMesh>::faces_size_type(soup.triangles.size()));
-  const std::vector<typename GT::face_descriptor> triangle_face = add_triangles(soup_points, soup.triangles, tm);
+  const auto vmap = add_used_points(soup_points, soup.triangles, tm);
+  // the mesh add_face() would build, without its searches, when the soup is a clean one
+  const std::vector<typename GT::face_descriptor> triangle_face =
+    oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, tm) : add_triangles(soup.triangles, vmap, tm);
   drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
     throw Invalid_input(Input_error::NO_FACES, name + " gives no valid triangle");
