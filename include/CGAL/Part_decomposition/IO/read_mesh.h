@@ -216,26 +216,32 @@ inline void check_polygon_soup(const std::string& name, const Polygon_soup_array
 }
 
 // Merges points with equal coordinates (STL stores each triangle's corners separately); the
-// merged points keep the order of their first occurrence. A sort, not a std::map: no allocation
-// per point.
+// merged points keep the order of their first occurrence. A sort of (coordinates, index) records,
+// not a std::map: no allocation per point, and the comparisons read memory in order.
 inline void merge_equal_points(File_soup& soup)
 {
   const auto& p = soup.file.points;
   const std::size_t n = p.size();
-  std::vector<std::size_t> order(n);
-  for(std::size_t i = 0; i < n; ++i) order[i] = i;
+  struct Record
+  {
+    std::array<double, 3> c;
+    std::size_t i;
+  };
+  std::vector<Record> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = Record{p[i], i};
   // equal points in a row, the first occurrence first (-0 and 0 are equal, as for std::map)
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  std::sort(order.begin(), order.end(), [](const Record& a, const Record& b) {
     for(int k = 0; k < 3; ++k)
     {
-      if(p[a][k] < p[b][k]) return true;
-      if(p[b][k] < p[a][k]) return false;
+      if(a.c[k] < b.c[k]) return true;
+      if(b.c[k] < a.c[k]) return false;
     }
-    return a < b;
+    return a.i < b.i;
   });
   std::vector<std::size_t> first(n);
   for(std::size_t i = 0; i < n; ++i)
-    first[order[i]] = (i > 0 && p[order[i]] == p[order[i - 1]]) ? first[order[i - 1]] : order[i];
+    first[order[i].i] = (i > 0 && order[i].c == order[i - 1].c) ? first[order[i - 1].i] : order[i].i;
+  std::vector<Record>().swap(order);
   soup.merged.resize(n);
   soup.points.clear();
   for(std::size_t i = 0; i < n; ++i)
