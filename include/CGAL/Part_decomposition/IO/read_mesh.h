@@ -15,6 +15,7 @@
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/read_stl_soup.h>
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
+#include <CGAL/Part_decomposition/internal/oriented_soup_to_mesh.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 
 #include <CGAL/IO/OBJ.h>
@@ -215,26 +216,32 @@ inline void check_polygon_soup(const std::string& name, const Polygon_soup_array
 }
 
 // Merges points with equal coordinates (STL stores each triangle's corners separately); the
-// merged points keep the order of their first occurrence. A sort, not a std::map: no allocation
-// per point.
+// merged points keep the order of their first occurrence. A sort of (coordinates, index) records,
+// not a std::map: no allocation per point, and the comparisons read memory in order.
 inline void merge_equal_points(File_soup& soup)
 {
   const auto& p = soup.file.points;
   const std::size_t n = p.size();
-  std::vector<std::size_t> order(n);
-  for(std::size_t i = 0; i < n; ++i) order[i] = i;
+  struct Record
+  {
+    std::array<double, 3> c;
+    std::size_t i;
+  };
+  std::vector<Record> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = Record{p[i], i};
   // equal points in a row, the first occurrence first (-0 and 0 are equal, as for std::map)
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  std::sort(order.begin(), order.end(), [](const Record& a, const Record& b) {
     for(int k = 0; k < 3; ++k)
     {
-      if(p[a][k] < p[b][k]) return true;
-      if(p[b][k] < p[a][k]) return false;
+      if(a.c[k] < b.c[k]) return true;
+      if(b.c[k] < a.c[k]) return false;
     }
-    return a < b;
+    return a.i < b.i;
   });
   std::vector<std::size_t> first(n);
   for(std::size_t i = 0; i < n; ++i)
-    first[order[i]] = (i > 0 && p[order[i]] == p[order[i - 1]]) ? first[order[i - 1]] : order[i];
+    first[order[i].i] = (i > 0 && order[i].c == order[i - 1].c) ? first[order[i - 1].i] : order[i].i;
+  std::vector<Record>().swap(order);
   soup.merged.resize(n);
   soup.points.clear();
   for(std::size_t i = 0; i < n; ++i)
@@ -299,12 +306,12 @@ inline std::size_t triangulate_polygons(File_soup& soup)
   return triangulated;
 }
 
-// Adds the triangles to `tm` one by one, so that a face refused by add_face cannot shift the
-// order; points no triangle uses are not added. Returns the face of each triangle (null if refused).
+// Adds the points the triangles use to `tm`, in the order the triangles reach them; returns the
+// vertex of each point (null if unused).
 template <typename TriangleMesh, typename Point>
-std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-add_triangles(const std::vector<Point>& soup_points, const std::vector<std::array<std::size_t, 3> >& triangles,
-              TriangleMesh& tm)
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+add_used_points(const std::vector<Point>& soup_points, const std::vector<std::array<std::size_t, 3> >& triangles,
+                TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<typename GT::vertex_descriptor> vmap(soup_points.size(), GT::null_vertex());
@@ -316,6 +323,17 @@ add_triangles(const std::vector<Point>& soup_points, const std::vector<std::arra
         vmap[id] = add_vertex(tm);
         put(vpm, vmap[id], soup_points[id]);
       }
+  return vmap;
+}
+
+// Adds the triangles to `tm` one by one, so that a face refused by add_face cannot shift the
+// order. Returns the face of each triangle (null if refused).
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+add_triangles(const std::vector<std::array<std::size_t, 3> >& triangles,
+              const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap, TriangleMesh& tm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
   std::vector<typename GT::face_descriptor> triangle_face(triangles.size(), GT::null_face());
   std::array<typename GT::vertex_descriptor, 3> corners;
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -545,14 +563,21 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   std::vector<Point> soup_points;
   soup_points.reserve(soup.points.size());
   for(const std::array<double, 3>& c : soup.points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  if(!is_oriented_manifold_soup(soup.triangles, soup_points.size()))
+  bool oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
+  if(!oriented_manifold)
+  {
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
+    oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
+  }
   info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
   reserve(tm, typename boost::graph_traits<TriangleMesh>::vertices_size_type(soup_points.size()),
           typename boost::graph_traits<TriangleMesh>::edges_size_type(3 * soup.triangles.size() / 2 + 3),
           typename boost::graph_traits<TriangleMesh>::faces_size_type(soup.triangles.size()));
-  const std::vector<typename GT::face_descriptor> triangle_face = add_triangles(soup_points, soup.triangles, tm);
+  const auto vmap = add_used_points(soup_points, soup.triangles, tm);
+  // the mesh add_face() would build, without its searches, when the soup is a clean one
+  const std::vector<typename GT::face_descriptor> triangle_face =
+    oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, tm) : add_triangles(soup.triangles, vmap, tm);
   drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
     throw Invalid_input(Input_error::NO_FACES, name + " gives no valid triangle");

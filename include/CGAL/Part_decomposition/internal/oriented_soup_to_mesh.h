@@ -1,0 +1,122 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+/*
+Adds the triangles of a consistently oriented manifold soup (`is_oriented_manifold_soup()`) to
+`tm`, whose vertex of point i is `vmap[i]`, and returns the face of each triangle: the very
+halfedge structure that CGAL::Euler::add_face() builds when the triangles are added one by one,
+without its search around a vertex for every edge (half the time of reading a large mesh).
+
+What add_face() leaves, triangle t = (v0, v1, v2) being face t:
+- the edge of {a, b} is created by the first triangle holding a -> b or b -> a, in the order of the
+  triangles and of their edges v0 v1, v1 v2, v2 v0; its first halfedge goes as in that triangle;
+- halfedge(face t) is its halfedge v2 -> v0; the next of an inner halfedge is the following one
+  in its triangle;
+- each border vertex has one incoming and one outgoing border halfedge: the next of the one is
+  the other, and halfedge(v) is the incoming one (add_face() always makes it so);
+- halfedge(v) of an inner vertex is the halfedge into v of the last triangle holding v: before
+  that triangle closed the fan of v, halfedge(v) was the border halfedge it covers, and add_face()
+  keeps it when no border halfedge is left around v.
+*/
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& triangles,
+                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap,
+                                TriangleMesh& tm)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  const std::size_t nc = 3 * triangles.size(), np = vmap.size(), none = std::size_t(-1);
+  auto source = [&](std::size_t c) { return triangles[c / 3][c % 3]; };
+  auto target = [&](std::size_t c) { return triangles[c / 3][(c % 3 + 1) % 3]; };
+
+  // corner c = 3t + k is the directed edge source(c) -> target(c); its reverse, found in the row
+  // of the corners leaving target(c) (compressed rows holding each corner's target, so that a row
+  // is scanned without reading the triangles)
+  std::vector<std::size_t> start(np + 1, 0), row_corner(nc), row_target(nc);
+  for(std::size_t c = 0; c < nc; ++c) ++start[source(c) + 1];
+  for(std::size_t p = 0; p < np; ++p) start[p + 1] += start[p];
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t c = 0; c < nc; ++c)
+    {
+      row_corner[fill[source(c)]] = c;
+      row_target[fill[source(c)]++] = target(c);
+    }
+  }
+  std::vector<std::size_t> reverse(nc, none);
+  for(std::size_t c = 0; c < nc; ++c)
+  {
+    const std::size_t a = source(c), b = target(c);
+    for(std::size_t k = start[b]; k < start[b + 1]; ++k)
+      if(row_target[k] == a) reverse[c] = row_corner[k];
+  }
+  std::vector<std::size_t>().swap(row_corner);
+  std::vector<std::size_t>().swap(row_target);
+  std::vector<std::size_t>().swap(start);
+
+  std::vector<halfedge_descriptor> h(nc);
+  std::vector<typename GT::face_descriptor> face_of(triangles.size());
+  std::vector<std::size_t> last_into(np, none); // the corner into each point of its last triangle
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for(std::size_t c = 3 * t; c < 3 * t + 3; ++c)
+    {
+      const std::size_t r = reverse[c];
+      if(r != none && r < c)
+      {
+        h[c] = opposite(h[r], tm);
+        continue;
+      }
+      h[c] = halfedge(add_edge(tm), tm);
+      set_target(h[c], vmap[target(c)], tm);
+      set_target(opposite(h[c], tm), vmap[source(c)], tm);
+      set_face(opposite(h[c], tm), GT::null_face(), tm);
+    }
+    const auto f = add_face(tm);
+    face_of[t] = f;
+    set_halfedge(f, h[3 * t + 2], tm);
+    for(std::size_t c = 3 * t; c < 3 * t + 3; ++c)
+    {
+      set_face(h[c], f, tm);
+      set_next(h[c], h[c + 1 < 3 * t + 3 ? c + 1 : 3 * t], tm);
+      last_into[target(c)] = c;
+    }
+  }
+  for(std::size_t p = 0; p < np; ++p)
+    if(last_into[p] != none) set_halfedge(vmap[p], h[last_into[p]], tm);
+  // border halfedges: the opposite of a corner without reverse, from target(c) to source(c)
+  std::vector<halfedge_descriptor> border_from(np, GT::null_halfedge());
+  for(std::size_t c = 0; c < nc; ++c)
+    if(reverse[c] == none) border_from[target(c)] = opposite(h[c], tm);
+  for(std::size_t c = 0; c < nc; ++c)
+    if(reverse[c] == none)
+    {
+      set_next(opposite(h[c], tm), border_from[source(c)], tm);
+      set_halfedge(vmap[source(c)], opposite(h[c], tm), tm);
+    }
+  return face_of;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
