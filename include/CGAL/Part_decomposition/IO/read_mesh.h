@@ -28,6 +28,10 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Dynamic_property_map.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -229,15 +233,21 @@ inline void merge_equal_points(File_soup& soup)
   };
   std::vector<Record> order(n);
   for(std::size_t i = 0; i < n; ++i) order[i] = Record{p[i], i};
-  // equal points in a row, the first occurrence first (-0 and 0 are equal, as for std::map)
-  std::sort(order.begin(), order.end(), [](const Record& a, const Record& b) {
+  // equal points in a row, the first occurrence first (-0 and 0 are equal, as for std::map); the
+  // indices make every record distinct, so a parallel sort gives the same order
+  const auto less = [](const Record& a, const Record& b) {
     for(int k = 0; k < 3; ++k)
     {
       if(a.c[k] < b.c[k]) return true;
       if(b.c[k] < a.c[k]) return false;
     }
     return a.i < b.i;
-  });
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_sort(order.begin(), order.end(), less);
+#else
+  std::sort(order.begin(), order.end(), less);
+#endif
   std::vector<std::size_t> first(n);
   for(std::size_t i = 0; i < n; ++i)
     first[order[i].i] = (i > 0 && order[i].c == order[i - 1].c) ? first[order[i - 1].i] : order[i].i;

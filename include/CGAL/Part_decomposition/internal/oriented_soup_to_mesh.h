@@ -8,7 +8,10 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
 
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/tags.h>
 
 #include <array>
 #include <cstddef>
@@ -61,13 +64,17 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
       row_target[fill[source(c)]++] = target(c);
     }
   }
+  // each corner on its own: in parallel when TBB is there (the search misses the cache at
+  // every corner)
   std::vector<std::size_t> reverse(nc, none);
-  for(std::size_t c = 0; c < nc; ++c)
-  {
-    const std::size_t a = source(c), b = target(c);
-    for(std::size_t k = start[b]; k < start[b + 1]; ++k)
-      if(row_target[k] == a) reverse[c] = row_corner[k];
-  }
+  for_each_range<CGAL::Parallel_if_available_tag>(nc, [&](std::size_t first, std::size_t last) {
+    for(std::size_t c = first; c < last; ++c)
+    {
+      const std::size_t a = source(c), b = target(c);
+      for(std::size_t k = start[b]; k < start[b + 1]; ++k)
+        if(row_target[k] == a) reverse[c] = row_corner[k];
+    }
+  }, 4096);
   std::vector<std::size_t>().swap(row_corner);
   std::vector<std::size_t>().swap(row_target);
   std::vector<std::size_t>().swap(start);
