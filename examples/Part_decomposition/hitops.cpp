@@ -324,24 +324,11 @@ private:
   std::vector<std::unique_ptr<std::ofstream> > m_streams;
 };
 
-// A distinct, saturated colour per part (golden-ratio hue steps).
+// The colour of part k, as in --parts-glb (sRGB, 0 to 255).
 std::array<int, 3> part_colour(std::size_t k)
 {
-  const double h = std::fmod(0.13 + 0.618033988749895 * double(k), 1.) * 6.;
-  const double s = (k % 3 == 2) ? 0.55 : 0.8, v = (k % 2) ? 0.8 : 0.95;
-  const int i = int(h);
-  const double f = h - i, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  double r, g, b;
-  switch(i % 6)
-  {
-    case 0: r = v; g = t; b = p; break;
-    case 1: r = q; g = v; b = p; break;
-    case 2: r = p; g = v; b = t; break;
-    case 3: r = p; g = q; b = v; break;
-    case 4: r = t; g = p; b = v; break;
-    default: r = v; g = p; b = q; break;
-  }
-  return {{int(std::lround(255 * r)), int(std::lround(255 * g)), int(std::lround(255 * b))}};
+  const std::array<double, 3> c = PD::internal::part_srgb(k);
+  return {{int(std::lround(255 * c[0])), int(std::lround(255 * c[1])), int(std::lround(255 * c[2]))}};
 }
 
 struct Result

@@ -153,9 +153,11 @@ def test_parameters_reach_the_library(dumbbell):
         r = pd.decompose(vertices, faces, tsdf_sign_method=method, **FAST)
         assert r.labels.shape == (len(faces),)
     pd.decompose(vertices, faces, interior_weight_mode="mps", cue_weights=(1, 1, 0.5, 1), **FAST)
-    # the hierarchy's parameters are passed through
-    r = pd.decompose(vertices, faces, number_of_parts=2, keep_residual_patches=True, residual_tolerance=3.0, **FAST)
-    assert r.labels.shape == (len(faces),)
+    # number_of_parts cuts the part hierarchy at exactly that many parts, each with its primitive
+    for k in (1, 2, 3):
+        r = pd.decompose(vertices, faces, number_of_parts=k, keep_residual_patches=True, residual_tolerance=3.0, **FAST)
+        assert r.labels.shape == (len(faces),)
+        assert r.number_of_parts == k and len(np.unique(r.labels)) == k and len(r.primitives) == k
 
 
 def test_keyword_errors(dumbbell):
