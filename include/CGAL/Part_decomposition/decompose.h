@@ -336,13 +336,15 @@ public:
     if(volumetric && (!m_has_fitting || !m_has_patches))
       throw std::logic_error("Part_decomposer::assign_parts() needs the primitives and the patches");
     check_frame_parameters(np);
+    // new parts: the residual faces and the hierarchy of an earlier call no longer hold
+    m_residual_face.clear();
+    m_has_hierarchy = false;
     if(volumetric)
     {
       check_frame(m_fitting.normalization, "the normalization of the fitting");
       const internal::Assignment_parameters ap = internal::read_assignment_parameters(np);
       m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
         m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, ap, m_parts);
-      m_residual_face.clear();
       if(ap.keep_residual_patches && m_has_prior) keep_residual_patches(ap.residual_tolerance);
       m_has_parts = true;
       if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
@@ -373,6 +375,8 @@ public:
       throw std::logic_error("Part_decomposer::merge_thin_sheets() needs the parts");
     merge_thin_sheet_parts<ConcurrencyTag>();
     make_part_primitives();
+    mark_residual_parts(); // the parts were renumbered
+    m_has_hierarchy = false;
     return m_part_to_primitive.size();
   }
 
