@@ -309,6 +309,7 @@ struct Variant
   double minimum_part_area = PD::defaults::minimum_part_area;
   bool residual = PD::defaults::keep_residual_patches;
   double residual_tolerance = PD::defaults::residual_tolerance;
+  double smoothness = PD::defaults::boundary_smoothness;
 };
 
 // The paper's settings where this implementation departs from it: r_fit = min(r, 32), no
@@ -378,6 +379,12 @@ std::vector<Variant> all_variants()
     r->residual = true;
     r->residual_tolerance = t;
   }
+  // the final labelling: the patch vote (0) and the weight of the boundary cost
+  for(double s : {0., 0.3, 3.})
+    add("smooth_" + std::to_string(int(s * 10)))->smoothness = s;
+  Variant* vote_no_split = add("smooth_0_no_patch_split");
+  vote_no_split->smoothness = 0.;
+  vote_no_split->patch_split = 1.;
   return v;
 }
 
@@ -1320,7 +1327,8 @@ int main(int argc, char** argv)
                                                        PD::parameters::crease_angle(v.crease_angle),
                                                        PD::parameters::minimum_part_area(v.minimum_part_area),
                                                        PD::parameters::keep_residual_patches(v.residual),
-                                                       PD::parameters::residual_tolerance(v.residual_tolerance)));
+                                                       PD::parameters::residual_tolerance(v.residual_tolerance),
+                                                       PD::parameters::boundary_smoothness(v.smoothness)));
           }
           r.t_method = seconds_since(t0);
           r.t_prior = st.prior;

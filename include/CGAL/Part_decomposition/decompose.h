@@ -344,7 +344,7 @@ public:
       check_frame(m_fitting.normalization, "the normalization of the fitting");
       const internal::Assignment_parameters ap = internal::read_assignment_parameters(np);
       m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
-        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, ap, m_parts);
+        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, ap, m_adjacency, m_parts);
       if(ap.keep_residual_patches && m_has_prior) keep_residual_patches(ap.residual_tolerance);
       m_has_parts = true;
       if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)

@@ -65,6 +65,7 @@ namespace Part_decomposition {
   X(minimum_patch_size_t, minimum_patch_size, minimum_patch_size)                    \
   X(patch_split_size_t, patch_split_size, patch_split_size)                          \
   X(vote_temperature_t, vote_temperature, vote_temperature)                          \
+  X(boundary_smoothness_t, boundary_smoothness, boundary_smoothness)                 \
   X(merge_thin_sheets_t, merge_thin_sheets, merge_thin_sheets)                       \
   /* pieces and creases */                                                           \
   X(use_pieces_t, use_pieces, use_pieces)                                            \
@@ -210,6 +211,9 @@ constexpr double minimum_patch_size = 0.001;
 constexpr double patch_split_size = 0.0005;
 /// \f$\tau_v\f$, the temperature of the patch vote, in voxels of the finest grid
 constexpr double vote_temperature = 1.;
+/// the cost of a part boundary per unit of length across smooth surface against the primitives'
+/// vote, in the final labelling of the faces (0: the paper's vote of the patches)
+constexpr double boundary_smoothness = 1.;
 /// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
 constexpr bool merge_thin_sheets = true;
 /// whether the parts follow the pieces of the mesh and their concave creases (`segment_pieces()`)
@@ -285,6 +289,7 @@ package's parameters are:
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
 | `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
+| `boundary_smoothness()` | `double` | 1 | `assign_parts()` |
 | `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
 | `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |

@@ -13,6 +13,7 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/boundary_graph_cut.h>
 #include <CGAL/Part_decomposition/internal/claimed_voxel_search.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
@@ -29,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -66,6 +68,60 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
       face_distance[i] = r.distance;
     }
   }, 1024);
+}
+
+// The candidate primitives of each face index for the final labelling: its nearest claimed voxel
+// (label k0, distance d0) and the other labels claimed within `window` voxels of its centroid at
+// a distance below d0 + `margin`, nearest first; a candidate at distance d costs
+// (face area / h^2) * (d - d0) / tau, so that the cost of a face is an area in voxels.
+template <typename ConcurrencyTag>
+Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel_search& search,
+                                const Voxel_grid<std::int32_t>& claimed, const Normalization& normalization,
+                                double tau, double margin, int window)
+{
+  const std::size_t nf = corners.vertex.size() / 3;
+  const double h = claimed.voxel_size();
+  const int r = claimed.resolution();
+  Face_candidates out;
+  out.resize(nf);
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    std::vector<std::pair<double, std::int32_t> > near; // (distance, label), one per label
+    for(std::size_t i = b; i < e; ++i)
+    {
+      std::array<Eigen::Vector3d, 3> u;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::array<double, 3> q = normalization.to_unit(corners(i, k).x(), corners(i, k).y(), corners(i, k).z());
+        u[std::size_t(k)] = Eigen::Vector3d(q[0], q[1], q[2]);
+      }
+      const Eigen::Vector3d c = (u[0] + u[1] + u[2]) / 3.;
+      const double area = 0.5 * (u[1] - u[0]).cross(u[2] - u[0]).norm() / (h * h);
+      const Claimed_voxel_search::Result nearest = search.nearest({{c.x(), c.y(), c.z()}});
+      near.assign(1, std::make_pair(nearest.distance, nearest.label));
+      const std::array<int, 3> v = claimed.locate(c.x(), c.y(), c.z());
+      for(int z = (std::max)(v[2] - window, 0); z <= (std::min)(v[2] + window, r - 1); ++z)
+        for(int y = (std::max)(v[1] - window, 0); y <= (std::min)(v[1] + window, r - 1); ++y)
+          for(int x = (std::max)(v[0] - window, 0); x <= (std::min)(v[0] + window, r - 1); ++x)
+          {
+            const std::int32_t l = claimed(x, y, z);
+            if(l < 0) continue;
+            const std::array<double, 3> p = claimed.center(x, y, z);
+            const double d = (c - Eigen::Vector3d(p[0], p[1], p[2])).norm();
+            if(d > nearest.distance + margin) continue;
+            auto it = std::find_if(near.begin(), near.end(), [&](const std::pair<double, std::int32_t>& n) { return n.second == l; });
+            if(it == near.end()) near.emplace_back(d, l);
+            else it->first = (std::min)(it->first, d);
+          }
+      std::sort(near.begin() + 1, near.end());
+      const std::size_t n = (std::min)(near.size(), std::size_t(Face_candidates::capacity));
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        out.label[i][k] = near[k].second;
+        out.cost[i][k] = area * (std::max)(0., near[k].first - nearest.distance) / tau;
+      }
+    }
+  }, 256);
+  return out;
 }
 
 // Eq. 9 on flat arrays: patch[i] in [0, number_of_patches) for each face index i; writes the
@@ -121,6 +177,7 @@ struct Assignment_parameters
   double vote_temperature = defaults::vote_temperature;
   bool keep_residual_patches = defaults::keep_residual_patches;
   double residual_tolerance = defaults::residual_tolerance;
+  double boundary_smoothness = defaults::boundary_smoothness;
 };
 
 template <typename NamedParameters>
@@ -135,6 +192,9 @@ Assignment_parameters read_assignment_parameters(const NamedParameters& np)
   p.residual_tolerance = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::residual_tolerance), p.residual_tolerance);
   check_non_negative(p.residual_tolerance, "residual_tolerance");
+  p.boundary_smoothness = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::boundary_smoothness), p.boundary_smoothness);
+  check_non_negative(p.boundary_smoothness, "boundary_smoothness");
   return p;
 }
 
@@ -181,14 +241,39 @@ inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>
   return primitives;
 }
 
+// The window and margin of the candidate primitives of a face, in voxels: a face farther than
+// two voxels from a primitive's claimed voxels than from its nearest one has no say in it.
+constexpr int candidate_window = 2;
+constexpr double candidate_margin = 2.;
+
+// The final labelling of `cut_face_labels()`: the primitive of each face index.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
+                                               const VertexPointMap& vpm, const Face_adjacency& adj,
+                                               const Claimed_voxel_search& search,
+                                               const Voxel_grid<std::int32_t>& claimed_labels,
+                                               const Normalization& normalization, const Assignment_parameters& p)
+{
+  const double h = claimed_labels.voxel_size();
+  const Face_corners corners(tm, fim, vpm);
+  const Face_candidates candidates = face_candidates<ConcurrencyTag>(
+      corners, search, claimed_labels, normalization, p.vote_temperature * h, candidate_margin * h, candidate_window);
+  // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
+  const std::vector<int> outward(adj.number_of_faces, 1);
+  return cut_face_labels<ConcurrencyTag>(adj, corners, candidates, outward,
+                                         p.boundary_smoothness * normalization.scale() / h);
+}
+
 // `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of
-// each face (any ids), `part` receives its part; returns the primitive of each part.
+// each face (any ids), `part` receives its part; returns the primitive of each part. With a
+// positive `boundary_smoothness`, the faces are labelled by `cut_primitive_labels()` on `adj`
+// instead of the patch vote.
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                       const VertexPointMap& vpm, std::vector<std::size_t> patch,
                                                       const Voxel_grid<std::int32_t>& claimed_labels,
                                                       const Normalization& normalization,
-                                                      const Assignment_parameters& p,
+                                                      const Assignment_parameters& p, const Face_adjacency& adj,
                                                       std::vector<std::size_t>& part)
 {
   Claimed_voxel_search search;
@@ -197,6 +282,13 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
   {
     part.assign(patch.size(), 0);
     return std::vector<std::size_t>(1, no_primitive);
+  }
+  if(p.boundary_smoothness > 0.)
+  {
+    const std::vector<std::int32_t> label =
+        cut_primitive_labels<ConcurrencyTag>(tm, fim, vpm, adj, search, claimed_labels, normalization, p);
+    std::iota(patch.begin(), patch.end(), std::size_t(0)); // one patch per face
+    return parts_of_winners(label, patch, part);
   }
   const std::size_t number_of_patches = make_patch_ids_consecutive(patch);
   std::vector<std::int32_t> face_label;
@@ -302,8 +394,11 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
   // the one conversion from the caller's map, and the one to the other
   std::vector<std::size_t> patch(num_faces(tm)), part;
   for(auto f : faces(tm)) patch[std::size_t(get(fim, f))] = std::size_t(get(face_patch_map, f));
+  const internal::Face_adjacency adj = p.boundary_smoothness > 0.
+                                          ? internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np)
+                                          : internal::Face_adjacency();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
-      tm, fim, vpm, std::move(patch), claimed_labels, normalization, p, part);
+      tm, fim, vpm, std::move(patch), claimed_labels, normalization, p, adj, part);
   for(auto f : faces(tm)) put(face_part_map, f, part[std::size_t(get(fim, f))]);
   return primitives;
 }

@@ -1,0 +1,205 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
+
+// The final labelling of the faces: a Potts energy on the face graph, minimized by CGAL's alpha
+// expansion on the contested faces only.
+//
+// Inputs:  adj        the face graph with dihedral angles (F faces)
+//          corners    the corners of each face (edge lengths)
+//          candidates per face, its candidate labels and their data costs (see Face_candidates)
+//          orientation per face, +1 or -1: the side of the surface that is outside
+//          edge_scale the cost of cutting one unit of length across a smooth convex edge is
+//                     edge_scale * cut_penalty(0, convex)
+// Output:  the label of each face, among its candidates, minimizing (approximately)
+//          sum_f cost_f(label_f) + edge_scale * sum_{cut edges e} length_e * cut_penalty(e).
+
+#include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
+#include <CGAL/boost/graph/alpha_expansion_graphcut.h>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Per face, up to `capacity` candidate labels by increasing cost; the first is the cheapest.
+struct Face_candidates
+{
+  static constexpr int capacity = 4;
+  std::vector<std::array<std::int32_t, capacity> > label; // -1 past the last candidate
+  std::vector<std::array<double, capacity> > cost;
+
+  void resize(std::size_t n)
+  {
+    std::array<std::int32_t, capacity> none;
+    none.fill(-1);
+    label.assign(n, none);
+    cost.assign(n, std::array<double, capacity>());
+  }
+  int size(std::size_t i) const
+  {
+    int n = 0;
+    while(n < capacity && label[i][std::size_t(n)] >= 0) ++n;
+    return n;
+  }
+};
+
+// The cost factor of cutting across an edge of dihedral angle `degrees`, in the form of the
+// Surface_mesh_segmentation package: -log of the angle as a fraction of pi, scaled down on a
+// convex edge, so that concave creases are cheap and smooth or convex surface is expensive.
+inline double cut_penalty(double degrees, bool concave)
+{
+  constexpr double convex_factor = 0.08, smallest = 1e-3; // smallest: a flat edge costs -log(1e-3)
+  const double t = (std::min)(1., (std::max)(0., degrees / 180.)) * (concave ? 1. : convex_factor);
+  return -std::log((std::max)(t, smallest));
+}
+
+// The length of the edge of slot (i, k): corners are listed from target(halfedge(f)) on.
+inline double slot_length(const Face_corners& corners, std::size_t i, int k)
+{
+  return (corners(i, k) - corners(i, (k + 2) % 3)).norm();
+}
+
+// The cost of cutting the edge of slot (i, k), edge_scale included.
+inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corners,
+                            const std::vector<int>& orientation, std::size_t i, int k, double edge_scale)
+{
+  const bool concave = !adj.degenerate[i] && crease_sign(adj, i, k) * orientation[i] < 0;
+  return edge_scale * slot_length(corners, i, k) * cut_penalty(adj.angle[3 * i + std::size_t(k)], concave);
+}
+
+// Alpha expansion on one connected set of contested faces; the labels of the faces around it
+// are fixed (`initial`) and enter as data costs. Writes the labels of `faces` into `face_label`.
+inline void cut_contested_component(const Face_adjacency& adj, const Face_corners& corners,
+                                    const Face_candidates& candidates, const std::vector<int>& orientation,
+                                    double edge_scale, const std::vector<std::size_t>& faces,
+                                    const std::vector<std::uint8_t>& contested, const std::vector<std::int32_t>& initial,
+                                    std::vector<std::int32_t>& face_label)
+{
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                boost::property<boost::edge_weight_t, double> > Graph;
+  // local numbering of the faces and of the labels they may take
+  std::vector<std::int32_t> labels;
+  for(std::size_t i : faces)
+    for(int c = 0; c < candidates.size(i); ++c) labels.push_back(candidates.label[i][std::size_t(c)]);
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  auto local_label = [&](std::int32_t l) {
+    return std::size_t(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin());
+  };
+  std::vector<std::size_t> local_face(faces.size());
+  std::vector<std::vector<double> > cost(faces.size(), std::vector<double>(labels.size(), 0.));
+  std::vector<std::size_t> label_of(faces.size());
+  // a label a face cannot take costs more than the whole component could save
+  double forbidden = 1.;
+  for(std::size_t n = 0; n < faces.size(); ++n)
+  {
+    const std::size_t i = faces[n];
+    for(int c = 0; c < candidates.size(i); ++c) forbidden += candidates.cost[i][std::size_t(c)];
+    for(int k = 0; k < 3; ++k)
+      if(adj.neighbor[3 * i + std::size_t(k)] != Face_adjacency::no_face)
+        forbidden += slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+  }
+  Graph graph(faces.size());
+  for(std::size_t n = 0; n < faces.size(); ++n)
+  {
+    const std::size_t i = faces[n];
+    std::fill(cost[n].begin(), cost[n].end(), forbidden);
+    for(int c = 0; c < candidates.size(i); ++c)
+      cost[n][local_label(candidates.label[i][std::size_t(c)])] = candidates.cost[i][std::size_t(c)];
+    label_of[n] = local_label(initial[i]);
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j == Face_adjacency::no_face || j == i) continue;
+      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+      if(contested[j])
+      {
+        // each edge once, from the face listed first; faces are sorted by index
+        if(j < i) continue;
+        const std::size_t m = std::size_t(std::lower_bound(faces.begin(), faces.end(), j) - faces.begin());
+        boost::add_edge(n, m, w, graph);
+      }
+      else
+        for(std::size_t l = 0; l < labels.size(); ++l)
+          if(labels[l] != initial[j]) cost[n][l] += w;
+    }
+  }
+  CGAL::alpha_expansion_graphcut(graph, boost::get(boost::edge_weight, graph), CGAL::make_property_map(cost),
+                                 CGAL::make_property_map(label_of),
+                                 CGAL::parameters::vertex_index_map(boost::get(boost::vertex_index, graph))
+                                   .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
+  for(std::size_t n = 0; n < faces.size(); ++n) face_label[faces[n]] = labels[label_of[n]];
+}
+
+// The final labels: every face starts with its cheapest candidate; the edge-connected sets of
+// faces with two candidates or more are relabelled by alpha expansion, each on its own. The
+// result does not depend on the number of threads.
+template <typename ConcurrencyTag>
+std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_corners& corners,
+                                          const Face_candidates& candidates, const std::vector<int>& orientation,
+                                          double edge_scale)
+{
+  const std::size_t nf = adj.number_of_faces;
+  std::vector<std::int32_t> face_label(nf);
+  std::vector<std::uint8_t> contested(nf, 0);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    face_label[i] = candidates.label[i][0];
+    contested[i] = candidates.size(i) > 1;
+  }
+  if(edge_scale <= 0.) return face_label;
+  std::vector<std::size_t> component;
+  const std::size_t nc = face_components(adj, [&](std::size_t i, int k) {
+    return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
+  }, component);
+  // the contested faces of each component, by increasing face index
+  std::vector<std::size_t> start(nc + 1, 0), order;
+  for(std::size_t i = 0; i < nf; ++i)
+    if(contested[i]) ++start[component[i] + 1];
+  for(std::size_t c = 0; c < nc; ++c) start[c + 1] += start[c];
+  order.resize(start[nc]);
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t i = 0; i < nf; ++i)
+      if(contested[i]) order[fill[component[i]]++] = i;
+  }
+  std::vector<std::size_t> sets; // the components with contested faces
+  for(std::size_t c = 0; c < nc; ++c)
+    if(start[c] < start[c + 1]) sets.push_back(c);
+  const std::vector<std::int32_t> initial(face_label); // read by all, each component writes its own faces
+  for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
+    std::vector<std::size_t> faces;
+    for(std::size_t s = b; s < e; ++s)
+    {
+      const std::size_t c = sets[s];
+      faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
+      cut_contested_component(adj, corners, candidates, orientation, edge_scale, faces, contested, initial,
+                              face_label);
+    }
+  }, 1);
+  return face_label;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
