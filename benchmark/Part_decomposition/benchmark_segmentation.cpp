@@ -380,7 +380,7 @@ std::vector<Variant> all_variants()
     r->residual_tolerance = t;
   }
   // the final labelling: the patch vote (0) and the weight of the boundary cost
-  for(double s : {0., 0.3, 3.})
+  for(double s : {0., 0.3, 3., 10.})
     add("smooth_" + std::to_string(int(s * 10)))->smoothness = s;
   Variant* vote_no_split = add("smooth_0_no_patch_split");
   vote_no_split->smoothness = 0.;

@@ -8,7 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
 
-// The final labelling of the faces: a Potts energy on the face graph, minimized by CGAL's alpha
+// The final labelling of the faces: a Potts energy on the face graph, minimized by alpha
 // expansion on the contested faces only.
 //
 // Inputs:  adj        the face graph with dihedral angles (F faces)
@@ -85,6 +85,90 @@ inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corne
   return edge_scale * slot_length(corners, i, k) * cut_penalty(adj.angle[3 * i + std::size_t(k)], concave);
 }
 
+// The contested faces of one component, numbered 0..n-1, with their candidates and their
+// neighbours: another face of the set, or a fixed label around it.
+struct Contested_set
+{
+  struct Link
+  {
+    std::size_t face; // in the set, or `fixed`
+    std::int32_t fixed_label;
+    double cost;
+  };
+  static constexpr std::size_t fixed = std::size_t(-1);
+  std::vector<std::size_t> faces;      // face index of each member
+  std::vector<std::int32_t> label;     // current label of each member
+  std::vector<std::vector<Link> > links;
+};
+
+// One expansion move of label `alpha` (Boykov, Veksler, Zabih 2001), solved exactly on the faces
+// that may take `alpha`, the others fixed: CGAL's alpha_expansion_graphcut() cuts the whole graph
+// for every label, the restriction to the support of `alpha` is what makes large sets cheap.
+// Between two faces with different labels, keeping both costs w and any change w: that is a
+// Potts term of w/2 plus w/2 on keeping each. Returns whether the energy decreased.
+inline bool expand_label(Contested_set& set, const Face_candidates& candidates, std::int32_t alpha)
+{
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                boost::property<boost::edge_weight_t, double> > Graph;
+  const std::size_t n = set.faces.size();
+  std::vector<std::size_t> member(n, Contested_set::fixed);
+  std::vector<std::size_t> support;
+  std::vector<std::vector<double> > cost; // [keep, alpha] per member of the support
+  for(std::size_t m = 0; m < n; ++m)
+  {
+    if(set.label[m] == alpha) continue;
+    const std::size_t i = set.faces[m];
+    for(int c = 0; c < candidates.size(i); ++c)
+      if(candidates.label[i][std::size_t(c)] == alpha)
+      {
+        member[m] = support.size();
+        support.push_back(m);
+        cost.push_back({0., candidates.cost[i][std::size_t(c)]});
+      }
+  }
+  if(support.empty()) return false;
+  Graph graph(support.size());
+  double keep_all = 0.; // the energy of the terms that involve the support, if nothing changes
+  for(std::size_t s = 0; s < support.size(); ++s)
+  {
+    const std::size_t m = support[s];
+    const std::size_t i = set.faces[m];
+    for(int c = 0; c < candidates.size(i); ++c)
+      if(candidates.label[i][std::size_t(c)] == set.label[m]) cost[s][0] = candidates.cost[i][std::size_t(c)];
+    for(const Contested_set::Link& l : set.links[m])
+    {
+      const bool in_support = l.face != Contested_set::fixed && member[l.face] != Contested_set::fixed;
+      if(!in_support)
+      {
+        const std::int32_t other = l.face == Contested_set::fixed ? l.fixed_label : set.label[l.face];
+        if(other != set.label[m]) cost[s][0] += l.cost;
+        if(other != alpha) cost[s][1] += l.cost;
+        continue;
+      }
+      const std::size_t t = member[l.face];
+      if(t < s) continue; // each link once
+      if(set.label[l.face] == set.label[m])
+        boost::add_edge(s, t, l.cost, graph);
+      else
+      {
+        boost::add_edge(s, t, 0.5 * l.cost, graph);
+        cost[s][0] += 0.5 * l.cost;
+        cost[t][0] += 0.5 * l.cost;
+      }
+    }
+  }
+  for(const std::vector<double>& c : cost) keep_all += c[0];
+  std::vector<std::size_t> move(support.size(), 0);
+  const double energy = CGAL::alpha_expansion_graphcut(
+      graph, boost::get(boost::edge_weight, graph), CGAL::make_property_map(cost), CGAL::make_property_map(move),
+      CGAL::parameters::vertex_index_map(boost::get(boost::vertex_index, graph))
+        .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
+  if(!(energy < keep_all * (1. - 1e-12))) return false;
+  for(std::size_t s = 0; s < support.size(); ++s)
+    if(move[s] == 1) set.label[support[s]] = alpha;
+  return true;
+}
+
 // Alpha expansion on one connected set of contested faces; the labels of the faces around it
 // are fixed (`initial`) and enter as data costs. Writes the labels of `faces` into `face_label`.
 inline void cut_contested_component(const Face_adjacency& adj, const Face_corners& corners,
@@ -93,60 +177,36 @@ inline void cut_contested_component(const Face_adjacency& adj, const Face_corner
                                     const std::vector<std::uint8_t>& contested, const std::vector<std::int32_t>& initial,
                                     std::vector<std::int32_t>& face_label)
 {
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                boost::property<boost::edge_weight_t, double> > Graph;
-  // local numbering of the faces and of the labels they may take
+  constexpr int maximum_cycles = 8; // a cycle without a decrease ends earlier
+  Contested_set set;
+  set.faces = faces;
+  set.links.resize(faces.size());
   std::vector<std::int32_t> labels;
-  for(std::size_t i : faces)
+  for(std::size_t m = 0; m < faces.size(); ++m)
+  {
+    const std::size_t i = faces[m];
+    set.label.push_back(initial[i]);
     for(int c = 0; c < candidates.size(i); ++c) labels.push_back(candidates.label[i][std::size_t(c)]);
-  std::sort(labels.begin(), labels.end());
-  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
-  auto local_label = [&](std::int32_t l) {
-    return std::size_t(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin());
-  };
-  std::vector<std::size_t> local_face(faces.size());
-  std::vector<std::vector<double> > cost(faces.size(), std::vector<double>(labels.size(), 0.));
-  std::vector<std::size_t> label_of(faces.size());
-  // a label a face cannot take costs more than the whole component could save
-  double forbidden = 1.;
-  for(std::size_t n = 0; n < faces.size(); ++n)
-  {
-    const std::size_t i = faces[n];
-    for(int c = 0; c < candidates.size(i); ++c) forbidden += candidates.cost[i][std::size_t(c)];
-    for(int k = 0; k < 3; ++k)
-      if(adj.neighbor[3 * i + std::size_t(k)] != Face_adjacency::no_face)
-        forbidden += slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
-  }
-  Graph graph(faces.size());
-  for(std::size_t n = 0; n < faces.size(); ++n)
-  {
-    const std::size_t i = faces[n];
-    std::fill(cost[n].begin(), cost[n].end(), forbidden);
-    for(int c = 0; c < candidates.size(i); ++c)
-      cost[n][local_label(candidates.label[i][std::size_t(c)])] = candidates.cost[i][std::size_t(c)];
-    label_of[n] = local_label(initial[i]);
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
       if(j == Face_adjacency::no_face || j == i) continue;
       const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
       if(contested[j])
-      {
-        // each edge once, from the face listed first; faces are sorted by index
-        if(j < i) continue;
-        const std::size_t m = std::size_t(std::lower_bound(faces.begin(), faces.end(), j) - faces.begin());
-        boost::add_edge(n, m, w, graph);
-      }
+        set.links[m].push_back({std::size_t(std::lower_bound(faces.begin(), faces.end(), j) - faces.begin()), -1, w});
       else
-        for(std::size_t l = 0; l < labels.size(); ++l)
-          if(labels[l] != initial[j]) cost[n][l] += w;
+        set.links[m].push_back({Contested_set::fixed, initial[j], w});
     }
   }
-  CGAL::alpha_expansion_graphcut(graph, boost::get(boost::edge_weight, graph), CGAL::make_property_map(cost),
-                                 CGAL::make_property_map(label_of),
-                                 CGAL::parameters::vertex_index_map(boost::get(boost::vertex_index, graph))
-                                   .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
-  for(std::size_t n = 0; n < faces.size(); ++n) face_label[faces[n]] = labels[label_of[n]];
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  for(int cycle = 0; cycle < maximum_cycles; ++cycle)
+  {
+    bool decreased = false;
+    for(std::int32_t alpha : labels) decreased = expand_label(set, candidates, alpha) || decreased;
+    if(!decreased) break;
+  }
+  for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = set.label[m];
 }
 
 // The final labels: every face starts with its cheapest candidate; the edge-connected sets of
