@@ -71,6 +71,9 @@ struct Parameters
   double minimum_patch_size = PD::defaults::minimum_patch_size;
   double patch_split_size = PD::defaults::patch_split_size;
   double vote_temperature = PD::defaults::vote_temperature;
+  double boundary_smoothness = PD::defaults::boundary_smoothness;
+  bool merge_primitives = PD::defaults::merge_primitives;
+  double minimum_merge_iou = PD::defaults::minimum_merge_iou;
   bool merge_thin_sheets = PD::defaults::merge_thin_sheets;
   bool use_pieces = PD::defaults::use_pieces;
   double crease_angle = PD::defaults::crease_angle;
@@ -187,6 +190,9 @@ const std::map<std::string, Keyword>& keywords()
     {"minimum_patch_size", field(&Parameters::minimum_patch_size, "a float")},
     {"patch_split_size", field(&Parameters::patch_split_size, "a float")},
     {"vote_temperature", field(&Parameters::vote_temperature, "a float")},
+    {"boundary_smoothness", field(&Parameters::boundary_smoothness, "a float")},
+    {"merge_primitives", field(&Parameters::merge_primitives, "a bool")},
+    {"minimum_merge_iou", field(&Parameters::minimum_merge_iou, "a float")},
     {"merge_thin_sheets", field(&Parameters::merge_thin_sheets, "a bool")},
     {"use_pieces", field(&Parameters::use_pieces, "a bool")},
     {"crease_angle", field(&Parameters::crease_angle, "a float")},
@@ -276,7 +282,8 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
     PDP::maximum_rejections_in_a_row(p.maximum_rejections_in_a_row), PDP::dihedral_percentile(p.dihedral_percentile),
     PDP::smoothing_iterations(p.smoothing_iterations), PDP::minimum_patch_size(p.minimum_patch_size),
     PDP::patch_split_size(p.patch_split_size), PDP::vote_temperature(p.vote_temperature),
-    PDP::merge_thin_sheets(p.merge_thin_sheets), PDP::use_pieces(p.use_pieces), PDP::crease_angle(p.crease_angle),
+    PDP::boundary_smoothness(p.boundary_smoothness), PDP::merge_primitives(p.merge_primitives),
+    PDP::minimum_merge_iou(p.minimum_merge_iou), PDP::merge_thin_sheets(p.merge_thin_sheets), PDP::use_pieces(p.use_pieces), PDP::crease_angle(p.crease_angle),
     PDP::minimum_part_area(p.minimum_part_area), PDP::keep_residual_patches(p.keep_residual_patches),
     PDP::residual_tolerance(p.residual_tolerance),
     PDP::primitive_output_iterator(std::back_inserter(primitives)), PDP::stage_timings(&r.timings));

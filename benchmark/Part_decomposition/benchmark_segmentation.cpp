@@ -310,6 +310,8 @@ struct Variant
   bool residual = PD::defaults::keep_residual_patches;
   double residual_tolerance = PD::defaults::residual_tolerance;
   double smoothness = PD::defaults::boundary_smoothness;
+  bool merge_primitives = PD::defaults::merge_primitives;
+  double merge_iou = PD::defaults::minimum_merge_iou;
 };
 
 // The paper's settings where this implementation departs from it: r_fit = min(r, 32), no
@@ -382,6 +384,24 @@ std::vector<Variant> all_variants()
   // the final labelling: the patch vote (0) and the weight of the boundary cost
   for(double s : {0., 0.3, 3., 10.})
     add("smooth_" + std::to_string(int(s * 10)))->smoothness = s;
+  // finer fitting: the last stage at 64, or the whole hierarchy one level finer
+  add("fit64")->fitting_resolution_cap = 64;
+  add("r128")->resolutions = {32, 64, 128};
+  // primitives that one superquadric explains: kept apart, or merged from three IoU levels
+  add("no_primitive_merge")->merge_primitives = false;
+  for(double t : {0.7, 0.9}) add("merge_iou_" + std::to_string(int(t * 100)))->merge_iou = t;
+  for(double t : {0.7, 0.8, 0.9})
+  {
+    Variant* v = add("r128_merge_iou_" + std::to_string(int(t * 100)));
+    v->resolutions = {32, 64, 128};
+    v->merge_iou = t;
+  }
+  Variant* r128_apart = add("r128_no_primitive_merge");
+  r128_apart->resolutions = {32, 64, 128};
+  r128_apart->merge_primitives = false;
+  Variant* before = add("vote_no_primitive_merge"); // the final labelling of issue 16
+  before->smoothness = 0.;
+  before->merge_primitives = false;
   Variant* vote_no_split = add("smooth_0_no_patch_split");
   vote_no_split->smoothness = 0.;
   vote_no_split->patch_split = 1.;
@@ -1328,7 +1348,9 @@ int main(int argc, char** argv)
                                                        PD::parameters::minimum_part_area(v.minimum_part_area),
                                                        PD::parameters::keep_residual_patches(v.residual),
                                                        PD::parameters::residual_tolerance(v.residual_tolerance),
-                                                       PD::parameters::boundary_smoothness(v.smoothness)));
+                                                       PD::parameters::boundary_smoothness(v.smoothness),
+                                                       PD::parameters::merge_primitives(v.merge_primitives),
+                                                       PD::parameters::minimum_merge_iou(v.merge_iou)));
           }
           r.t_method = seconds_since(t0);
           r.t_prior = st.prior;

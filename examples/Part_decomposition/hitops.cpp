@@ -97,6 +97,9 @@ struct Options
   double min_patch_size = PD::defaults::minimum_patch_size;
   double patch_split_size = PD::defaults::patch_split_size;
   double vote_temperature = PD::defaults::vote_temperature;
+  double boundary_smoothness = PD::defaults::boundary_smoothness;
+  bool merge_primitives = PD::defaults::merge_primitives;
+  double min_merge_iou = PD::defaults::minimum_merge_iou;
 };
 
 const char* const usage_text =
@@ -150,6 +153,9 @@ const char* const usage_text =
   "  --dihedral-percentile 90   --smoothing-iterations 1\n"
   "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
   "  --vote-temperature 1     voxels of the finest grid\n"
+  "  --boundary-smoothness 1  cost of a part boundary across smooth surface (0: the patch vote)\n"
+  "  --no-primitive-merge     keep apart the primitives that one superquadric explains\n"
+  "  --min-merge-iou 0.8      voxel IoU from which one superquadric explains two primitives\n"
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
   "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
   "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
@@ -277,6 +283,9 @@ Options parse(int argc, char** argv)
     else if(a == "--min-patch-size") o.min_patch_size = to_number(a, value());
     else if(a == "--patch-split-size" || a == "--max-patch-size") o.patch_split_size = to_number(a, value());
     else if(a == "--vote-temperature") o.vote_temperature = to_number(a, value());
+    else if(a == "--boundary-smoothness") o.boundary_smoothness = to_number(a, value());
+    else if(a == "--no-primitive-merge") o.merge_primitives = false;
+    else if(a == "--min-merge-iou") o.min_merge_iou = to_number(a, value());
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
     else throw Usage_error("more than one input file: '" + o.input + "' and '" + a + "'");
@@ -361,7 +370,8 @@ Result run(const Mesh& mesh, const Options& o)
                  PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_percentile(o.dihedral_percentile),
                  PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
                  PDP::patch_split_size(o.patch_split_size), PDP::vote_temperature(o.vote_temperature),
-                 PDP::merge_thin_sheets(o.merge_sheets), PDP::use_density(o.use_density),
+                 PDP::boundary_smoothness(o.boundary_smoothness), PDP::merge_primitives(o.merge_primitives),
+                 PDP::minimum_merge_iou(o.min_merge_iou), PDP::merge_thin_sheets(o.merge_sheets), PDP::use_density(o.use_density),
                  PDP::use_pieces(o.use_pieces), PDP::crease_angle(o.crease_angle),
                  PDP::minimum_part_area(o.min_part_area),
                  PDP::fitting_resolution_cap(o.fitting_resolution_cap),

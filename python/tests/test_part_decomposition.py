@@ -61,7 +61,7 @@ def test_every_named_parameter_is_a_keyword_with_its_default():
         "use_body_seeds", "fitting_resolution_cap", "use_exterior_band_samples", "use_reachable_regions",
         "use_seed_exclusion", "maximum_solver_evaluations", "maximum_rejections_in_a_row",
         "dihedral_percentile", "smoothing_iterations", "minimum_patch_size", "patch_split_size",
-        "vote_temperature", "merge_thin_sheets", "use_pieces", "crease_angle", "minimum_part_area",
+        "vote_temperature", "boundary_smoothness", "merge_primitives", "minimum_merge_iou", "merge_thin_sheets", "use_pieces", "crease_angle", "minimum_part_area",
         "number_of_parts", "keep_residual_patches", "residual_tolerance", "threads", "verbose"}
     assert set(pd.DEFAULTS) == names
     d = pd.DEFAULTS

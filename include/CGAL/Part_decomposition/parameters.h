@@ -59,6 +59,8 @@ namespace Part_decomposition {
   X(use_seed_exclusion_t, use_seed_exclusion, use_seed_exclusion)                    \
   X(maximum_solver_evaluations_t, maximum_solver_evaluations, maximum_solver_evaluations) \
   X(maximum_rejections_in_a_row_t, maximum_rejections_in_a_row, maximum_rejections_in_a_row) \
+  X(merge_primitives_t, merge_primitives, merge_primitives)                          \
+  X(minimum_merge_iou_t, minimum_merge_iou, minimum_merge_iou)                       \
   /* over-segmentation and assignment (App. E.3, E.4) */                             \
   X(dihedral_percentile_t, dihedral_percentile, dihedral_percentile)                 \
   X(smoothing_iterations_t, smoothing_iterations, smoothing_iterations)              \
@@ -201,6 +203,10 @@ constexpr bool use_seed_exclusion = true;
 constexpr int maximum_solver_evaluations = 40;
 /// the rejected seeds in a row that end a fitting stage (0: never)
 constexpr std::size_t maximum_rejections_in_a_row = 4;
+/// whether adjacent primitives that one superquadric explains are merged after the fit
+constexpr bool merge_primitives = true;
+/// the voxel intersection over union from which one superquadric explains two primitives
+constexpr double minimum_merge_iou = 0.8;
 /// \f$q\f$, the dihedral percentile of the over-segmentation cut
 constexpr double dihedral_percentile = 90.;
 /// the boundary-smoothing iterations of the over-segmentation
@@ -284,6 +290,8 @@ package's parameters are:
 | `use_seed_exclusion()` | `bool` | `true` | `fit_superquadrics()` |
 | `maximum_solver_evaluations()` | `int` | 40 | `fit_superquadrics()` |
 | `maximum_rejections_in_a_row()` | `std::size_t` | 4 | `fit_superquadrics()` |
+| `merge_primitives()` | `bool` | `true` | `fit_superquadrics()` |
+| `minimum_merge_iou()` | `double` | 0.8 | `fit_superquadrics()` |
 | `dihedral_percentile()` | `double` | 90 | `over_segment()` |
 | `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |

@@ -14,6 +14,7 @@
 #include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/primitive_merging.h>
 #include <CGAL/Part_decomposition/internal/superquadric_fitter.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
@@ -25,6 +26,9 @@
 #include <limits>
 #include <type_traits>
 #include <vector>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -71,6 +75,8 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   p.maximum_rejections_in_a_row = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_rejections_in_a_row), defaults::maximum_rejections_in_a_row),
     0, "maximum_rejections_in_a_row", "non-negative");
+  p.merge_primitives = choose_parameter(get_parameter(np, internal_np::merge_primitives), defaults::merge_primitives);
+  p.minimum_merge_iou = choose_parameter(get_parameter(np, internal_np::minimum_merge_iou), defaults::minimum_merge_iou);
   p.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
 
   check_parameter(!p.trust_region_scales.empty(), "trust_region_scales", "a non-empty list");
@@ -81,8 +87,13 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   check_non_negative(p.exterior_penalty, "exterior_penalty");
   check_parameter(p.coverage_target > 0. && p.coverage_target <= 1., "coverage_target", "in (0, 1]");
   check_positive(p.roi_radius, "roi_radius");
+  check_parameter(p.minimum_merge_iou > 0. && p.minimum_merge_iou <= 1., "minimum_merge_iou", "in (0, 1]");
   return p;
 }
+
+// The fraction of Freeze voxels along the common surface of two primitives from which they are
+// never merged: a joint the prior marked.
+constexpr double primitive_merge_freeze_fraction = 0.5;
 
 // The prior and the distance field come from other calls: a mismatch would index out of the grids.
 inline void check_prior_and_distance_field(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf)
@@ -131,7 +142,13 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
   else
     check_fitting_zones(*zones, prior, fit_res);
   Superquadric_fitter<ConcurrencyTag, GeomTraits> fitter(prior, tsdf, *zones, fit_res, parameters);
-  return fitter.run();
+  Superquadric_fitting_result<GeomTraits> result = fitter.run();
+  auto t0 = std::chrono::steady_clock::now(); std::size_t k0 = result.primitives.size();
+  if(parameters.merge_primitives)
+    merge_explained_primitives(result, prior.classes, tsdf.values, parameters.minimum_merge_iou,
+                               primitive_merge_freeze_fraction);
+  if(std::getenv("PD_MERGE_TIME")) std::fprintf(stderr, "merge %zu -> %zu in %.3f s\n", k0, result.primitives.size(), std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count());
+  return result;
 }
 
 } // namespace internal

@@ -58,6 +58,8 @@ struct Fitting_parameters
   bool use_seed_exclusion = defaults::use_seed_exclusion;
   int maximum_solver_evaluations = defaults::maximum_solver_evaluations;
   std::size_t maximum_rejections_in_a_row = defaults::maximum_rejections_in_a_row;
+  bool merge_primitives = defaults::merge_primitives;
+  double minimum_merge_iou = defaults::minimum_merge_iou;
   bool verbose = false;
 };
 
