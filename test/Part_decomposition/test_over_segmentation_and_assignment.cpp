@@ -98,14 +98,15 @@ Mesh make_strip(double x0, double w, int n, double y0, double h, double z)
 
 std::vector<std::size_t> assign(Mesh& m, const std::vector<std::size_t>& patch,
                                 const PD::Voxel_grid<std::int32_t>& claimed, std::vector<std::size_t>& part,
-                                double temperature = 1.0)
+                                double temperature = 1.0, double smoothness = 0.)
 {
   Mesh& mm = m;
   auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_in", 0).first;
   auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_out", 0).first;
   for(face_descriptor f : faces(m)) pmap[f] = patch[f];
   const std::vector<std::size_t> prim =
-      PD::assign_parts(m, pmap, claimed, PD::Normalization(), qmap, PD::parameters::vote_temperature(temperature));
+      PD::assign_parts(m, pmap, claimed, PD::Normalization(), qmap,
+                       PDP::combine(PDP::vote_temperature(temperature), PDP::boundary_smoothness(smoothness)));
   part.clear();
   for(face_descriptor f : faces(m)) part.push_back(qmap[f]);
   mm.remove_property_map(pmap);
@@ -481,8 +482,125 @@ TEST_CASE("parts merge the patches of one primitive and follow a brute-force ref
   auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
   auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:q", 0).first;
   for(face_descriptor f : faces(m)) pmap[f] = patch[f];
-  CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(m, pmap, claimed, PD::Normalization(), qmap) == prim);
+  CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(m, pmap, claimed, PD::Normalization(), qmap,
+                                                          PDP::boundary_smoothness(0.)) == prim);
   for(face_descriptor f : faces(m)) CHECK(qmap[f] == part[f]);
+}
+
+// The energy of the final labelling (internal/boundary_graph_cut.h), computed face by face.
+double labelling_energy(const PD::internal::Face_adjacency& adj, const PD::internal::Face_corners& corners,
+                        const PD::internal::Face_candidates& c, const std::vector<std::int32_t>& label, double scale)
+{
+  const std::vector<int> outward(adj.number_of_faces, 1);
+  double e = 0.;
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  {
+    bool found = false;
+    for(int k = 0; k < c.size(i); ++k)
+      if(c.label[i][std::size_t(k)] == label[i]) e += c.cost[i][std::size_t(k)], found = true;
+    if(!found) return 1e300; // not a candidate
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j != PD::internal::Face_adjacency::no_face && j > i && label[j] != label[i])
+        e += PD::internal::slot_cut_cost(adj, corners, outward, i, k, scale);
+    }
+  }
+  return e;
+}
+
+TEST_CASE("the final labelling reaches the least energy of two labels and a local minimum of three", "[assignment]")
+{
+  // A folded strip: 8 squares along x, the last 4 bent down by 60 degrees (a convex crease).
+  Mesh m = make_strip(0., 0.125, 8, 0., 0.125, 0.);
+  for(auto v : vertices(m))
+  {
+    const Point p = m.point(v);
+    if(p.x() > 0.5) m.point(v) = Point(0.5 + (p.x() - 0.5) * 0.5, p.y(), -(p.x() - 0.5) * std::sqrt(0.75));
+  }
+  const std::size_t nf = num_faces(m);
+  const PD::internal::Face_adjacency adj =
+    PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, get(CGAL::face_index, m), CGAL::parameters::default_values());
+  const PD::internal::Face_corners corners(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m));
+  CGAL::Random rng(7);
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    const int labels = trial < 12 ? 2 : 3;
+    PD::internal::Face_candidates c;
+    c.resize(nf);
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      // every face may take every label; the cheapest first, at cost 0
+      std::vector<std::pair<double, std::int32_t> > costs;
+      for(int l = 0; l < labels; ++l) costs.emplace_back(rng.get_double(0., 0.02), l);
+      std::sort(costs.begin(), costs.end());
+      for(int l = 0; l < labels; ++l)
+      {
+        c.label[i][std::size_t(l)] = costs[std::size_t(l)].second;
+        c.cost[i][std::size_t(l)] = costs[std::size_t(l)].first - costs[0].first;
+      }
+    }
+    const double scale = rng.get_double(0.001, 0.05);
+    const std::vector<std::int32_t> cut = PD::internal::cut_face_labels<CGAL::Sequential_tag>(
+      adj, corners, c, std::vector<int>(nf, 1), scale);
+    const double e = labelling_energy(adj, corners, c, cut, scale);
+    std::vector<std::int32_t> initial(nf);
+    for(std::size_t i = 0; i < nf; ++i) initial[i] = c.label[i][0];
+    CHECK(e <= labelling_energy(adj, corners, c, initial, scale) + 1e-12);
+    CHECK(PD::internal::cut_face_labels<CGAL::Parallel_if_available_tag>(adj, corners, c, std::vector<int>(nf, 1),
+                                                                           scale) == cut);
+    if(labels == 2)
+    {
+      // one expansion is exact on two labels: the least energy over all 2^16 labellings
+      double least = 1e300;
+      std::vector<std::int32_t> l(nf);
+      for(std::size_t bits = 0; bits < (std::size_t(1) << nf); ++bits)
+      {
+        for(std::size_t i = 0; i < nf; ++i) l[i] = std::int32_t((bits >> i) & 1);
+        least = (std::min)(least, labelling_energy(adj, corners, c, l, scale));
+      }
+      CHECK(e == Approx(least).epsilon(1e-9));
+    }
+    else
+    {
+      // no face alone can lower the energy
+      std::vector<std::int32_t> l(cut);
+      for(std::size_t i = 0; i < nf; ++i)
+        for(std::int32_t x = 0; x < labels; ++x)
+        {
+          l[i] = x;
+          CHECK(labelling_energy(adj, corners, c, l, scale) >= e - 1e-12);
+          l[i] = cut[i];
+        }
+    }
+  }
+}
+
+TEST_CASE("with the final labelling the parts do not depend on the patches", "[assignment]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3);
+  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  std::size_t count = 0;
+  const std::vector<std::size_t> patch = patches_of(m, count);
+  std::vector<std::size_t> one(num_faces(m), 0), own(num_faces(m)), part_a, part_b, part_c;
+  for(std::size_t i = 0; i < own.size(); ++i) own[i] = i;
+  const std::vector<std::size_t> prim = assign(m, patch, claimed, part_a, 1., 1.);
+  CHECK(prim == std::vector<std::size_t>({2, 5, 9}));
+  CHECK(assign(m, one, claimed, part_b, 1., 1.) == prim);
+  CHECK(assign(m, own, claimed, part_c, 1., 1.) == prim);
+  CHECK(part_b == part_a);
+  CHECK(part_c == part_a);
+  // the patch vote gives a single patch a single part
+  CHECK(assign(m, one, claimed, part_b, 1., 0.).size() == 1);
+  // the parts are the slabs: the cuts, on smooth surface, move at most by the candidate margin
+  // (2 voxels of 0.0625) from the planes x = -0.1 and x = 0.15, towards shorter circles
+  for(face_descriptor f : faces(m))
+  {
+    const double x = m.point(source(halfedge(f, m), m)).x();
+    if(x < -0.1 - 0.125 - 0.07) CHECK(prim[part_a[f]] == 9);
+    if(x > 0. && x < 0.05) CHECK(prim[part_a[f]] == 5);
+    if(x > 0.15 + 0.125 + 0.07) CHECK(prim[part_a[f]] == 2);
+  }
 }
 
 TEST_CASE("without claimed voxels all faces form one part", "[assignment]")
@@ -530,11 +648,15 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   check_patch_structure(m, std::vector<std::size_t>(patch.begin(), patch.end()), count);
   CHECK(count >= 200);
   CHECK(count <= 800);
-  const std::vector<std::size_t> prim = PD::assign_parts(m, patch, claimed, n, part);
-  CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
-  std::size_t correct = 0;
-  for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
-  CHECK(double(correct) / double(num_faces(m)) > 0.97);
+  for(double smoothness : {0., PD::defaults::boundary_smoothness})
+  {
+    const std::vector<std::size_t> prim =
+      PD::assign_parts(m, patch, claimed, n, part, PDP::boundary_smoothness(smoothness));
+    CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
+    std::size_t correct = 0;
+    for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
+    CHECK(double(correct) / double(num_faces(m)) > 0.97);
+  }
 }
 
 TEST_CASE("assign_parts with every default given explicitly gives the default parts", "[assignment][defaults]")
@@ -548,7 +670,8 @@ TEST_CASE("assign_parts with every default given explicitly gives the default pa
   const std::vector<std::size_t> prim_b = PD::assign_parts(
       m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(b),
       PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m)).face_index_map(get(CGAL::face_index, m)),
-                   PDP::vote_temperature(PD::defaults::vote_temperature)));
+                   PDP::vote_temperature(PD::defaults::vote_temperature),
+                   PDP::boundary_smoothness(PD::defaults::boundary_smoothness)));
   CHECK(prim_a == std::vector<std::size_t>({2, 5, 9}));
   CHECK(prim_b == prim_a);
   CHECK(b == a);

@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
