@@ -432,3 +432,79 @@ TEST_CASE("the cut discrepancy of segmentations without cuts", "[metrics][cut_di
   CHECK(PD::cut_discrepancy(strip, split, split) == 0.);
   CHECK(std::isnan(PD::cut_discrepancy(strip, split, same)));
 }
+
+namespace {
+
+// The mean distance from the surface of the L-bracket prism (plates [0,la]x[0,t] and [0,t]x[0,lb],
+// z in [0,w]) to its area centroid, by the midpoint rule on the rectangles of its boundary.
+double l_bracket_average_radius(double la, double lb, double t, double w)
+{
+  struct Rectangle { std::array<double, 3> o, u, v; };
+  const std::vector<Rectangle> sides = {
+    {{0, 0, 0}, {la, 0, 0}, {0, t, 0}}, {{0, t, 0}, {t, 0, 0}, {0, lb - t, 0}},  // cap z = 0
+    {{0, 0, w}, {la, 0, 0}, {0, t, 0}}, {{0, t, w}, {t, 0, 0}, {0, lb - t, 0}},  // cap z = w
+    {{0, 0, 0}, {la, 0, 0}, {0, 0, w}}, {{la, 0, 0}, {0, t, 0}, {0, 0, w}},      // y = 0, x = la
+    {{t, t, 0}, {la - t, 0, 0}, {0, 0, w}}, {{t, t, 0}, {0, lb - t, 0}, {0, 0, w}}, // y = t, x = t
+    {{0, lb, 0}, {t, 0, 0}, {0, 0, w}}, {{0, 0, 0}, {0, lb, 0}, {0, 0, w}}};     // y = lb, x = 0
+  const int n = 300;
+  auto integrate = [&](auto f) {
+    double sum = 0.;
+    for(const Rectangle& r : sides)
+    {
+      // u and v are along axes: |u| |v| is the sum of their coordinates
+      const double area = (r.u[0] + r.u[1] + r.u[2]) * (r.v[0] + r.v[1] + r.v[2]);
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          std::array<double, 3> p;
+          for(int a = 0; a < 3; ++a) p[a] = r.o[a] + (i + 0.5) / n * r.u[a] + (j + 0.5) / n * r.v[a];
+          sum += f(p) * area / (double(n) * n);
+        }
+    }
+    return sum;
+  };
+  const double area = integrate([](const std::array<double, 3>&) { return 1.; });
+  std::array<double, 3> c;
+  for(int a = 0; a < 3; ++a) c[a] = integrate([a](const std::array<double, 3>& p) { return p[a]; }) / area;
+  return integrate([&c](const std::array<double, 3>& p) {
+           return std::sqrt(std::pow(p[0] - c[0], 2) + std::pow(p[1] - c[1], 2) + std::pow(p[2] - c[2], 2));
+         }) / area;
+}
+
+} // namespace
+
+TEST_CASE("the L-bracket test shape and the cut discrepancy of its corner", "[metrics][cut_discrepancy]")
+{
+  const double la = 1., lb = 0.6, t = 0.1, w = 0.4;
+  std::vector<int> plate;
+  Mesh m = test_shapes::make_l_bracket(la, lb, t, w, 0.05, &plate);
+  REQUIRE(plate.size() == num_faces(m));
+  CHECK(CGAL::is_closed(m));
+  CHECK(CGAL::is_triangle_mesh(m));
+  // outward: positive volume (divergence theorem), and the volume of the two plates
+  double volume = 0., area_b = 0.;
+  for(Face f : faces(m))
+  {
+    std::vector<Point> p;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) p.push_back(m.point(v));
+    volume += CGAL::scalar_product(p[0] - CGAL::ORIGIN, CGAL::cross_product(p[1] - CGAL::ORIGIN, p[2] - CGAL::ORIGIN)) / 6.;
+    if(plate[std::size_t(f)] == 1) area_b += std::sqrt(CGAL::squared_area(p[0], p[1], p[2]));
+  }
+  CHECK(volume == Approx((la * t + (lb - t) * t) * w));
+  // plate B's faces: its two walls along y, its end and its two caps, above y = t
+  CHECK(area_b == Approx(2 * (lb - t) * w + t * w + 2 * t * (lb - t)));
+
+  // The corner square to plate A (truth) or to plate B: the two cuts are the same corner line
+  // and two loops t apart (caps: segments meeting at the corner, mean distance t / 2), so each
+  // side's mean is t / 2 and CD = t / R.
+  auto truth = m.add_property_map<Face, int>("f:truth", 0).first;
+  auto corner_to_b = m.add_property_map<Face, int>("f:corner_to_b", 0).first;
+  for(Face f : faces(m))
+  {
+    truth[f] = plate[std::size_t(f)];
+    bool right = false; // a vertex with x > t: plate A without the corner
+    for(auto v : vertices_around_face(halfedge(f, m), m)) right = right || m.point(v).x() > t;
+    corner_to_b[f] = right ? 0 : 1;
+  }
+  CHECK(PD::cut_discrepancy(m, truth, corner_to_b) == Approx(t / l_bracket_average_radius(la, lb, t, w)).epsilon(1e-3));
+}
