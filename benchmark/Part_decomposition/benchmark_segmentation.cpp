@@ -535,6 +535,28 @@ void score_primitives(const std::vector<pd_benchmark::True_primitive>& truth,
   }
 }
 
+// The predicted superquadrics in the format of NAME.parts.tsv (id = part id), to look at what
+// score_primitives() matched.
+void write_primitives(const fs::path& file, const std::vector<PD::Superquadric<K> >& primitives)
+{
+  std::vector<pd_benchmark::True_primitive> out;
+  for(const PD::Superquadric<K>& q : primitives)
+  {
+    pd_benchmark::True_primitive p;
+    p.id = out.size();
+    p.center = {{q.center().x(), q.center().y(), q.center().z()}};
+    p.semi_axes = q.scales();
+    p.epsilon1 = q.epsilon1();
+    p.epsilon2 = q.epsilon2();
+    p.rotation = q.rotation();
+    p.thin = pd_benchmark::is_thin(p.semi_axes);
+    out.push_back(p);
+  }
+  fs::create_directories(file.parent_path());
+  std::ofstream f(file);
+  pd_benchmark::write_parts_tsv(f, out);
+}
+
 // Our method; `primitives` receives the superquadric of each part, in part order.
 template <typename NP>
 std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const NP& np,
@@ -1502,7 +1524,10 @@ int main(int argc, char** argv)
         score(labels, samples, gt_samples, r);
         r.cd = mean_cut_discrepancy(mesh, labels, gt_faces);
         if(run.first.compare(0, 3, "sdf") != 0 && !truth.primitives.empty())
+        {
           score_primitives(truth.primitives, primitives, labels, gt_faces.front(), truth.face_area, r);
+          write_primitives(fs::path(o.out) / "primitives" / (e.name + "." + run.first + ".tsv"), primitives);
+        }
         else if(!truth.primitives.empty())
         {
           // no primitives to match: found is n/a
