@@ -569,7 +569,7 @@ degenerate).
 \f$s\f$), plus the integral of \f$\bar R\f$, \f$O(F + A / h^2)\f$ for \f$F\f$ faces of total
 area \f$A\f$ and \f$h\f$ 1/128 of the diagonal.
 
-\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `VertexListGraph`
 \tparam GroundTruthMap a model of `ReadablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and a label type (with
         `operator==`, such as an integer type) as value type
