@@ -25,6 +25,7 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 
+#include "parts_tsv.h"
 #include "sdf_peer.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -173,6 +174,7 @@ struct Shape_entry
   long manifest_faces = -1;
   fs::path mesh;
   std::vector<fs::path> ground_truths; // NAME_k.seg in k order (or NAME.seg)
+  fs::path parts;                      // NAME.parts.tsv, the true primitives, if any
 };
 
 std::vector<Shape_entry> read_dataset(const Options& o, std::string& error)
@@ -220,6 +222,7 @@ std::vector<Shape_entry> read_dataset(const Options& o, std::string& error)
     if(c_faces < int(f.size())) s.manifest_faces = std::atol(f[c_faces].c_str());
     for(const char* ext : {".off", ".obj", ".ply", ".stl"})
       if(fs::exists(dir / (s.name + ext))) { s.mesh = dir / (s.name + ext); break; }
+    if(fs::exists(dir / (s.name + ".parts.tsv"))) s.parts = dir / (s.name + ".parts.tsv");
     auto it = seg.find(s.name);
     if(it != seg.end())
     {
@@ -425,6 +428,9 @@ struct Row
   std::size_t k = 0;       // the oracle count: lower median of the human part counts
   std::size_t leaves = 0;  // ours_k: the leaves of the hierarchy
   double t_hierarchy = NaN;
+  double cd = NaN;          // cut discrepancy, mean over the ground truths where it is defined
+  // true primitives found (NAME.parts.tsv); -1: not applicable (no parts file, no primitives)
+  long found = -1, true_primitives = -1, thin_found = -1, thin_total = -1;
   double end_to_end() const { return t_read + t_method; }
 };
 
@@ -443,11 +449,15 @@ std::string num(double x, int digits = 4)
   return o.str();
 }
 
+// a count, or n/a when it does not apply (negative)
+std::string count(long n) { return n < 0 ? "n/a" : std::to_string(n); }
+
 void write_tsv_header(std::ostream& out)
 {
   out << "dataset\tshape\tcategory\tfaces\tmethod\tstatus\tmIoU\tRI\tVoI\tSC\tparts\tgt_parts\tn_gt"
          "\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign\tt_sdf_values\tt_sdf_segmentation"
-         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\tk\tleaves\tt_hierarchy\n";
+         "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\tk\tleaves\tt_hierarchy"
+         "\tCD\tfound\ttrue_primitives\tthin_found\tthin_total\n";
 }
 
 void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
@@ -460,7 +470,8 @@ void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
       << num(r.t_sdf_segmentation) << '\t' << num(r.t_method) << '\t' << num(r.end_to_end()) << '\t'
       << num(r.peak_mb, 1) << '\t' << num(r.rss_before_mb, 1) << '\t' << r.same_labels << '\t'
       << clean(r.error) << '\t' << clean(r.note) << '\t' << r.k << '\t' << r.leaves << '\t' << num(r.t_hierarchy)
-      << '\n';
+      << '\t' << num(r.cd) << '\t' << count(r.found) << '\t' << count(r.true_primitives) << '\t'
+      << count(r.thin_found) << '\t' << count(r.thin_total) << '\n';
   out.flush();
 }
 
@@ -488,14 +499,135 @@ void score(const std::vector<std::size_t>& face_labels, const std::vector<std::s
   r.sc = sc / k;
 }
 
+// A readable map face -> value over a vector indexed like faces(mesh) (no garbage).
+template <typename T>
+struct Face_vector_map
+{
+  typedef Face key_type;
+  typedef T value_type;
+  typedef const T& reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<T>* values;
+  friend const T& get(const Face_vector_map& m, Face f) { return (*m.values)[std::size_t(f)]; }
+};
+
+// The cut discrepancy of the face labels against each ground truth (face labels in mesh order),
+// averaged over the ground truths where it is defined: NaN where only one side has cuts.
+double mean_cut_discrepancy(const Mesh& mesh, const std::vector<std::size_t>& face_labels,
+                            const std::vector<std::vector<long> >& gt_faces)
+{
+  std::vector<double> cd;
+  for(const std::vector<long>& g : gt_faces)
+    cd.push_back(PD::cut_discrepancy(mesh, Face_vector_map<long>{&g}, Face_vector_map<std::size_t>{&face_labels}));
+  double sum = 0.;
+  std::size_t n = 0;
+  for(double x : cd)
+    if(!std::isnan(x)) { sum += x; ++n; }
+  return n ? sum / double(n) : NaN;
+}
+
+// The true primitives found by the predicted parts: true primitive i is found if some part k has
+// its superquadric's centre within i's smallest semi-axis of i's centre and more than half of
+// its area labelled i in the ground truth `gt` (face labels in mesh order, labels = ids).
+void score_primitives(const std::vector<pd_benchmark::True_primitive>& truth,
+                      const std::vector<PD::Superquadric<K> >& predicted, const std::vector<std::size_t>& labels,
+                      const std::vector<long>& gt, const std::vector<double>& face_area, Row& r)
+{
+  // the ground-truth label holding more than half of each part's area, or -1
+  std::vector<double> area(predicted.size(), 0.);
+  std::vector<std::map<long, double> > by_label(predicted.size());
+  for(std::size_t f = 0; f < labels.size(); ++f)
+    if(labels[f] < predicted.size())
+    {
+      area[labels[f]] += face_area[f];
+      by_label[labels[f]][gt[f]] += face_area[f];
+    }
+  std::vector<long> majority(predicted.size(), -1);
+  for(std::size_t k = 0; k < predicted.size(); ++k)
+    for(const auto& la : by_label[k])
+      if(la.second > 0.5 * area[k]) majority[k] = la.first;
+
+  r.found = r.thin_found = r.thin_total = 0;
+  r.true_primitives = long(truth.size());
+  for(const pd_benchmark::True_primitive& t : truth)
+  {
+    const K::Point_3 c(t.center[0], t.center[1], t.center[2]);
+    bool found = false;
+    for(std::size_t k = 0; k < predicted.size() && !found; ++k)
+      found = majority[k] == long(t.id) &&
+              CGAL::squared_distance(predicted[k].center(), c) <= CGAL::square(t.smallest_semi_axis());
+    r.found += found;
+    r.thin_total += t.thin;
+    r.thin_found += found && t.thin;
+  }
+}
+
+// The predicted superquadrics in the format of NAME.parts.tsv (id = part id), to look at what
+// score_primitives() matched.
+void write_primitives(const fs::path& file, const std::vector<PD::Superquadric<K> >& primitives)
+{
+  std::vector<pd_benchmark::True_primitive> out;
+  for(const PD::Superquadric<K>& q : primitives)
+  {
+    pd_benchmark::True_primitive p;
+    p.id = out.size();
+    p.center = {{q.center().x(), q.center().y(), q.center().z()}};
+    p.semi_axes = q.scales();
+    p.epsilon1 = q.epsilon1();
+    p.epsilon2 = q.epsilon2();
+    p.rotation = q.rotation();
+    p.thin = pd_benchmark::is_thin(p.semi_axes);
+    out.push_back(p);
+  }
+  fs::create_directories(file.parent_path());
+  std::ofstream f(file);
+  pd_benchmark::write_parts_tsv(f, out);
+}
+
+// Our method; `primitives` receives the superquadric of each part, in part order.
 template <typename NP>
-std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const NP& np)
+std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const NP& np,
+                     std::vector<PD::Superquadric<K> >* primitives = nullptr)
 {
   labels.assign(num_faces(mesh), std::size_t(-1));
-  const std::size_t k = PD::decompose<CGAL::Parallel_if_available_tag>(mesh, Face_part_map{&labels}, np);
+  std::vector<PD::Superquadric<K> > out;
+  const std::size_t k = PD::decompose<CGAL::Parallel_if_available_tag>(
+    mesh, Face_part_map{&labels},
+    PD::parameters::combine(np, PD::parameters::primitive_output_iterator(std::back_inserter(out))));
   for(std::size_t l : labels)
     if(l >= k) throw std::runtime_error("decompose left a face without a part id in [0, K)");
+  if(primitives != nullptr) *primitives = std::move(out);
   return k;
+}
+
+// The true primitives of a shape (NAME.parts.tsv, whose ids are the labels of its single ground
+// truth) and the area of each face; empty without a parts file or a ground truth.
+struct Shape_truth
+{
+  std::vector<pd_benchmark::True_primitive> primitives;
+  std::vector<double> face_area; // in mesh face order
+};
+
+Shape_truth read_truth(const Shape_entry& e, const Mesh& mesh, const std::vector<std::vector<long> >& gt_faces,
+                       std::string& note)
+{
+  Shape_truth t;
+  if(e.parts.empty() || gt_faces.empty()) return t;
+  std::string error;
+  if(!pd_benchmark::read_parts_tsv(e.parts.string(), t.primitives, error))
+  {
+    note += (note.empty() ? "" : "; ") + error;
+    t.primitives.clear();
+    return t;
+  }
+  if(gt_faces.size() > 1) note += (note.empty() ? "" : "; ") + std::string("primitives scored on the first ground truth");
+  for(Face f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    t.face_area.push_back(std::sqrt(CGAL::squared_area(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
+                                                       mesh.point(target(next(h, mesh), mesh)))));
+  }
+  return t;
 }
 
 // ------------------------------------------------------------------------------------------
@@ -532,7 +664,21 @@ struct Aggregate
   std::size_t n_ok = 0, n_all = 0;
   double miou = NaN, ri = NaN, voi = NaN, sc = NaN, parts = NaN, gt_parts = NaN;
   double t_median = NaN, t_mean = NaN, peak_median = NaN, end_to_end_median = NaN;
+  double cd = NaN; // mean over the shapes where it is defined
+  std::size_t cd_shapes = 0;
+  // true primitives found, summed over the shapes with primitives; found < 0: not applicable
+  long found = -1, true_primitives = 0, thin_found = -1, thin_total = 0;
 };
+
+// "mean (shapes where defined)"
+std::string cd_cell(double cd, std::size_t shapes) { return num(cd, 3) + " (" + std::to_string(shapes) + ")"; }
+
+// "percent (found/total)", or n/a
+std::string percent(long found, long total)
+{
+  if(found < 0 || total <= 0) return "n/a";
+  return num(100. * double(found) / double(total), 1) + " (" + std::to_string(found) + "/" + std::to_string(total) + ")";
+}
 
 Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, const std::string& category = "")
 {
@@ -555,6 +701,16 @@ Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, con
   a.t_mean = mean(field(ok, [](const Row& r) { return r.t_method; }));
   a.peak_median = median(field(ok, [](const Row& r) { return r.peak_mb; }));
   a.end_to_end_median = median(field(ok, [](const Row& r) { return r.end_to_end(); }));
+  a.cd = mean(field(ok, [](const Row& r) { return r.cd; }));
+  for(const Row* r : ok) a.cd_shapes += std::isnan(r->cd) ? 0 : 1;
+  for(const Row* r : ok)
+    if(r->found >= 0)
+    {
+      a.found = (std::max)(a.found, 0L) + r->found;
+      a.thin_found = (std::max)(a.thin_found, 0L) + r->thin_found;
+      a.true_primitives += r->true_primitives;
+      a.thin_total += r->thin_total;
+    }
   return a;
 }
 
@@ -635,37 +791,58 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
       << "of information (natural log, nats) and segmentation covering, averaged over every human "
       << "segmentation of a shape, then over shapes. \"s\" columns exclude reading the mesh, "
       << "\"end-to-end s\" adds it (file to labels; the same reader for every method); peak memory is "
-      << "the process's VmHWM during the method.\n\n";
+      << "the process's VmHWM during the method. CD: the cut discrepancy (Chen et al. 2009, "
+      << "`cut_discrepancy()`: mean distance from the cuts of one segmentation to those of the other, both "
+      << "ways, over the mean radius; Euclidean, not the Princeton benchmark's geodesic distance), averaged "
+      << "over the ground truths where it is defined (both or neither have cuts), then over the shapes where "
+      << "it is (their number in parentheses): a single predicted part against a ground truth of several parts "
+      << "leaves it undefined.\n\n";
 
   std::vector<std::string> methods;
   for(const std::string& m : all_methods())
     for(const Row& r : rows)
       if(r.method == m) { methods.push_back(m); break; }
+  bool with_primitives = false;
+  for(const Row& r : rows) with_primitives = with_primitives || r.true_primitives > 0;
+  // the columns of the true primitives, when the data set has them
+  const std::string found_head = with_primitives ? " found % ↑ | thin found % ↑ |" : "";
+  const std::string found_rule = with_primitives ? "---|---|" : "";
+  auto found_cells = [&](const Aggregate& a) {
+    return with_primitives ? " " + percent(a.found, a.true_primitives) + " | " + percent(a.thin_found, a.thin_total) + " |"
+                           : std::string();
+  };
+  if(with_primitives)
+    out << "Primitives (NAME.parts.tsv): a true primitive is found if some predicted part has its "
+        << "superquadric's centre within the primitive's smallest semi-axis of its centre and more than half "
+        << "of its area labelled with it in NAME.seg; thin: smallest semi-axis at most 1/8 of the largest. "
+        << "Percentages pool the primitives of the shapes; n/a for methods without primitives (SDF).\n\n";
 
   out << "## Overall\n\n"
-      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s | mean s "
+      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | GT parts | median s | mean s "
          "| median end-to-end s | median peak MB |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      << "|---|---|---|---|---|---|---|" << found_rule << "---|---|---|---|---|---|\n";
   for(const std::string& m : methods)
   {
     const Aggregate a = aggregate(rows, m);
     out << "| " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | " << num(a.miou, 3) << " | "
-        << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3) << " | " << num(a.parts, 1)
+        << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | " << num(a.sc, 3) << " |"
+        << found_cells(a) << " " << num(a.parts, 1)
         << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " | " << num(a.t_mean, 3) << " | "
         << num(a.end_to_end_median, 3) << " | " << num(a.peak_median, 0) << " |\n";
   }
 
   out << "\n## Per category\n\n"
-      << "| Category | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | GT parts | median s |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|\n";
+      << "| Category | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | GT parts | median s |\n"
+      << "|---|---|---|---|---|---|---|---|" << found_rule << "---|---|---|\n";
   for(const std::string& c : categories)
     for(const std::string& m : methods)
     {
       const Aggregate a = aggregate(rows, m, c);
       if(a.n_all == 0) continue;
       out << "| " << c << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
-          << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3)
-          << " | " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " |\n";
+          << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | "
+          << num(a.sc, 3) << " |" << found_cells(a) << " " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | "
+          << num(a.t_median, 3) << " |\n";
     }
 
   // Halves for tuning and checking: the shapes in name order, alternately in half A and half B.
@@ -678,8 +855,8 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
     for(Row& r : halves)
       r.category = (std::lower_bound(names.begin(), names.end(), r.shape) - names.begin()) % 2 ? "B" : "A";
     out << "\n## Halves (shapes in name order, alternately A and B)\n\n"
-        << "| Half | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | SC ↑ | parts | median parts | median s |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|\n";
+        << "| Half | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | median parts | median s |\n"
+        << "|---|---|---|---|---|---|---|---|" << found_rule << "---|---|---|\n";
     for(const std::string h : {"A", "B"})
       for(const std::string& m : methods)
       {
@@ -688,8 +865,9 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
         for(const Row& r : halves)
           if(r.ok && r.method == m && r.category == h) parts.push_back(double(r.parts));
         out << "| " << h << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
-            << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << num(a.sc, 3)
-            << " | " << num(a.parts, 1) << " | " << num(median(parts), 1) << " | " << num(a.t_median, 3) << " |\n";
+            << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | "
+            << num(a.sc, 3) << " |" << found_cells(a) << " " << num(a.parts, 1) << " | " << num(median(parts), 1)
+            << " | " << num(a.t_median, 3) << " |\n";
       }
   }
 
@@ -1183,7 +1361,7 @@ int main(int argc, char** argv)
                     std::to_string(info.number_of_input_faces);
 
     std::vector<std::size_t> samples;
-    std::vector<std::vector<long> > gt_samples;
+    std::vector<std::vector<long> > gt_samples, gt_faces; // gt_faces: in mesh face order
     std::string shape_note;
     if(shape_error.empty())
     {
@@ -1209,6 +1387,8 @@ int main(int argc, char** argv)
         gt_counts.push_back(std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin()));
         gt_parts += double(gt_counts.back());
         gt_samples.push_back(std::move(g));
+        gt_faces.emplace_back();
+        for(Face f : faces(mesh)) gt_faces.back().push_back(file_labels[info.face_to_input[std::size_t(f)]]);
       }
       std::sort(gt_counts.begin(), gt_counts.end());
       if(!gt_counts.empty()) base.k = gt_counts[(gt_counts.size() - 1) / 2];
@@ -1219,6 +1399,7 @@ int main(int argc, char** argv)
         shape_note += (shape_note.empty() ? "" : "; ") + std::string("reader reoriented ") +
                       std::to_string(info.number_of_reversed_components) + " inward component(s)";
     }
+    const Shape_truth truth = read_truth(e, mesh, gt_faces, shape_note);
 
     auto finish = [&](Row& r) {
       r.peak_mb = status_mb("VmHWM:");
@@ -1228,7 +1409,10 @@ int main(int argc, char** argv)
                 << " " << std::setw(22) << r.method << std::right
                 << (r.ok ? " ok   " : " ERROR ") << " " << num(r.t_method, 3) << " s  mIoU " << num(r.miou, 3)
                 << " RI " << num(r.ri, 3) << " VoI " << num(r.voi, 3) << " SC " << num(r.sc, 3)
-                << " parts " << r.parts << (r.ok ? "" : "  " + r.error)
+                << " CD " << num(r.cd, 3) << " parts " << r.parts
+                << (r.found < 0 ? "" : " found " + count(r.found) + "/" + count(r.true_primitives) + " thin " +
+                                         count(r.thin_found) + "/" + count(r.thin_total))
+                << (r.ok ? "" : "  " + r.error)
                 << (r.note.empty() ? "" : "  [" + r.note + "]") << std::endl;
       rows.push_back(r);
     };
@@ -1255,6 +1439,7 @@ int main(int argc, char** argv)
       r.method = run.first;
       if(!shape_error.empty()) { r.error = shape_error; finish(r); continue; }
       std::vector<std::size_t> labels;
+      std::vector<PD::Superquadric<K> > primitives;
       begin_method(r);
       t0 = std::chrono::steady_clock::now();
       try
@@ -1269,7 +1454,7 @@ int main(int argc, char** argv)
             PD::IO::read_triangle_mesh(e.mesh.string(), mesh1);
             r.t_read = seconds_since(tr);
             t0 = std::chrono::steady_clock::now();
-            r.parts = run_ours(mesh1, labels, PD::parameters::stage_timings(&st));
+            r.parts = run_ours(mesh1, labels, PD::parameters::stage_timings(&st), &primitives);
             r.t_method = seconds_since(t0);
           };
 #ifdef CGAL_LINKED_WITH_TBB
@@ -1293,7 +1478,8 @@ int main(int argc, char** argv)
           r.parts = run_ours(mesh, labels,
                              PD::parameters::combine(PD::parameters::stage_timings(&st),
                                                      PD::parameters::number_of_parts(r.k),
-                                                     PD::parameters::part_hierarchy(&h)));
+                                                     PD::parameters::part_hierarchy(&h)),
+                             &primitives);
           r.t_method = seconds_since(t0);
           r.t_hierarchy = st.hierarchy;
           r.leaves = h.number_of_leaves();
@@ -1321,7 +1507,7 @@ int main(int argc, char** argv)
         {
           PD::Stage_timings st;
           if(run.second == nullptr)
-            r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st));
+            r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st), &primitives);
           else
           {
             const Variant& v = *run.second;
@@ -1350,7 +1536,8 @@ int main(int argc, char** argv)
                                                        PD::parameters::residual_tolerance(v.residual_tolerance),
                                                        PD::parameters::boundary_smoothness(v.smoothness),
                                                        PD::parameters::merge_primitives(v.merge_primitives),
-                                                       PD::parameters::minimum_merge_iou(v.merge_iou)));
+                                                       PD::parameters::minimum_merge_iou(v.merge_iou)),
+                               &primitives);
           }
           r.t_method = seconds_since(t0);
           r.t_prior = st.prior;
@@ -1365,6 +1552,19 @@ int main(int argc, char** argv)
           }
         }
         score(labels, samples, gt_samples, r);
+        r.cd = mean_cut_discrepancy(mesh, labels, gt_faces);
+        if(run.first.compare(0, 3, "sdf") != 0 && !truth.primitives.empty())
+        {
+          score_primitives(truth.primitives, primitives, labels, gt_faces.front(), truth.face_area, r);
+          write_primitives(fs::path(o.out) / "primitives" / (e.name + "." + run.first + ".tsv"), primitives);
+        }
+        else if(!truth.primitives.empty())
+        {
+          // no primitives to match: found is n/a
+          r.true_primitives = long(truth.primitives.size());
+          r.thin_total = long(std::count_if(truth.primitives.begin(), truth.primitives.end(),
+                                            [](const pd_benchmark::True_primitive& t) { return t.thin; }));
+        }
         r.ok = true;
       }
       catch(const std::exception& ex)

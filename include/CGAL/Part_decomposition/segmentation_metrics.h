@@ -10,13 +10,19 @@
 
 #include <CGAL/Part_decomposition/parameters.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -371,6 +377,278 @@ Segmentation_scores evaluate_segmentation(const TriangleMesh& tm,
     p.push_back(get(prediction, face_list[f]));
   }
   return compare_segmentations(g, p);
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Points along the cut edges of one labeling, each standing for the piece of edge around it.
+template <typename GT>
+struct Cut_samples
+{
+  std::vector<typename GT::Point_3> points;
+  std::vector<double> lengths;                  // the length of edge each point stands for
+  std::vector<std::size_t> segment_of;          // the cut edge of each point, in `segments`
+  std::vector<typename GT::Segment_3> segments; // the cut edges
+};
+
+// The edges whose two faces carry different labels (border edges are not cuts), each cut in
+// ceil(length / spacing) equal pieces (one if spacing is 0) sampled at their midpoints.
+template <typename TriangleMesh, typename VPM, typename LabelMap, typename GT>
+void sample_cuts(const TriangleMesh& tm, const VPM& vpm, const LabelMap& labels, double spacing,
+                 const GT& gt, Cut_samples<GT>& out)
+{
+  typedef typename GT::Point_3 Point_3;
+  const auto barycenter = gt.construct_barycenter_3_object();
+  const auto squared_distance = gt.compute_squared_distance_3_object();
+  const auto segment = gt.construct_segment_3_object();
+  for(auto e : edges(tm))
+  {
+    const auto h = halfedge(e, tm), o = opposite(h, tm);
+    if(is_border(h, tm) || is_border(o, tm) || get(labels, face(h, tm)) == get(labels, face(o, tm)))
+      continue;
+    const Point_3 a = get(vpm, source(h, tm)), b = get(vpm, target(h, tm));
+    const double length = std::sqrt(CGAL::to_double(squared_distance(a, b)));
+    const double pieces = spacing > 0. ? std::ceil(length / spacing) : 1.;
+    const std::size_t n = pieces > 1. ? std::size_t(pieces) : 1;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double t = (double(i) + 0.5) / double(n);
+      out.points.push_back(barycenter(a, 1. - t, b));
+      out.lengths.push_back(length / double(n));
+      out.segment_of.push_back(out.segments.size());
+    }
+    out.segments.push_back(segment(a, b));
+  }
+}
+
+// The mean over the points of `from`, weighted by length, of the distance to the cut edge that
+// holds the nearest point of `to`: at least the distance to the cuts of `to`, at most that plus
+// half the spacing.
+template <typename GT>
+double mean_distance_to_cuts(const Cut_samples<GT>& from, const Cut_samples<GT>& to, const GT& gt)
+{
+  typedef typename GT::Point_3 Point_3;
+  typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_map;
+  typedef CGAL::Search_traits_3<GT> Base_traits;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+  typedef CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits> > Distance;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Search;
+  typedef typename Search::Tree Tree;
+
+  const Point_map point_map = CGAL::make_property_map(to.points);
+  std::vector<std::size_t> ids(to.points.size());
+  for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
+  tree.build();
+  const Distance distance(point_map);
+  const auto squared_distance = gt.compute_squared_distance_3_object();
+  double weighted = 0., total = 0., plain = 0.;
+  for(std::size_t i = 0; i < from.points.size(); ++i)
+  {
+    const Search search(tree, from.points[i], 1, 0., true, distance);
+    const std::size_t j = search.begin()->first;
+    // the smaller of the two: a point on both cuts is at distance 0 exactly, without rounding
+    const double d = std::sqrt((std::min)(CGAL::to_double(search.begin()->second),
+      CGAL::to_double(squared_distance(from.points[i], to.segments[to.segment_of[j]]))));
+    weighted += from.lengths[i] * d;
+    total += from.lengths[i];
+    plain += d;
+  }
+  // every cut edge of zero length: the plain mean
+  return total > 0. ? weighted / total : plain / double(from.points.size());
+}
+
+// The area-weighted mean distance from the surface to its area centroid. The integral over a face
+// is the centroid rule on its regular split into sub-triangles whose edges are at most `h` long.
+template <typename TriangleMesh, typename VPM>
+double average_radius(const TriangleMesh& tm, const VPM& vpm, double h)
+{
+  std::vector<std::array<double, 9> > triangles;
+  std::vector<double> areas;
+  double area = 0., c[3] = {0., 0., 0.};
+  for(auto f : faces(tm))
+  {
+    const auto hf = halfedge(f, tm);
+    std::array<double, 9> t;
+    int k = 0;
+    for(auto v : {source(hf, tm), target(hf, tm), target(next(hf, tm), tm)})
+    {
+      const auto p = get(vpm, v);
+      t[k++] = CGAL::to_double(p.x());
+      t[k++] = CGAL::to_double(p.y());
+      t[k++] = CGAL::to_double(p.z());
+    }
+    const double u[3] = {t[3] - t[0], t[4] - t[1], t[5] - t[2]}, w[3] = {t[6] - t[0], t[7] - t[1], t[8] - t[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double a = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for(int i = 0; i < 3; ++i) c[i] += a * (t[i] + t[3 + i] + t[6 + i]) / 3.;
+    area += a;
+    triangles.push_back(t);
+    areas.push_back(a);
+  }
+  if(!(area > 0.)) return 0.;
+  for(int i = 0; i < 3; ++i) c[i] /= area;
+
+  auto distance = [&c](const std::array<double, 9>& t, double s, double r) {
+    double d2 = 0.;
+    for(int i = 0; i < 3; ++i)
+    {
+      const double x = t[i] + s * (t[3 + i] - t[i]) + r * (t[6 + i] - t[i]) - c[i];
+      d2 += x * x;
+    }
+    return std::sqrt(d2);
+  };
+  double sum = 0.;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    const std::array<double, 9>& t = triangles[f];
+    double longest = 0.;
+    for(int e = 0; e < 3; ++e)
+    {
+      const int a = 3 * e, b = 3 * ((e + 1) % 3);
+      longest = (std::max)(longest, std::sqrt(CGAL::square(t[a] - t[b]) + CGAL::square(t[a + 1] - t[b + 1]) +
+                                              CGAL::square(t[a + 2] - t[b + 2])));
+    }
+    const int m = h > 0. ? int((std::min)(1024., (std::max)(1., std::ceil(longest / h)))) : 1;
+    double face_sum = 0.;
+    for(int i = 0; i < m; ++i)
+      for(int j = 0; i + j < m; ++j)
+      {
+        face_sum += distance(t, (i + 1. / 3.) / m, (j + 1. / 3.) / m); // upward sub-triangle
+        if(i + j + 1 < m) face_sum += distance(t, (i + 2. / 3.) / m, (j + 2. / 3.) / m); // downward
+      }
+    sum += areas[f] * face_sum / (double(m) * double(m));
+  }
+  return sum / area;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPartDecompositionRef
+computes the Cut Discrepancy of the Princeton segmentation benchmark (Chen, Golovinskiy and
+Funkhouser, "A Benchmark for 3D Mesh Segmentation", SIGGRAPH 2009) between two segmentations of
+the faces of `tm`: 0 when their boundaries coincide, larger as they lie further apart.
+
+The <em>cuts</em> of a segmentation are the edges whose two incident faces carry different labels;
+border edges are never cuts, and neither are the edges between faces of the same label, so two
+faces of one label in different components make no cut. Labels are compared for equality only.
+With \f$C_1\f$ and \f$C_2\f$ the cuts of `ground_truth` and `prediction`,
+\f[
+\mathrm{CD} = \frac{\bar d(C_1, C_2) + \bar d(C_2, C_1)}{\bar R},
+\qquad \bar d(C_a, C_b) = \text{mean over the points } p \text{ of } C_a \text{ of } \min_{q \in C_b} |p - q|,
+\f]
+where \f$\bar R\f$ is the average radius of the surface, the area-weighted mean distance from
+the surface to its area centroid. The measure is symmetric in the two segmentations.
+
+<b>Euclidean, not geodesic.</b> The Princeton benchmark measures the distance from a cut to the
+other cuts along the surface (geodesic distance). This function uses the straight-line distance
+in space, which is never larger and equals it when the shortest path is a straight segment on
+the surface (cuts on one flat region); on a curved or folded surface the two differ, so the
+values are not those of the Princeton tables.
+
+<b>Discretization.</b> The mean \f$\bar d\f$ is taken over points placed along every cut edge at
+the midpoints of \f$\lceil \ell / s \rceil\f$ equal pieces of the edge of length \f$\ell\f$
+(at least its midpoint), each weighted by its piece's length, so that it is a mean per unit
+length of cut. The distance of a point to \f$C_b\f$ is the smaller of its distances to the nearest
+point of \f$C_b\f$ (a kd-tree query) and to the cut edge holding that point: at least the exact
+distance, at most the exact distance plus \f$s/2\f$. \f$\bar R\f$ integrates by the centroid rule over a regular split of
+each face into sub-triangles of edges at most 1/128 of the bounding-box diagonal (at most
+\f$1024^2\f$ per face).
+
+<b>Segmentations without cuts.</b> If neither segmentation has a cut (each gives one label to
+every face of a connected component, for example both a single part), the result is 0. If exactly one of them
+has no cut, the measure is undefined and the result is NaN: a caller averaging over several
+ground truths skips it. The result is NaN too if the average radius is 0 (every face is
+degenerate).
+
+\par Complexity
+\f$O(E + n \log n)\f$ for \f$E\f$ edges and \f$n\f$ points on the cuts (the cut length over
+\f$s\f$), plus the integral of \f$\bar R\f$, \f$O(F + A / h^2)\f$ for \f$F\f$ faces of total
+area \f$A\f$ and \f$h\f$ 1/128 of the diagonal.
+
+\tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `VertexListGraph`
+\tparam GroundTruthMap a model of `ReadablePropertyMap` with
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and a label type (with
+        `operator==`, such as an integer type) as value type
+\tparam PredictionMap likewise, possibly of another label type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the mesh
+\param ground_truth the ground-truth part of each face
+\param prediction the predicted part of each face
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{grid_spacing}
+    \cgalParamDescription{the spacing \f$s\f$ of the points along the cuts; 0 places one point at
+                          the midpoint of each cut edge}
+    \cgalParamType{`double`, at least 0}
+    \cgalParamDefault{1/1000 of the diagonal of the bounding box of the vertices}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\pre `CGAL::is_triangle_mesh(tm)`
+\pre the spacing is not negative.
+
+\returns the cut discrepancy (a length over a length: no unit), 0 or NaN as described above.
+
+\sa `evaluate_segmentation()`, which samples the surface and gives the region-based scores; the
+cut discrepancy is a separate function because it needs the faces and their labels, not samples.
+*/
+template <typename TriangleMesh, typename GroundTruthMap, typename PredictionMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double cut_discrepancy(const TriangleMesh& tm,
+                       GroundTruthMap ground_truth,
+                       PredictionMap prediction,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+
+  CGAL_precondition(CGAL::is_triangle_mesh(tm));
+  const GT gt = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  CGAL::Bbox_3 box;
+  bool has_vertex = false;
+  for(auto v : vertices(tm))
+  {
+    box += get(vpm, v).bbox();
+    has_vertex = true;
+  }
+  const double diagonal = !has_vertex ? 0. :
+    std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+              CGAL::square(box.zmax() - box.zmin()));
+  const double spacing = choose_parameter(get_parameter(np, CGAL::internal_np::grid_spacing), diagonal / 1000.);
+  CGAL_precondition(!(spacing < 0.));
+
+  internal::Cut_samples<GT> cuts_g, cuts_p;
+  internal::sample_cuts(tm, vpm, ground_truth, spacing, gt, cuts_g);
+  internal::sample_cuts(tm, vpm, prediction, spacing, gt, cuts_p);
+  if(cuts_g.points.empty() && cuts_p.points.empty()) return 0.;
+  const double NaN = std::numeric_limits<double>::quiet_NaN();
+  if(cuts_g.points.empty() || cuts_p.points.empty()) return NaN;
+  const double radius = internal::average_radius(tm, vpm, diagonal / 128.);
+  if(!(radius > 0.)) return NaN;
+  return (internal::mean_distance_to_cuts(cuts_g, cuts_p, gt) +
+          internal::mean_distance_to_cuts(cuts_p, cuts_g, gt)) / radius;
 }
 
 } // namespace Part_decomposition

@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -154,6 +155,84 @@ inline std::size_t append(Mesh& a, const Mesh& b)
   const std::size_t before = num_faces(a);
   a.join(b);
   return before;
+}
+
+// Closed L-shaped prism made of two plates of thickness t, extruded along z over [0, w]:
+// plate A = [0, la] x [0, t] (along x), plate B = [0, t] x [0, lb] (along y); they share the
+// corner square [0, t]^2. The surface is the boundary of a rectilinear grid of cells (t across
+// the plates, about h elsewhere), each boundary square split into two triangles.
+// If `plate` is given, it receives the true plate of each face in the order of faces(mesh):
+// 1 (B) if the face centroid has y > t, else 0 (A): the corner region and the walls on the
+// plane y = t go to plate A. Needs t < la and t < lb.
+inline Mesh make_l_bracket(double la, double lb, double t, double w, double h, std::vector<int>* plate = nullptr)
+{
+  // cell walls from `from` to `to`, about h apart
+  auto breaks = [h](double from, double to) {
+    std::vector<double> b;
+    const int n = std::max(1, int(std::lround((to - from) / h)));
+    for(int i = 0; i <= n; ++i) b.push_back(from + (to - from) * i / n);
+    return b;
+  };
+  // x and y: one cell across the thickness, then cells of about h; z: cells of about h.
+  std::vector<double> g[3] = {{0., t}, {0., t}, breaks(0., w)};
+  for(int a = 0; a < 2; ++a)
+  {
+    const std::vector<double> rest = breaks(t, a == 0 ? la : lb);
+    g[a].insert(g[a].end(), rest.begin() + 1, rest.end());
+  }
+  const int n[3] = {int(g[0].size()) - 1, int(g[1].size()) - 1, int(g[2].size()) - 1};
+  // cell (i, j, k) is solid if it lies in plate A (j == 0) or in plate B (i == 0)
+  auto solid = [&](const std::array<int, 3>& c) {
+    for(int a = 0; a < 3; ++a)
+      if(c[a] < 0 || c[a] >= n[a]) return false;
+    return c[0] == 0 || c[1] == 0;
+  };
+  Soup s;
+  for(int a = 0; a < 3; ++a)
+  {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    std::array<int, 3> c;
+    for(c[a] = -1; c[a] < n[a]; ++c[a])
+      for(c[u] = 0; c[u] < n[u]; ++c[u])
+        for(c[v] = 0; c[v] < n[v]; ++c[v])
+        {
+          std::array<int, 3> d = c;
+          ++d[a];
+          const bool low = solid(c), high = solid(d);
+          if(low == high) continue;
+          // the square between the two cells, facing out of the solid one
+          auto P = [&](int du, int dv) {
+            double x[3];
+            x[a] = g[a][d[a]];
+            x[u] = g[u][c[u] + du];
+            x[v] = g[v][c[v] + dv];
+            return Point(x[0], x[1], x[2]);
+          };
+          if(low)
+          {
+            s.triangle(P(0, 0), P(1, 0), P(1, 1));
+            s.triangle(P(0, 0), P(1, 1), P(0, 1));
+          }
+          else
+          {
+            s.triangle(P(0, 0), P(1, 1), P(1, 0));
+            s.triangle(P(0, 0), P(0, 1), P(1, 1));
+          }
+        }
+  }
+  Mesh m = s.mesh();
+  if(plate != nullptr)
+  {
+    plate->clear();
+    for(auto f : faces(m))
+    {
+      // a vertex above y = t: the same as the centroid, without its rounding on the plane y = t
+      bool above = false;
+      for(auto vd : vertices_around_face(halfedge(f, m), m)) above = above || m.point(vd).y() > t;
+      plate->push_back(above ? 1 : 0);
+    }
+  }
+  return m;
 }
 
 } // namespace test_shapes
