@@ -89,6 +89,16 @@ Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<doub
 
 // Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
 // parameter out of its range is an error whatever the mesh.
+// The mean absolute radial distance from the points to the surface of `sq`.
+template <typename GeomTraits>
+double mean_surface_distance(const Superquadric<GeomTraits>& sq, const std::vector<std::array<double, 3> >& points)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  double sum = 0.;
+  for(const std::array<double, 3>& p : points) sum += std::abs(sq.signed_distance(Point_3(p[0], p[1], p[2])));
+  return points.empty() ? 0. : sum / double(points.size());
+}
+
 template <typename NamedParameters>
 void check_stage_parameters(const NamedParameters& np)
 {
@@ -470,8 +480,9 @@ public:
   /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`
   /// when no primitive was fitted to it. \pre `assign_parts()` was called.
   const std::vector<std::size_t>& part_to_primitive() const { return m_part_to_primitive; }
-  /// for each part, its superquadric in input coordinates: the fitted primitive, or, for a part
-  /// without one, the box-like superquadric of its principal-axis bounding box.
+  /// for each part, its superquadric in input coordinates: its fitted primitive if no other part
+  /// has the same one and it lies on average as close to the part's vertices, else (and for a
+  /// part without one) the box-like superquadric of its principal-axis bounding box.
   /// \pre `assign_parts()` was called.
   const std::vector<Primitive>& part_primitives() const { return m_part_primitives; }
   /// per part, 1 if it is a residual part: surface details that no primitive explains (see the
@@ -569,30 +580,37 @@ private:
     make_part_primitives();
   }
 
+  // A part keeps its fitted primitive if no other part has it and it lies on the part's surface
+  // at least as closely as the box-like superquadric of the part's faces; parts that share one
+  // (a part cut by the regions of the pieces, a thin plate the fitter saw as one with its
+  // neighbour), parts without one and parts thinner than the fitting grid get that box.
   void make_part_primitives()
   {
-    m_part_primitives.clear();
-    std::vector<std::vector<std::array<double, 3> > > orphan_points(m_part_to_primitive.size());
-    bool orphans = false;
-    for(std::size_t k = 0; k < m_part_to_primitive.size(); ++k)
-      orphans = orphans || m_part_to_primitive[k] >= m_fitting.input_primitives.size();
-    if(orphans)
-      for(auto f : faces(m_tm))
-      {
-        const std::size_t k = m_parts[std::size_t(get(m_fim, f))];
-        if(k >= m_part_to_primitive.size() || m_part_to_primitive[k] < m_fitting.input_primitives.size()) continue;
-        for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
-        {
-          const auto& p = get(m_vpm, v);
-          orphan_points[k].push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-        }
-      }
-    for(std::size_t k = 0; k < m_part_to_primitive.size(); ++k)
+    const std::size_t K = m_part_to_primitive.size(), P = m_fitting.input_primitives.size();
+    std::vector<std::size_t> users(P, 0);
+    for(std::size_t k = 0; k < K; ++k)
+      if(m_part_to_primitive[k] < P) ++users[m_part_to_primitive[k]];
+    std::vector<std::vector<std::array<double, 3> > > points(K);
+    for(auto f : faces(m_tm))
     {
-      if(m_part_to_primitive[k] < m_fitting.input_primitives.size())
+      const std::size_t k = m_parts[std::size_t(get(m_fim, f))];
+      if(k >= K) continue;
+      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
+      {
+        const auto& p = get(m_vpm, v);
+        points[k].push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+      }
+    }
+    m_part_primitives.clear();
+    for(std::size_t k = 0; k < K; ++k)
+    {
+      const Primitive box = internal::bounding_superquadric<Geom_traits>(points[k]);
+      const bool own = m_part_to_primitive[k] < P && users[m_part_to_primitive[k]] == 1;
+      if(own && internal::mean_surface_distance(m_fitting.input_primitives[m_part_to_primitive[k]], points[k]) <=
+                  internal::mean_surface_distance(box, points[k]))
         m_part_primitives.push_back(m_fitting.input_primitives[m_part_to_primitive[k]]);
       else
-        m_part_primitives.push_back(internal::bounding_superquadric<Geom_traits>(orphan_points[k]));
+        m_part_primitives.push_back(box);
     }
   }
 
@@ -871,9 +889,11 @@ are chained with `parameters::combine()`)
   \cgalParamNEnd
   \cgalParamNBegin{primitive_output_iterator}
     \cgalParamDescription{receives, for each part in increasing id, its superquadric in input
-                          coordinates: the fitted primitive, or, for a part no primitive could be
-                          fitted to (a flat sheet has no volume), the box-like superquadric of its
-                          principal-axis bounding box}
+                          coordinates: its fitted primitive if no other part has the same one
+                          and it lies on average as close to the part's vertices, else (several
+                          parts explained by one primitive, a part thinner than the fitting grid,
+                          or a part no primitive could be fitted to, as a flat sheet) the box-like
+                          superquadric of its principal-axis bounding box}
     \cgalParamType{a model of `OutputIterator` accepting `Superquadric<GeomTraits>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
