@@ -392,7 +392,7 @@ std::vector<Variant> all_variants()
   add("r128")->resolutions = {32, 64, 128};
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
-  for(double t : {0.7, 0.9}) add("merge_iou_" + std::to_string(int(t * 100)))->merge_iou = t;
+  for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->merge_iou = t;
   for(double t : {0.7, 0.8, 0.9})
   {
     Variant* v = add("r128_merge_iou_" + std::to_string(int(t * 100)));

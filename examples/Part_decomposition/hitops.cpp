@@ -155,7 +155,7 @@ const char* const usage_text =
   "  --vote-temperature 1     voxels of the finest grid\n"
   "  --boundary-smoothness 1  cost of a part boundary across smooth surface (0: the patch vote)\n"
   "  --no-primitive-merge     keep apart the primitives that one superquadric explains\n"
-  "  --min-merge-iou 0.8      voxel IoU from which one superquadric explains two primitives\n"
+  "  --min-merge-iou 0.6      voxel IoU from which one superquadric explains two primitives\n"
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
   "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
   "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"

@@ -206,7 +206,7 @@ constexpr std::size_t maximum_rejections_in_a_row = 4;
 /// whether adjacent primitives that one superquadric explains are merged after the fit
 constexpr bool merge_primitives = true;
 /// the voxel intersection over union from which one superquadric explains two primitives
-constexpr double minimum_merge_iou = 0.8;
+constexpr double minimum_merge_iou = 0.6;
 /// \f$q\f$, the dihedral percentile of the over-segmentation cut
 constexpr double dihedral_percentile = 90.;
 /// the boundary-smoothing iterations of the over-segmentation
@@ -291,7 +291,7 @@ package's parameters are:
 | `maximum_solver_evaluations()` | `int` | 40 | `fit_superquadrics()` |
 | `maximum_rejections_in_a_row()` | `std::size_t` | 4 | `fit_superquadrics()` |
 | `merge_primitives()` | `bool` | `true` | `fit_superquadrics()` |
-| `minimum_merge_iou()` | `double` | 0.8 | `fit_superquadrics()` |
+| `minimum_merge_iou()` | `double` | 0.6 | `fit_superquadrics()` |
 | `dihedral_percentile()` | `double` | 90 | `over_segment()` |
 | `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |

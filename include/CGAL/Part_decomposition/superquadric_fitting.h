@@ -92,8 +92,8 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
 }
 
 // The fraction of Freeze voxels along the common surface of two primitives from which they are
-// never merged: a joint the prior marked.
-constexpr double primitive_merge_freeze_fraction = 0.5;
+// never merged: a joint the prior marked (tuned with minimum_merge_iou, see the manual).
+constexpr double primitive_merge_freeze_fraction = 0.2;
 
 // The prior and the distance field come from other calls: a mismatch would index out of the grids.
 inline void check_prior_and_distance_field(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf)
