@@ -26,9 +26,6 @@
 #include <limits>
 #include <type_traits>
 #include <vector>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 namespace CGAL {
 namespace Part_decomposition {
@@ -143,11 +140,9 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
     check_fitting_zones(*zones, prior, fit_res);
   Superquadric_fitter<ConcurrencyTag, GeomTraits> fitter(prior, tsdf, *zones, fit_res, parameters);
   Superquadric_fitting_result<GeomTraits> result = fitter.run();
-  auto t0 = std::chrono::steady_clock::now(); std::size_t k0 = result.primitives.size();
   if(parameters.merge_primitives)
     merge_explained_primitives(result, prior.classes, tsdf.values, parameters.minimum_merge_iou,
                                primitive_merge_freeze_fraction);
-  if(std::getenv("PD_MERGE_TIME")) std::fprintf(stderr, "merge %zu -> %zu in %.3f s\n", k0, result.primitives.size(), std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count());
   return result;
 }
 
