@@ -17,6 +17,9 @@
 #include "shipped_shapes.h"
 #include "test_shapes.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -293,7 +296,8 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
           PDP::minimum_patch_size(D::minimum_patch_size), PDP::patch_split_size(D::patch_split_size),
           PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets),
           PDP::use_pieces(D::use_pieces), PDP::crease_angle(D::crease_angle),
-          PDP::minimum_part_area(D::minimum_part_area)));
+          PDP::minimum_part_area(D::minimum_part_area), PDP::boundary_smoothness(D::boundary_smoothness),
+          PDP::merge_primitives(D::merge_primitives), PDP::minimum_merge_iou(D::minimum_merge_iou)));
   CHECK(na == 3u); // two balls and a bar
   CHECK(nb == na);
   CHECK(b == a);
@@ -455,6 +459,51 @@ std::size_t number_of_labels(const std::vector<std::size_t>& label)
 }
 
 } // namespace
+
+TEST_CASE("an L-bracket of plates thinner than two voxels gives two parts, each with a thin superquadric", "[decompose][thin]")
+{
+  // Plates 0.025 thick on a bracket 1 long: under two voxels (0.031) of the 64^3 grid.
+  const double la = 1., lb = 0.7, t = 0.025, w = 0.4;
+  std::vector<int> plate;
+  Mesh m = test_shapes::make_l_bracket(la, lb, t, w, 0.02, &plate);
+  std::vector<std::size_t> part(num_faces(m));
+  std::vector<PD::Superquadric<K> > primitives;
+  const std::size_t n = PD::decompose(m, CGAL::make_property_map(part),
+                                      PDP::primitive_output_iterator(std::back_inserter(primitives)));
+  REQUIRE(n == 2);
+  // each plate is (almost all) one part, the two parts differ
+  std::array<std::map<std::size_t, std::size_t>, 2> count;
+  std::array<std::size_t, 2> total = {{0, 0}};
+  for(face_descriptor f : faces(m))
+  {
+    ++count[std::size_t(plate[std::size_t(f)])][part[std::size_t(f)]];
+    ++total[std::size_t(plate[std::size_t(f)])];
+  }
+  std::array<std::size_t, 2> major;
+  for(std::size_t p = 0; p < 2; ++p)
+  {
+    major[p] = count[p].begin()->first;
+    for(const auto& c : count[p])
+      if(c.second > count[p][major[p]]) major[p] = c.first;
+    CHECK(double(count[p][major[p]]) >= 0.9 * double(total[p]));
+  }
+  REQUIRE(major[0] != major[1]);
+  // the superquadric of each plate's part is a thin solid on the plate: its centre within three
+  // voxels of the 64^3 grid (0.047) of the plate's centre (the cut may take the corner and two or
+  // three voxels of the other plate's outer faces, which the box then spans), flat: its smallest
+  // semi-axis under a quarter of its largest
+  const std::array<Point, 2> centre = {{Point(la / 2, t / 2, w / 2), Point(t / 2, lb / 2, w / 2)}};
+  for(std::size_t p = 0; p < 2; ++p)
+  {
+    const PD::Superquadric<K>& q = primitives[major[p]];
+    INFO("plate " << p << ": centre " << q.center() << ", semi-axes " << q.scales()[0] << " " << q.scales()[1] << " "
+                  << q.scales()[2]);
+    CHECK(std::sqrt(CGAL::squared_distance(q.center(), centre[p])) < 3. / 64.);
+    std::array<double, 3> a = q.scales();
+    std::sort(a.begin(), a.end());
+    CHECK(a[0] < 0.25 * a[2]);
+  }
+}
 
 TEST_CASE("pieces, their closedness and the regions between concave creases", "[pieces]")
 {

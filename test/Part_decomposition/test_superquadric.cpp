@@ -992,3 +992,98 @@ TEST_CASE("fit_superquadrics: out-of-range switches are refused by name", "[sdfs
   CHECK_THROWS_WITH(fit(P::coverage_target(0.)), Catch::Contains("coverage_target"));
   CHECK_THROWS_WITH(fit(P::flow_zone_tolerance(-1.)), Catch::Contains("flow_zone_tolerance"));
 }
+
+namespace {
+
+// A fitting result on the r^3 grid whose primitive k claims the voxels with centre in boxes[k]
+// (its superquadric is that box); the surface voxels of the union (claimed, with an unclaimed face
+// neighbour) are Flow, or Freeze where `freeze` holds; the distance is -1 inside the boxes, +1 out.
+struct Claimed_boxes
+{
+  PD::Superquadric_fitting_result<K> fit;
+  PD::Voxel_grid<PD::Voxel_class> classes;
+  PD::Voxel_grid<double> distance;
+};
+
+template <typename Freeze>
+Claimed_boxes claimed_boxes(int r, const std::vector<std::array<double, 6> >& boxes, const Freeze& freeze)
+{
+  Claimed_boxes out;
+  PD::Superquadric_fitting_result<K>& fit = out.fit;
+  fit.labels = PD::Voxel_grid<std::int32_t>(r, -1);
+  out.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
+  out.distance = PD::Voxel_grid<double>(r, 1.);
+  fit.claimed_voxels.resize(boxes.size());
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  for(std::size_t k = 0; k < boxes.size(); ++k)
+  {
+    const std::array<double, 6>& b = boxes[k];
+    fit.primitives.push_back(SQ({{(b[3] - b[0]) / 2, (b[4] - b[1]) / 2, (b[5] - b[2]) / 2}}, 0.1, 0.1, I,
+                                Point((b[0] + b[3]) / 2, (b[1] + b[4]) / 2, (b[2] + b[5]) / 2)));
+    for(std::size_t v = 0; v < fit.labels.size(); ++v)
+    {
+      const auto c = fit.labels.center(v);
+      if(c[0] > b[0] && c[0] < b[3] && c[1] > b[1] && c[1] < b[4] && c[2] > b[2] && c[2] < b[5])
+      {
+        fit.labels[v] = std::int32_t(k);
+        fit.claimed_voxels[k].push_back(v);
+        out.distance[v] = -1.;
+      }
+    }
+  }
+  for(std::size_t v = 0; v < fit.labels.size(); ++v)
+  {
+    if(fit.labels[v] < 0) continue;
+    int inside = 0;
+    PDI::for_each_face_neighbor(v, std::size_t(r), [&](std::size_t n) { inside += fit.labels[n] >= 0; });
+    if(inside < 6) out.classes[v] = freeze(fit.labels.center(v)) ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
+  }
+  const std::size_t n = boxes.size();
+  fit.input_primitives = fit.primitives;
+  fit.stage_resolution.assign(n, r);
+  fit.body_seeded.assign(n, true);
+  fit.seed_voxel.assign(n, 0);
+  fit.semi_axis_scale.assign(n, 1.);
+  fit.fit_cost.assign(n, 0.);
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("primitives that tile one box are merged into one superquadric of the box", "[sdfsqfit][merge]")
+{
+  const auto never = [](const std::array<double, 3>&) { return false; };
+  // a box [-0.3, 0.3] x [-0.1, 0.1] x [-0.15, 0.15] tiled by three slabs along x
+  const std::vector<std::array<double, 6> > slabs = {{{-0.3, -0.1, -0.15, -0.1, 0.1, 0.15}},
+                                                     {{-0.1, -0.1, -0.15, 0.1, 0.1, 0.15}},
+                                                     {{0.1, -0.1, -0.15, 0.3, 0.1, 0.15}}};
+  Claimed_boxes c = claimed_boxes(32, slabs, never);
+  const std::size_t voxels = c.fit.claimed_voxels[0].size() + c.fit.claimed_voxels[1].size() + c.fit.claimed_voxels[2].size();
+  PDI::merge_explained_primitives(c.fit, c.classes, c.distance, 0.6, 0.2);
+  REQUIRE(c.fit.primitives.size() == 1);
+  CHECK(c.fit.claimed_voxels[0].size() == voxels);
+  for(std::size_t v = 0; v < c.fit.labels.size(); ++v) CHECK(c.fit.labels[v] <= 0);
+  // the box, up to half a voxel on each side (the voxel centres span it less half a voxel)
+  std::array<double, 3> a = c.fit.primitives[0].scales();
+  std::sort(a.begin(), a.end());
+  CHECK(a[0] == Approx(0.1).margin(1. / 64));
+  CHECK(a[1] == Approx(0.15).margin(1. / 64));
+  CHECK(a[2] == Approx(0.3).margin(1. / 64));
+  CHECK(std::sqrt(CGAL::squared_distance(c.fit.primitives[0].center(), Point(0, 0, 0))) < 1. / 32);
+  CHECK(c.fit.input_primitives.size() == 1);
+  CHECK(c.fit.stage_resolution.size() == 1);
+
+  // a Freeze ring around the common faces of the slabs (a joint) keeps them apart
+  Claimed_boxes joint = claimed_boxes(32, slabs, [](const std::array<double, 3>& p) {
+    return std::abs(std::abs(p[0]) - 0.1) < 1.5 / 32;
+  });
+  PDI::merge_explained_primitives(joint.fit, joint.classes, joint.distance, 0.6, 0.2);
+  CHECK(joint.fit.primitives.size() == 3);
+
+  // an L of two boxes is not one box: they stay two
+  Claimed_boxes l = claimed_boxes(32, {{{-0.3, -0.3, -0.05, 0.3, -0.2, 0.05}}, {{-0.3, -0.2, -0.05, -0.2, 0.3, 0.05}}},
+                                  never);
+  PDI::merge_explained_primitives(l.fit, l.classes, l.distance, 0.6, 0.2);
+  CHECK(l.fit.primitives.size() == 2);
+  CHECK(l.fit.claimed_voxels[0].size() + l.fit.claimed_voxels[1].size() > 0);
+}
