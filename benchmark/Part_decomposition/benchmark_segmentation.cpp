@@ -385,7 +385,7 @@ std::vector<Variant> all_variants()
     r->residual_tolerance = t;
   }
   // the final labelling: the patch vote (0) and the weight of the boundary cost
-  for(double s : {0., 0.3, 3., 10.})
+  for(double s : {0., 0.3, 1., 3., 10.})
     add("smooth_" + std::to_string(int(s * 10)))->smoothness = s;
   // finer fitting: the last stage at 64, or the whole hierarchy one level finer
   add("fit64")->fitting_resolution_cap = 64;

@@ -153,7 +153,7 @@ const char* const usage_text =
   "  --dihedral-percentile 90   --smoothing-iterations 1\n"
   "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
   "  --vote-temperature 1     voxels of the finest grid\n"
-  "  --boundary-smoothness 1  cost of a part boundary across smooth surface (0: the patch vote)\n"
+  "  --boundary-smoothness 10 cost of a part boundary across smooth surface (0: the patch vote)\n"
   "  --no-primitive-merge     keep apart the primitives that one superquadric explains\n"
   "  --min-merge-iou 0.6      voxel IoU from which one superquadric explains two primitives\n"
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"

@@ -830,6 +830,25 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, positive}
     \cgalParamDefault{`1`}
   \cgalParamNEnd
+  \cgalParamNBegin{boundary_smoothness}
+    \cgalParamDescription{\f$\lambda\f$: the weight of the cost of cutting along the edges against the
+                          primitives' evidence in the final labelling of the faces (see
+                          `assign_parts()`); 0 gives the paper's vote of the patches}
+    \cgalParamType{`double`, non-negative}
+    \cgalParamDefault{`10`}
+  \cgalParamNEnd
+  \cgalParamNBegin{merge_primitives}
+    \cgalParamDescription{if `true`, adjacent fitted primitives that one superquadric explains are
+                          merged after the fit (see `fit_superquadrics()`). This step is not in the paper.}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_merge_iou}
+    \cgalParamDescription{the voxel intersection over union from which one superquadric explains two
+                          groups of primitives (see `fit_superquadrics()`)}
+    \cgalParamType{`double`, in `(0, 1]`}
+    \cgalParamDefault{`0.6`}
+  \cgalParamNEnd
   \cgalParamNBegin{keep_residual_patches}
     \cgalParamDescription{if `true`, the residual patches of the assignment (paper Sec.\ 3.4) are kept
                           as parts of their own instead of being forced onto a primitive: the patches

@@ -219,7 +219,7 @@ constexpr double patch_split_size = 0.0005;
 constexpr double vote_temperature = 1.;
 /// the cost of a part boundary per unit of length across smooth surface against the primitives'
 /// vote, in the final labelling of the faces (0: the paper's vote of the patches)
-constexpr double boundary_smoothness = 1.;
+constexpr double boundary_smoothness = 10.;
 /// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
 constexpr bool merge_thin_sheets = true;
 /// whether the parts follow the pieces of the mesh and their concave creases (`segment_pieces()`)
@@ -297,7 +297,7 @@ package's parameters are:
 | `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
 | `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
 | `vote_temperature()` | `double` | 1 | `assign_parts()` |
-| `boundary_smoothness()` | `double` | 1 | `assign_parts()` |
+| `boundary_smoothness()` | `double` | 10 | `assign_parts()` |
 | `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
 | `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |

@@ -305,10 +305,10 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
 
 /*!
 \ingroup PkgPartDecompositionRef
-transfers the primitives fitted in voxel space to the mesh (paper Sec.\ 3.3, App.\ E.4, Eq.\ 9): each
-patch of an over-segmentation of `tm` (see `over_segment()`) is given one primitive by a
-distance-weighted vote of its faces, and the patches given the same primitive form one part.
-
+transfers the primitives fitted in voxel space to the mesh (paper Sec.\ 3.3, App.\ E.4, Eq.\ 9).
+With `boundary_smoothness(0)`, as in the paper, each patch of an over-segmentation of `tm` (see
+`over_segment()`) is given one primitive by a distance-weighted vote of its faces, and the patches
+given the same primitive form one part:
 1. The centroid of each face \f$f\f$, mapped to the normalized cube by `normalization`, is matched
    to the nearest centre of a claimed voxel (a voxel of `claimed_labels` holding a primitive index
    \f$\ge 0\f$): \f$\hat k_f\f$ is that voxel's primitive and \f$d_f\f$ the Euclidean distance
@@ -319,6 +319,23 @@ distance-weighted vote of its faces, and the patches given the same primitive fo
 3. The patches with the same \f$k^*\f$ form one part. Parts are numbered `0` to `K-1` by increasing
    primitive index.
 
+By default (`boundary_smoothness` \f$\lambda > 0\f$, not in the paper) the faces are labelled one
+by one instead, by minimizing
+\f[
+E(k) = \sum_f \frac{A_f}{h^2}\,\frac{d_f(k_f) - d_f}{\tau_v}
+     + \lambda \sum_{e = (f, g),\, k_f \ne k_g} \frac{\ell_e}{h}\, c(\theta_e),
+\quad c(\theta) = -\log \max\left(10^{-3},\ \frac{\theta}{180^\circ} \cdot \begin{cases} 1 & \text{concave} \\ 0.08 & \text{convex}\end{cases}\right)
+\f]
+where \f$A_f\f$ is the area of face \f$f\f$, \f$d_f(k)\f$ the distance from its centroid to the
+nearest claimed voxel of primitive \f$k\f$, \f$h\f$ the voxel size, \f$\ell_e\f$ the length of
+edge \f$e\f$ and \f$\theta_e\f$ its dihedral angle (concave for the orientation of `tm`): a cut is
+cheap along a concave crease and expensive across smooth or convex surface, as in
+`CGAL::Surface_mesh_segmentation`. A face may only take the primitives claimed within two
+voxels of its centroid and at most two voxels farther than its nearest one; the faces with a
+single such primitive take it, and each edge-connected set of the others is labelled by alpha
+expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by CGAL's
+`alpha_expansion_graphcut()` on the faces that may take the expanded primitive. The faces of one
+primitive form one part, and the patches of `face_patch_map` are not used.
 If no voxel is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
 The result does not depend on the number of threads.
 
@@ -368,6 +385,17 @@ centroid); the vote is linear.
     \cgalParamType{`double`, positive}
     \cgalParamDefault{`1.0`}
   \cgalParamNEnd
+  \cgalParamNBegin{boundary_smoothness}
+    \cgalParamDescription{\f$\lambda\f$, the weight of the cut cost in the labelling of the faces; 0
+                          gives the vote of the patches}
+    \cgalParamType{`double`, non-negative}
+    \cgalParamDefault{`10.0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class (for the dihedral angles)}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \pre `CGAL::is_triangle_mesh(tm)`
@@ -375,7 +403,8 @@ centroid); the vote is linear.
 
 \returns the primitive index of each part, increasing: `K` values.
 
-\throws Invalid_input (`INVALID_PARAMETER`) if `vote_temperature` is not a positive finite number.
+\throws Invalid_input (`INVALID_PARAMETER`) if `vote_temperature` is not a positive finite number or
+`boundary_smoothness` is negative.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FacePatchMap,
           typename FacePartMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>

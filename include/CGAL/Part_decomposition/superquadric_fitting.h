@@ -201,6 +201,16 @@ manual, \ref PD_Deviations):
   \f$+\tau\f$ in the exterior.
 - Small residual regions: unclaimed non-Freeze components smaller than the surface \f$V_{min}\f$
   of the last stage take the label of their nearest claimed voxel.
+- Merged primitives (`merge_primitives`): the fitter may tile one box or one rounded solid with
+  several primitives. After the last stage, the two adjacent groups of primitives (claimed voxels
+  in the 26-neighbourhood of one surface voxel) whose union one superquadric explains best are
+  merged, as long as that superquadric reaches `minimum_merge_iou`, and never when more than 20% of
+  the surface voxels along their common boundary are Freeze (a joint the prior saw). The
+  superquadric of a union is the smallest box of its voxel centres on their principal axes, the
+  coordinate axes or the axes of the largest primitive of each group, with exponents 0.1, 0.5 or 1
+  (the best), and its score is the intersection over union of its voxels with the union's claimed
+  voxels, the unclaimed voxels inside the shape counting on neither side. The merged group's
+  primitive is that superquadric; the others are kept as fitted.
 
 The paper's literal version is reached with `fitting_resolution_cap(32)`,
 `use_exterior_band_samples(false)`, `use_reachable_regions(false)`, `use_seed_exclusion(false)`,
@@ -335,6 +345,18 @@ distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
                           `maximum_number_of_primitives`)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`4`}
+  \cgalParamNEnd
+  \cgalParamNBegin{merge_primitives}
+    \cgalParamDescription{if `true`, after the last stage, adjacent primitives that one superquadric
+                          explains are merged (see above); not in the paper}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_merge_iou}
+    \cgalParamDescription{the voxel intersection over union between the union of two groups' claimed
+                          voxels and its superquadric from which the groups are merged}
+    \cgalParamType{`double`, in `(0, 1]`}
+    \cgalParamDefault{`0.6`}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{if `true`, prints every accepted primitive, a summary of every stage and
