@@ -7,16 +7,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -30,6 +25,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "generated_shapes.h"
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -224,22 +221,7 @@ bool build(const Shape& shape, const std::string& folder)
   // Isotropic remeshing to about target_faces faces, keeping the sharp creases.
   const double area = PMP::area(result);
   const double target_length = std::sqrt(area / (std::sqrt(3.) / 4. * double(shape.target_faces)));
-  auto is_sharp = get(CGAL::edge_is_feature, result);
-  PMP::detect_sharp_edges(result, 50., is_sharp);
-  auto is_corner = result.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
-  for(auto vd : vertices(result))
-  {
-    int n = 0;
-    for(auto h : CGAL::halfedges_around_target(vd, result)) n += get(is_sharp, edge(h, result)) ? 1 : 0;
-    is_corner[vd] = n > 2;
-  }
-  PMP::isotropic_remeshing(faces(result), target_length, result,
-                           CGAL::parameters::number_of_iterations(5)
-                               .edge_is_constrained_map(is_sharp)
-                               .vertex_is_constrained_map(is_corner)
-                               .relax_constraints(true));
-  result.remove_property_map(is_corner);
-  result.collect_garbage();
+  pd_benchmark::remesh_keeping_creases(result, target_length);
 
   const bool closed = CGAL::is_closed(result);
   const bool self_intersecting = PMP::does_self_intersect(result);
@@ -248,31 +230,9 @@ bool build(const Shape& shape, const std::string& folder)
   result.remove_property_map(comp);
 
   // True part of each face: the primitive whose surface is nearest to the centroid.
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  std::vector<std::unique_ptr<Tree> > trees;
-  for(const Mesh& p : shape.parts)
-  {
-    trees.emplace_back(new Tree(faces(p).first, faces(p).second, p));
-    trees.back()->accelerate_distance_queries();
-  }
-  std::vector<int> label;
+  const std::vector<std::size_t> label = pd_benchmark::nearest_part_labels(result, shape.parts);
   std::vector<std::size_t> count(shape.parts.size(), 0);
-  for(auto f : faces(result))
-  {
-    const auto h = halfedge(f, result);
-    const Point c = CGAL::centroid(result.point(source(h, result)), result.point(target(h, result)),
-                                   result.point(target(next(h, result), result)));
-    int best = 0;
-    double best_d = trees[0]->squared_distance(c);
-    for(std::size_t i = 1; i < trees.size(); ++i)
-    {
-      const double d = trees[i]->squared_distance(c);
-      if(d < best_d) best_d = d, best = int(i);
-    }
-    label.push_back(best);
-    ++count[best];
-  }
+  for(std::size_t l : label) ++count[l];
 
   // Written by hand so that the face order of the file is the iteration order of `faces()`.
   const std::string off = folder + "/" + shape.name + ".off";
@@ -291,7 +251,7 @@ bool build(const Shape& shape, const std::string& folder)
     out << '\n';
   }
   std::ofstream seg(folder + "/" + shape.name + ".seg");
-  for(int l : label) seg << l << '\n';
+  for(std::size_t l : label) seg << l << '\n';
 
   std::cout << shape.name << ": " << num_faces(result) << " faces, " << num_vertices(result)
             << " vertices, closed " << closed << ", self-intersecting " << self_intersecting

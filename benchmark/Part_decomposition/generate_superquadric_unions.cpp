@@ -23,20 +23,16 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "generated_shapes.h"
 #include "parts_tsv.h"
 
 #include <algorithm>
@@ -743,56 +739,6 @@ bool sound_part(const Mesh& m)
   return !PMP::does_self_intersect(m);
 }
 
-// Isotropic remeshing at edge length L, keeping the creases (dihedral above 50 degrees) and the
-// vertices where more than two of them meet.
-void remesh(Mesh& m, double L)
-{
-  auto is_sharp = get(CGAL::edge_is_feature, m);
-  PMP::detect_sharp_edges(m, 50., is_sharp);
-  auto is_corner = m.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
-  for(auto v : vertices(m))
-  {
-    int n = 0;
-    for(auto h : CGAL::halfedges_around_target(v, m)) n += get(is_sharp, edge(h, m)) ? 1 : 0;
-    is_corner[v] = n > 2;
-  }
-  PMP::isotropic_remeshing(faces(m), L, m,
-                           CGAL::parameters::number_of_iterations(5)
-                             .edge_is_constrained_map(is_sharp)
-                             .vertex_is_constrained_map(is_corner)
-                             .relax_constraints(true));
-  m.remove_property_map(is_corner);
-  m.collect_garbage();
-}
-
-// The part whose meshed surface is nearest each face centroid, in the order of faces(m).
-std::vector<std::size_t> nearest_part_labels(const Mesh& m, const std::vector<Mesh>& parts)
-{
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  std::vector<std::unique_ptr<Tree> > trees;
-  for(const Mesh& p : parts)
-  {
-    trees.emplace_back(new Tree(faces(p).first, faces(p).second, p));
-    trees.back()->accelerate_distance_queries();
-  }
-  std::vector<std::size_t> label;
-  for(auto f : faces(m))
-  {
-    const auto h = halfedge(f, m);
-    const Point c = CGAL::centroid(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
-    std::size_t best = 0;
-    double best_d = trees[0]->squared_distance(c);
-    for(std::size_t i = 1; i < trees.size(); ++i)
-    {
-      const double d = trees[i]->squared_distance(c);
-      if(d < best_d) best_d = d, best = i;
-    }
-    label.push_back(best);
-  }
-  return label;
-}
-
 struct Built
 {
   Mesh mesh;
@@ -844,14 +790,14 @@ Built build(const std::vector<Part>& parts)
   for(int retry = 0; retry < 2; ++retry, b.edge_length *= 0.85)
   {
     b.mesh = united;
-    remesh(b.mesh, b.edge_length);
+    pd_benchmark::remesh_keeping_creases(b.mesh, b.edge_length);
     if(CGAL::is_closed(b.mesh) && !PMP::does_self_intersect(b.mesh)) break;
     if(retry == 1) { b.why_not = "remeshing self-intersects"; return b; }
   }
   for(auto f : faces(b.mesh))
     if(PMP::is_degenerate_triangle_face(f, b.mesh)) { b.why_not = "degenerate face after remeshing"; return b; }
 
-  b.labels = nearest_part_labels(b.mesh, meshes);
+  b.labels = pd_benchmark::nearest_part_labels(b.mesh, meshes);
   std::vector<std::size_t> count(parts.size(), 0);
   for(std::size_t l : b.labels) ++count[l];
   for(std::size_t i = 0; i < parts.size(); ++i)
