@@ -99,6 +99,7 @@ struct Contested_set
   std::vector<std::size_t> faces;      // face index of each member
   std::vector<std::int32_t> label;     // current label of each member
   std::vector<std::vector<Link> > links;
+  std::vector<std::size_t> member;     // per member: its rank in the support of a move, or `fixed`
 };
 
 // One expansion move of label `alpha` (Boykov, Veksler, Zabih 2001), solved exactly on the faces
@@ -106,15 +107,16 @@ struct Contested_set
 // for every label, the restriction to the support of `alpha` is what makes large sets cheap.
 // Between two faces with different labels, keeping both costs w and any change w: that is a
 // Potts term of w/2 plus w/2 on keeping each. Returns whether the energy decreased.
-inline bool expand_label(Contested_set& set, const Face_candidates& candidates, std::int32_t alpha)
+// `holders`: the members that have `alpha` among their candidates, increasing.
+inline bool expand_label(Contested_set& set, const Face_candidates& candidates, std::int32_t alpha,
+                         const std::vector<std::size_t>& holders)
 {
   typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
                                 boost::property<boost::edge_weight_t, double> > Graph;
-  const std::size_t n = set.faces.size();
-  std::vector<std::size_t> member(n, Contested_set::fixed);
+  std::vector<std::size_t>& member = set.member;
   std::vector<std::size_t> support;
   std::vector<std::vector<double> > cost; // [keep, alpha] per member of the support
-  for(std::size_t m = 0; m < n; ++m)
+  for(std::size_t m : holders)
   {
     if(set.label[m] == alpha) continue;
     const std::size_t i = set.faces[m];
@@ -163,6 +165,7 @@ inline bool expand_label(Contested_set& set, const Face_candidates& candidates, 
       graph, boost::get(boost::edge_weight, graph), CGAL::make_property_map(cost), CGAL::make_property_map(move),
       CGAL::parameters::vertex_index_map(boost::get(boost::vertex_index, graph))
         .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
+  for(std::size_t m : support) member[m] = Contested_set::fixed;
   if(!(energy < keep_all * (1. - 1e-12))) return false;
   for(std::size_t s = 0; s < support.size(); ++s)
     if(move[s] == 1) set.label[support[s]] = alpha;
@@ -200,10 +203,20 @@ inline void cut_contested_component(const Face_adjacency& adj, const Face_corner
   }
   std::sort(labels.begin(), labels.end());
   labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  // the members that may take each label: a move visits these only
+  std::vector<std::vector<std::size_t> > holders(labels.size());
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    for(int c = 0; c < candidates.size(faces[m]); ++c)
+    {
+      const std::int32_t l = candidates.label[faces[m]][std::size_t(c)];
+      holders[std::size_t(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin())].push_back(m);
+    }
+  set.member.assign(faces.size(), Contested_set::fixed);
   for(int cycle = 0; cycle < maximum_cycles; ++cycle)
   {
     bool decreased = false;
-    for(std::int32_t alpha : labels) decreased = expand_label(set, candidates, alpha) || decreased;
+    for(std::size_t a = 0; a < labels.size(); ++a)
+      decreased = expand_label(set, candidates, labels[a], holders[a]) || decreased;
     if(!decreased) break;
   }
   for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = set.label[m];
