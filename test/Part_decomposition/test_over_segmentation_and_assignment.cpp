@@ -542,13 +542,13 @@ TEST_CASE("the final labelling reaches the least energy of two labels and a loca
     }
     const double scale = rng.get_double(0.001, 0.05);
     const std::vector<std::int32_t> cut = PD::internal::cut_face_labels<CGAL::Sequential_tag>(
-      adj, corners, c, std::vector<int>(nf, 1), scale);
+      adj, corners, c, std::vector<int>(nf, 1), scale, 0.);
     const double e = labelling_energy(adj, corners, c, cut, scale);
     std::vector<std::int32_t> initial(nf);
     for(std::size_t i = 0; i < nf; ++i) initial[i] = c.label[i][0];
     CHECK(e <= labelling_energy(adj, corners, c, initial, scale) + 1e-12);
     CHECK(PD::internal::cut_face_labels<CGAL::Parallel_if_available_tag>(adj, corners, c, std::vector<int>(nf, 1),
-                                                                           scale) == cut);
+                                                                           scale, 0.) == cut);
     if(labels == 2)
     {
       // one expansion is exact on two labels: the least energy over all 2^16 labellings
@@ -574,6 +574,58 @@ TEST_CASE("the final labelling reaches the least energy of two labels and a loca
         }
     }
   }
+}
+
+TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh", "[assignment]")
+{
+  // A 40 x 8 grid of squares of 0.025 along x in [0, 1], the part beyond x = 0.55 folded up by
+  // 90 degrees (a concave crease for the upward normals). The data prefer a cut at x = 0.45, on
+  // flat surface; the cut is far cheaper along the crease, so the least energy cuts there.
+  test_shapes::Soup soup;
+  const double crease = 0.55, w = 0.025;
+  const auto fold = [&](double x, double y) {
+    return x <= crease ? Point(x, y, 0.) : Point(crease, y, x - crease);
+  };
+  for(int i = 0; i < 40; ++i)
+    for(int j = 0; j < 8; ++j)
+    {
+      const Point a = fold(i * w, j * w), b = fold((i + 1) * w, j * w), c = fold((i + 1) * w, (j + 1) * w),
+                  d = fold(i * w, (j + 1) * w);
+      soup.triangle(a, b, c);
+      soup.triangle(a, c, d);
+    }
+  Mesh m = soup.mesh();
+  const std::size_t nf = num_faces(m);
+  const PD::internal::Face_adjacency adj =
+    PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, get(CGAL::face_index, m), CGAL::parameters::default_values());
+  const PD::internal::Face_corners corners(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m));
+  PD::internal::Face_candidates c;
+  c.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    Eigen::Vector3d g = (corners(i, 0) + corners(i, 1) + corners(i, 2)) / 3.;
+    const double x = g.z() > 1e-9 ? crease + g.z() : g.x(); // unfolded abscissa
+    const double area = 0.5 * (corners(i, 1) - corners(i, 0)).cross(corners(i, 2) - corners(i, 0)).norm();
+    const std::int32_t near = x < 0.45 ? 0 : 1;
+    c.label[i] = {{near, 1 - near, -1, -1}};
+    c.cost[i] = {{0., area * std::abs(x - 0.45), 0., 0.}};
+    c.excluded[i] = area;
+  }
+  const std::vector<int> up(nf, 1);
+  const double edge_scale = 0.01;
+  const std::vector<std::int32_t> one_level =
+    PD::internal::cut_face_labels<CGAL::Sequential_tag>(adj, corners, c, up, edge_scale, 0.);
+  // cells of 0.1: 32 faces per cluster, the crease inside a cell
+  const std::vector<std::int32_t> two_levels =
+    PD::internal::cut_face_labels<CGAL::Sequential_tag>(adj, corners, c, up, edge_scale, 0.1);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    const bool folded = corners(i, 0).z() > 1e-9 || corners(i, 1).z() > 1e-9 || corners(i, 2).z() > 1e-9;
+    CHECK(one_level[i] == (folded ? 1 : 0));
+  }
+  CHECK(two_levels == one_level);
+  CHECK(PD::internal::cut_face_labels<CGAL::Parallel_if_available_tag>(adj, corners, c, up, edge_scale, 0.1) ==
+        two_levels);
 }
 
 TEST_CASE("with the final labelling the parts do not depend on the patches", "[assignment]")

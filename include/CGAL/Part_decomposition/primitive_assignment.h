@@ -71,10 +71,50 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
   }, 1024);
 }
 
+// Per voxel, the label of the claimed voxels within `window` voxels along each axis if they all
+// have one label, -1 if there are none, -2 if there are several: separable min and max filters.
+inline Voxel_grid<std::int32_t> window_labels(const Voxel_grid<std::int32_t>& claimed, int window)
+{
+  const int r = claimed.resolution();
+  Voxel_grid<std::int32_t> low(r, (std::numeric_limits<std::int32_t>::max)()), high(r, -1);
+  for(std::size_t v = 0; v < claimed.size(); ++v)
+    if(claimed[v] >= 0) low[v] = high[v] = claimed[v];
+  std::vector<std::int32_t> row_low(static_cast<std::size_t>(r)), row_high(static_cast<std::size_t>(r));
+  for(int axis = 0; axis < 3; ++axis)
+    for(int a = 0; a < r; ++a)
+      for(int b = 0; b < r; ++b)
+      {
+        const auto at = [&](int t) -> std::size_t {
+          return axis == 0 ? low.index(t, a, b) : axis == 1 ? low.index(a, t, b) : low.index(a, b, t);
+        };
+        for(int t = 0; t < r; ++t)
+        {
+          row_low[std::size_t(t)] = low[at(t)];
+          row_high[std::size_t(t)] = high[at(t)];
+        }
+        for(int t = 0; t < r; ++t)
+        {
+          std::int32_t l = row_low[std::size_t(t)], h = row_high[std::size_t(t)];
+          for(int u = (std::max)(t - window, 0); u <= (std::min)(t + window, r - 1); ++u)
+          {
+            l = (std::min)(l, row_low[std::size_t(u)]);
+            h = (std::max)(h, row_high[std::size_t(u)]);
+          }
+          low[at(t)] = l;
+          high[at(t)] = h;
+        }
+      }
+  Voxel_grid<std::int32_t> out(r, -1);
+  for(std::size_t v = 0; v < out.size(); ++v)
+    if(high[v] >= 0) out[v] = low[v] == high[v] ? high[v] : -2;
+  return out;
+}
+
 // The candidate primitives of each face index for the final labelling: its nearest claimed voxel
 // (label k0, distance d0) and the other labels claimed within `window` voxels of its centroid at
 // a distance below d0 + `margin`, nearest first; a candidate at distance d costs
-// (face area / h^2) * (d - d0) / tau, so that the cost of a face is an area in voxels.
+// (face area / h^2) * (d - d0) / tau, so that the cost of a face is an area in voxels; a label
+// that is not a candidate costs at least the margin: `excluded`.
 template <typename ConcurrencyTag>
 Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel_search& search,
                                 const Voxel_grid<std::int32_t>& claimed, const Normalization& normalization,
@@ -83,6 +123,7 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
   const std::size_t nf = corners.vertex.size() / 3;
   const double h = claimed.voxel_size();
   const int r = claimed.resolution();
+  const Voxel_grid<std::int32_t> one_label = window_labels(claimed, window);
   Face_candidates out;
   out.resize(nf);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
@@ -100,6 +141,13 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
       const Claimed_voxel_search::Result nearest = search.nearest({{c.x(), c.y(), c.z()}});
       near.assign(1, std::make_pair(nearest.distance, nearest.label));
       const std::array<int, 3> v = claimed.locate(c.x(), c.y(), c.z());
+      const std::int32_t only = one_label(v[0], v[1], v[2]);
+      if(only == -1 || only == nearest.label) // the window adds no other label
+      {
+        out.label[i][0] = nearest.label;
+        out.excluded[i] = area * margin / tau;
+        continue;
+      }
       for(int z = (std::max)(v[2] - window, 0); z <= (std::min)(v[2] + window, r - 1); ++z)
         for(int y = (std::max)(v[1] - window, 0); y <= (std::min)(v[1] + window, r - 1); ++y)
           for(int x = (std::max)(v[0] - window, 0); x <= (std::min)(v[0] + window, r - 1); ++x)
@@ -120,6 +168,7 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
         out.label[i][k] = near[k].second;
         out.cost[i][k] = area * (std::max)(0., near[k].first - nearest.distance) / tau;
       }
+      out.excluded[i] = area * margin / tau;
     }
   }, 256);
   return out;
@@ -246,6 +295,9 @@ inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>
 // two voxels from a primitive's claimed voxels than from its nearest one has no say in it.
 constexpr int candidate_window = 2;
 constexpr double candidate_margin = 2.;
+// The cell of the clusters of the two-level final labelling, in voxels: the data costs vary at the
+// scale of a voxel, the cut is then refined face by face.
+constexpr double cluster_cell = 0.5;
 
 // The final labelling of `cut_face_labels()`: the primitive of each face index.
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
@@ -262,7 +314,8 @@ std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const Fac
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
   const std::vector<int> outward(adj.number_of_faces, 1);
   return cut_face_labels<ConcurrencyTag>(adj, corners, candidates, outward,
-                                         p.boundary_smoothness * normalization.scale() / h);
+                                         p.boundary_smoothness * normalization.scale() / h,
+                                         cluster_cell * h / normalization.scale());
 }
 
 // `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of
@@ -333,9 +386,11 @@ cheap along a concave crease and expensive across smooth or convex surface, as i
 `CGAL::Surface_mesh_segmentation`. A face may only take the primitives claimed within two
 voxels of its centroid and at most two voxels farther than its nearest one; the faces with a
 single such primitive take it, and each edge-connected set of the others is labelled by alpha
-expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by CGAL's
-`alpha_expansion_graphcut()` on the faces that may take the expanded primitive. The faces of one
-primitive form one part, and the patches of `face_patch_map` are not used.
+expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by one minimum
+cut on the faces that may take the expanded primitive. Where the faces are much smaller than a
+voxel, a set is labelled in two levels: clusters of faces within half a voxel first, then face by
+face next to the cuts. The faces of one primitive form one part, and the patches of
+`face_patch_map` are not used.
 If no voxel is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
 The result does not depend on the number of threads.
 

@@ -17,22 +17,22 @@
 //          orientation per face, +1 or -1: the side of the surface that is outside
 //          edge_scale the cost of cutting one unit of length across a smooth convex edge is
 //                     edge_scale * cut_penalty(0, convex)
+//          cluster_cell  the cell size (mesh units) of the clusters of the two-level labelling
 // Output:  the label of each face, among its candidates, minimizing (approximately)
 //          sum_f cost_f(label_f) + edge_scale * sum_{cut edges e} length_e * cut_penalty(e).
 
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/potts_alpha_expansion.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
-
-#include <CGAL/boost/graph/alpha_expansion_graphcut.h>
-
-#include <boost/graph/adjacency_list.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -45,6 +45,7 @@ struct Face_candidates
   static constexpr int capacity = 4;
   std::vector<std::array<std::int32_t, capacity> > label; // -1 past the last candidate
   std::vector<std::array<double, capacity> > cost;
+  std::vector<double> excluded; // the least cost of a label that is not a candidate
 
   void resize(std::size_t n)
   {
@@ -52,12 +53,20 @@ struct Face_candidates
     none.fill(-1);
     label.assign(n, none);
     cost.assign(n, std::array<double, capacity>());
+    excluded.assign(n, 0.);
   }
   int size(std::size_t i) const
   {
     int n = 0;
     while(n < capacity && label[i][std::size_t(n)] >= 0) ++n;
     return n;
+  }
+  // the rank of label l among the candidates of face i, or -1
+  int find(std::size_t i, std::int32_t l) const
+  {
+    for(int k = 0; k < capacity && label[i][std::size_t(k)] >= 0; ++k)
+      if(label[i][std::size_t(k)] == l) return k;
+    return -1;
   }
 };
 
@@ -85,150 +94,188 @@ inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corne
   return edge_scale * slot_length(corners, i, k) * cut_penalty(adj.angle[3 * i + std::size_t(k)], concave);
 }
 
-// The contested faces of one component, numbered 0..n-1, with their candidates and their
-// neighbours: another face of the set, or a fixed label around it.
-struct Contested_set
+// The rank of face `j` in the increasing list `faces`, or Label_problem::fixed.
+inline std::size_t rank_in(const std::vector<std::size_t>& faces, std::size_t j)
 {
-  struct Link
-  {
-    std::size_t face; // in the set, or `fixed`
-    std::int32_t fixed_label;
-    double cost;
-  };
-  static constexpr std::size_t fixed = std::size_t(-1);
-  std::vector<std::size_t> faces;      // face index of each member
-  std::vector<std::int32_t> label;     // current label of each member
-  std::vector<std::vector<Link> > links;
-  std::vector<std::size_t> member;     // per member: its rank in the support of a move, or `fixed`
-};
-
-// One expansion move of label `alpha` (Boykov, Veksler, Zabih 2001), solved exactly on the faces
-// that may take `alpha`, the others fixed: CGAL's alpha_expansion_graphcut() cuts the whole graph
-// for every label, the restriction to the support of `alpha` is what makes large sets cheap.
-// Between two faces with different labels, keeping both costs w and any change w: that is a
-// Potts term of w/2 plus w/2 on keeping each. Returns whether the energy decreased.
-// `holders`: the members that have `alpha` among their candidates, increasing.
-inline bool expand_label(Contested_set& set, const Face_candidates& candidates, std::int32_t alpha,
-                         const std::vector<std::size_t>& holders)
-{
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                boost::property<boost::edge_weight_t, double> > Graph;
-  std::vector<std::size_t>& member = set.member;
-  std::vector<std::size_t> support;
-  std::vector<std::vector<double> > cost; // [keep, alpha] per member of the support
-  for(std::size_t m : holders)
-  {
-    if(set.label[m] == alpha) continue;
-    const std::size_t i = set.faces[m];
-    for(int c = 0; c < candidates.size(i); ++c)
-      if(candidates.label[i][std::size_t(c)] == alpha)
-      {
-        member[m] = support.size();
-        support.push_back(m);
-        cost.push_back({0., candidates.cost[i][std::size_t(c)]});
-      }
-  }
-  if(support.empty()) return false;
-  Graph graph(support.size());
-  double keep_all = 0.; // the energy of the terms that involve the support, if nothing changes
-  for(std::size_t s = 0; s < support.size(); ++s)
-  {
-    const std::size_t m = support[s];
-    const std::size_t i = set.faces[m];
-    for(int c = 0; c < candidates.size(i); ++c)
-      if(candidates.label[i][std::size_t(c)] == set.label[m]) cost[s][0] = candidates.cost[i][std::size_t(c)];
-    for(const Contested_set::Link& l : set.links[m])
-    {
-      const bool in_support = l.face != Contested_set::fixed && member[l.face] != Contested_set::fixed;
-      if(!in_support)
-      {
-        const std::int32_t other = l.face == Contested_set::fixed ? l.fixed_label : set.label[l.face];
-        if(other != set.label[m]) cost[s][0] += l.cost;
-        if(other != alpha) cost[s][1] += l.cost;
-        continue;
-      }
-      const std::size_t t = member[l.face];
-      if(t < s) continue; // each link once
-      if(set.label[l.face] == set.label[m])
-        boost::add_edge(s, t, l.cost, graph);
-      else
-      {
-        boost::add_edge(s, t, 0.5 * l.cost, graph);
-        cost[s][0] += 0.5 * l.cost;
-        cost[t][0] += 0.5 * l.cost;
-      }
-    }
-  }
-  for(const std::vector<double>& c : cost) keep_all += c[0];
-  std::vector<std::size_t> move(support.size(), 0);
-  const double energy = CGAL::alpha_expansion_graphcut(
-      graph, boost::get(boost::edge_weight, graph), CGAL::make_property_map(cost), CGAL::make_property_map(move),
-      CGAL::parameters::vertex_index_map(boost::get(boost::vertex_index, graph))
-        .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
-  for(std::size_t m : support) member[m] = Contested_set::fixed;
-  if(!(energy < keep_all * (1. - 1e-12))) return false;
-  for(std::size_t s = 0; s < support.size(); ++s)
-    if(move[s] == 1) set.label[support[s]] = alpha;
-  return true;
+  const auto it = std::lower_bound(faces.begin(), faces.end(), j);
+  return it != faces.end() && *it == j ? std::size_t(it - faces.begin()) : Label_problem::fixed;
 }
 
-// Alpha expansion on one connected set of contested faces; the labels of the faces around it
-// are fixed (`initial`) and enter as data costs. Writes the labels of `faces` into `face_label`.
-inline void cut_contested_component(const Face_adjacency& adj, const Face_corners& corners,
-                                    const Face_candidates& candidates, const std::vector<int>& orientation,
-                                    double edge_scale, const std::vector<std::size_t>& faces,
-                                    const std::vector<std::uint8_t>& contested, const std::vector<std::int32_t>& initial,
-                                    std::vector<std::int32_t>& face_label)
+// The problem on the faces `faces` (increasing), each starting with label_of(i), a candidate; the
+// other faces around them are fixed at label_of(j).
+template <typename LabelOf>
+Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
+                           const std::vector<int>& orientation, double edge_scale,
+                           const std::vector<std::size_t>& faces, const LabelOf& label_of)
 {
-  constexpr int maximum_cycles = 8; // a cycle without a decrease ends earlier
-  Contested_set set;
-  set.faces = faces;
-  set.links.resize(faces.size());
-  std::vector<std::int32_t> labels;
+  Label_problem p;
   for(std::size_t m = 0; m < faces.size(); ++m)
   {
     const std::size_t i = faces[m];
-    set.label.push_back(initial[i]);
-    for(int c = 0; c < candidates.size(i); ++c) labels.push_back(candidates.label[i][std::size_t(c)]);
+    for(int c = 0; c < candidates.size(i); ++c)
+      p.add_option(candidates.label[i][std::size_t(c)], candidates.cost[i][std::size_t(c)]);
+    p.add_member(label_of(i));
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
       if(j == Face_adjacency::no_face || j == i) continue;
       const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
-      if(contested[j])
-        set.links[m].push_back({std::size_t(std::lower_bound(faces.begin(), faces.end(), j) - faces.begin()), -1, w});
-      else
-        set.links[m].push_back({Contested_set::fixed, initial[j], w});
+      const std::size_t r = rank_in(faces, j);
+      p.links[m].push_back({r, r == Label_problem::fixed ? label_of(j) : -1, w});
     }
   }
-  std::sort(labels.begin(), labels.end());
-  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
-  // the members that may take each label: a move visits these only
-  std::vector<std::vector<std::size_t> > holders(labels.size());
+  return p;
+}
+
+// Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
+// a grid of spacing `cell` (a face elsewhere is alone).
+inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
+                                              double cell)
+{
+  const auto same_cell = [&](std::size_t i, std::size_t j) {
+    for(std::size_t a = 0; a < 3; ++a)
+      if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
+    return true;
+  };
+  std::vector<std::size_t> cluster;
+  face_components(adj, [&](std::size_t i, int k) {
+    const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+    return contested[i] && contested[j] && same_cell(i, j);
+  }, cluster);
+  return cluster;
+}
+
+// Sums the links to the same member or fixed label into one.
+inline void merge_parallel_links(std::vector<Label_problem::Link>& links)
+{
+  const auto key = [](const Label_problem::Link& l) { return std::make_pair(l.member, l.fixed_label); };
+  std::sort(links.begin(), links.end(),
+            [&](const Label_problem::Link& a, const Label_problem::Link& b) { return key(a) < key(b); });
+  std::size_t n = 0;
+  for(std::size_t k = 0; k < links.size(); ++k)
+    if(n > 0 && key(links[n - 1]) == key(links[k])) links[n - 1].cost += links[k].cost;
+    else links[n++] = links[k];
+  links.resize(n);
+}
+
+// The problem on the clusters of `faces` (increasing): a cluster may take any candidate of its
+// faces, at the sum of their costs (a face without that candidate adds its `excluded` cost), and
+// starts with its cheapest; a cut between two clusters costs the cut edges between them.
+// `local` receives the cluster of each face, 0..C-1.
+template <typename LabelOf>
+Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
+                              const std::vector<int>& orientation, double edge_scale,
+                              const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
+                              const LabelOf& label_of, std::vector<std::size_t>& local)
+{
+  std::vector<std::size_t> ids;
+  for(std::size_t i : faces) ids.push_back(cluster[i]);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  local.resize(faces.size());
+  std::vector<std::vector<std::size_t> > members(ids.size());
   for(std::size_t m = 0; m < faces.size(); ++m)
-    for(int c = 0; c < candidates.size(faces[m]); ++c)
-    {
-      const std::int32_t l = candidates.label[faces[m]][std::size_t(c)];
-      holders[std::size_t(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin())].push_back(m);
-    }
-  set.member.assign(faces.size(), Contested_set::fixed);
-  for(int cycle = 0; cycle < maximum_cycles; ++cycle)
   {
-    bool decreased = false;
-    for(std::size_t a = 0; a < labels.size(); ++a)
-      decreased = expand_label(set, candidates, labels[a], holders[a]) || decreased;
-    if(!decreased) break;
+    local[m] = std::size_t(std::lower_bound(ids.begin(), ids.end(), cluster[faces[m]]) - ids.begin());
+    members[local[m]].push_back(faces[m]);
   }
-  for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = set.label[m];
+  Label_problem p;
+  std::vector<std::int32_t> labels;
+  for(const std::vector<std::size_t>& c : members)
+  {
+    labels.clear();
+    for(std::size_t i : c)
+      for(int k = 0; k < candidates.size(i); ++k) labels.push_back(candidates.label[i][std::size_t(k)]);
+    std::sort(labels.begin(), labels.end());
+    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+    std::int32_t cheapest = labels.front();
+    double least = std::numeric_limits<double>::infinity();
+    for(std::int32_t l : labels)
+    {
+      double sum = 0.;
+      for(std::size_t i : c)
+      {
+        const int k = candidates.find(i, l);
+        sum += k < 0 ? candidates.excluded[i] : candidates.cost[i][std::size_t(k)];
+      }
+      p.add_option(l, sum);
+      if(sum < least) { least = sum; cheapest = l; }
+    }
+    p.add_member(cheapest);
+  }
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t i = faces[m], j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j == Face_adjacency::no_face || j == i) continue;
+      const std::size_t r = rank_in(faces, j);
+      if(r != Label_problem::fixed && local[r] == local[m]) continue;
+      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+      p.links[local[m]].push_back(r == Label_problem::fixed ? Label_problem::Link{r, label_of(j), w}
+                                                             : Label_problem::Link{local[r], -1, w});
+    }
+  for(std::vector<Label_problem::Link>& links : p.links) merge_parallel_links(links);
+  return p;
+}
+
+// Labels one edge-connected set of contested faces (increasing), the faces around it fixed at
+// `initial`. A set with far fewer clusters than faces is labelled in two levels, because a max-flow
+// on a fine mesh follows paths across the whole set: its clusters first, then again face by face,
+// the clusters next to a cut only (the cut moves within them), the rest fixed at its cluster's label.
+inline void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
+                                const Face_candidates& candidates, const std::vector<int>& orientation,
+                                double edge_scale, const std::vector<std::size_t>& faces,
+                                const std::vector<std::size_t>& cluster, const std::vector<std::int32_t>& initial,
+                                std::vector<std::int32_t>& face_label)
+{
+  const auto initial_label = [&](std::size_t j) { return initial[j]; };
+  std::vector<std::size_t> local;
+  Label_problem coarse;
+  if(!cluster.empty())
+    coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, cluster, initial_label, local);
+  if(cluster.empty() || 2 * coarse.size() > faces.size())
+  {
+    Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, initial_label);
+    minimize_labels(p);
+    for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
+    return;
+  }
+  minimize_labels(coarse);
+  // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
+  std::vector<std::int32_t> projected(faces.size());
+  std::vector<std::uint8_t> refine(coarse.size(), 0);
+  for(std::size_t m = 0; m < faces.size(); ++m)
+  {
+    const std::size_t i = faces[m];
+    projected[m] = candidates.find(i, coarse.label[local[m]]) < 0 ? candidates.label[i][0] : coarse.label[local[m]];
+  }
+  const auto label_of = [&](std::size_t j) {
+    const std::size_t r = rank_in(faces, j);
+    return r == Label_problem::fixed ? initial[j] : projected[r];
+  };
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * faces[m] + std::size_t(k)];
+      if(j != Face_adjacency::no_face && label_of(j) != projected[m]) refine[local[m]] = 1;
+    }
+  std::vector<std::size_t> band;
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    if(refine[local[m]]) band.push_back(faces[m]);
+  Label_problem fine = face_problem(adj, corners, candidates, orientation, edge_scale, band, label_of);
+  minimize_labels(fine);
+  for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = projected[m];
+  for(std::size_t b = 0; b < band.size(); ++b) face_label[band[b]] = fine.label[b];
 }
 
 // The final labels: every face starts with its cheapest candidate; the edge-connected sets of
-// faces with two candidates or more are relabelled by alpha expansion, each on its own. The
-// result does not depend on the number of threads.
+// faces with two candidates or more are relabelled by alpha expansion, each on its own, in two
+// levels where the faces are much smaller than `cluster_cell` (0: never). The result does not
+// depend on the number of threads.
 template <typename ConcurrencyTag>
 std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_corners& corners,
                                           const Face_candidates& candidates, const std::vector<int>& orientation,
-                                          double edge_scale)
+                                          double edge_scale, double cluster_cell)
 {
   const std::size_t nf = adj.number_of_faces;
   std::vector<std::int32_t> face_label(nf);
@@ -257,15 +304,16 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
   std::vector<std::size_t> sets; // the components with contested faces
   for(std::size_t c = 0; c < nc; ++c)
     if(start[c] < start[c + 1]) sets.push_back(c);
-  const std::vector<std::int32_t> initial(face_label); // read by all, each component writes its own faces
+  const std::vector<std::size_t> cluster =
+      cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
+  const std::vector<std::int32_t> initial(face_label); // read by all, each set writes its own faces
   for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
     std::vector<std::size_t> faces;
     for(std::size_t s = b; s < e; ++s)
     {
       const std::size_t c = sets[s];
       faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
-      cut_contested_component(adj, corners, candidates, orientation, edge_scale, faces, contested, initial,
-                              face_label);
+      label_contested_set(adj, corners, candidates, orientation, edge_scale, faces, cluster, initial, face_label);
     }
   }, 1);
   return face_label;
