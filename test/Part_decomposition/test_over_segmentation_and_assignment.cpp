@@ -645,13 +645,13 @@ TEST_CASE("with the final labelling the parts do not depend on the patches", "[a
   // the patch vote gives a single patch a single part
   CHECK(assign(m, one, claimed, part_b, 1., 0.).size() == 1);
   // the parts are the slabs: the cuts, on smooth surface, move at most by the candidate margin
-  // (2 voxels of 0.0625) from the planes x = -0.1 and x = 0.15, towards shorter circles
+  // (3 voxels of 0.0625) from the planes x = -0.1 and x = 0.15, towards shorter circles
   for(face_descriptor f : faces(m))
   {
     const double x = m.point(source(halfedge(f, m), m)).x();
-    if(x < -0.1 - 0.125 - 0.07) CHECK(prim[part_a[f]] == 9);
+    if(x < -0.1 - 0.1875 - 0.07) CHECK(prim[part_a[f]] == 9);
     if(x > 0. && x < 0.05) CHECK(prim[part_a[f]] == 5);
-    if(x > 0.15 + 0.125 + 0.07) CHECK(prim[part_a[f]] == 2);
+    if(x > 0.15 + 0.1875 + 0.07) CHECK(prim[part_a[f]] == 2);
   }
 }
 

@@ -292,9 +292,9 @@ inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>
 }
 
 // The window and margin of the candidate primitives of a face, in voxels: a face farther than
-// two voxels from a primitive's claimed voxels than from its nearest one has no say in it.
-constexpr int candidate_window = 2;
-constexpr double candidate_margin = 2.;
+// three voxels from a primitive's claimed voxels than from its nearest one has no say in it.
+constexpr int candidate_window = 3;
+constexpr double candidate_margin = 3.;
 // The cell of the clusters of the two-level final labelling, in voxels: the data costs vary at the
 // scale of a voxel, the cut is then refined face by face.
 constexpr double cluster_cell = 0.5;
@@ -383,8 +383,8 @@ where \f$A_f\f$ is the area of face \f$f\f$, \f$d_f(k)\f$ the distance from its 
 nearest claimed voxel of primitive \f$k\f$, \f$h\f$ the voxel size, \f$\ell_e\f$ the length of
 edge \f$e\f$ and \f$\theta_e\f$ its dihedral angle (concave for the orientation of `tm`): a cut is
 cheap along a concave crease and expensive across smooth or convex surface, as in
-`CGAL::Surface_mesh_segmentation`. A face may only take the primitives claimed within two
-voxels of its centroid and at most two voxels farther than its nearest one; the faces with a
+`CGAL::Surface_mesh_segmentation`. A face may only take the primitives claimed within three
+voxels of its centroid and at most three voxels farther than its nearest one; the faces with a
 single such primitive take it, and each edge-connected set of the others is labelled by alpha
 expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by one minimum
 cut on the faces that may take the expanded primitive. Where the faces are much smaller than a
