@@ -6,6 +6,8 @@
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/decompose.h>
 
+#include "decomposition_settings.h"
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
 #endif
@@ -34,56 +36,11 @@ typedef CGAL::Part_decomposition::Superquadric<K> Superquadric;
 namespace PD = CGAL::Part_decomposition;
 namespace PDP = CGAL::Part_decomposition::parameters;
 
-// The keywords, at the library's defaults (PD::defaults).
-struct Parameters
+// The keywords, at the library's defaults: decompose()'s named parameters, then the module's own.
+struct Parameters : Part_decomposition_tools::Decomposition_settings
 {
-  std::vector<int> voxel_resolutions = PD::defaults::voxel_resolutions();
-  unsigned int number_of_points_per_face = PD::defaults::number_of_points_per_face;
-  unsigned int number_of_neighbors = PD::defaults::number_of_neighbors;
-  double curvature_percentile = PD::defaults::curvature_percentile;
-  std::array<double, 4> cue_weights = PD::defaults::cue_weights;
-  double freeze_ratio = PD::defaults::freeze_ratio;
-  bool use_density = PD::defaults::use_density;
-  double normalization_margin = PD::defaults::normalization_margin;
-  double tsdf_truncation = PD::defaults::tsdf_truncation;
-  PD::Tsdf_sign_method tsdf_sign_method = PD::defaults::tsdf_sign_method;
-  double flow_zone_tolerance = PD::defaults::flow_zone_tolerance;
-  std::vector<double> trust_region_scales = PD::defaults::trust_region_scales();
-  double body_seed_threshold = PD::defaults::body_seed_threshold;
-  double minimum_body_volume = PD::defaults::minimum_body_volume;
-  double minimum_surface_volume = PD::defaults::minimum_surface_volume;
-  double exterior_penalty = PD::defaults::exterior_penalty;
-  double coverage_target = PD::defaults::coverage_target;
-  double roi_radius = PD::defaults::roi_radius;
-  PD::Interior_weight_mode interior_weight_mode = PD::defaults::interior_weight_mode;
-  std::size_t maximum_number_of_primitives = PD::defaults::maximum_number_of_primitives;
-  bool use_freeze_zone = PD::defaults::use_freeze_zone;
-  bool use_tsdf_guidance = PD::defaults::use_tsdf_guidance;
-  bool use_body_seeds = PD::defaults::use_body_seeds;
-  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
-  bool use_exterior_band_samples = PD::defaults::use_exterior_band_samples;
-  bool use_reachable_regions = PD::defaults::use_reachable_regions;
-  bool use_seed_exclusion = PD::defaults::use_seed_exclusion;
-  int maximum_solver_evaluations = PD::defaults::maximum_solver_evaluations;
-  std::size_t maximum_rejections_in_a_row = PD::defaults::maximum_rejections_in_a_row;
-  double dihedral_percentile = PD::defaults::dihedral_percentile;
-  unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
-  double minimum_patch_size = PD::defaults::minimum_patch_size;
-  double patch_split_size = PD::defaults::patch_split_size;
-  double vote_temperature = PD::defaults::vote_temperature;
-  double boundary_smoothness = PD::defaults::boundary_smoothness;
-  bool merge_primitives = PD::defaults::merge_primitives;
-  double minimum_merge_iou = PD::defaults::minimum_merge_iou;
-  bool merge_thin_sheets = PD::defaults::merge_thin_sheets;
-  bool use_pieces = PD::defaults::use_pieces;
-  double crease_angle = PD::defaults::crease_angle;
-  double minimum_part_area = PD::defaults::minimum_part_area;
   std::optional<std::size_t> number_of_parts; // none: the default granularity
-  bool keep_residual_patches = PD::defaults::keep_residual_patches;
-  double residual_tolerance = PD::defaults::residual_tolerance;
-  // not named parameters of decompose()
-  int threads = 0; // 0: all cores
-  bool verbose = false;
+  int threads = 0;                            // 0: all cores
 };
 
 // Enumerations as strings: the enumerator in lower case, or the short name of hitops.
@@ -141,8 +98,8 @@ struct Keyword
   Getter get;
 };
 
-template <typename T>
-Keyword field(T Parameters::*member, const char* expected)
+template <typename T, typename Owner>
+Keyword field(T Owner::*member, const char* expected)
 {
   return {[member, expected](Parameters& p, const std::string& k, py::handle v) { p.*member = cast<T>(k, v, expected); },
           [member](const Parameters& p) { return py::cast(p.*member); }};
@@ -263,30 +220,9 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
 {
   std::vector<std::size_t> part(num_faces(mesh), 0);
   std::vector<Superquadric> primitives;
-  auto np = PDP::combine(
-    CGAL::parameters::number_of_points_per_face(p.number_of_points_per_face).verbose(p.verbose),
-    PDP::voxel_resolutions(p.voxel_resolutions), PDP::number_of_neighbors(p.number_of_neighbors),
-    PDP::curvature_percentile(p.curvature_percentile), PDP::cue_weights(p.cue_weights),
-    PDP::freeze_ratio(p.freeze_ratio), PDP::use_density(p.use_density),
-    PDP::normalization_margin(p.normalization_margin), PDP::tsdf_truncation(p.tsdf_truncation),
-    PDP::tsdf_sign_method(p.tsdf_sign_method), PDP::flow_zone_tolerance(p.flow_zone_tolerance),
-    PDP::trust_region_scales(p.trust_region_scales), PDP::body_seed_threshold(p.body_seed_threshold),
-    PDP::minimum_body_volume(p.minimum_body_volume), PDP::minimum_surface_volume(p.minimum_surface_volume),
-    PDP::exterior_penalty(p.exterior_penalty), PDP::coverage_target(p.coverage_target),
-    PDP::roi_radius(p.roi_radius), PDP::interior_weight_mode(p.interior_weight_mode),
-    PDP::maximum_number_of_primitives(p.maximum_number_of_primitives), PDP::use_freeze_zone(p.use_freeze_zone),
-    PDP::use_tsdf_guidance(p.use_tsdf_guidance), PDP::use_body_seeds(p.use_body_seeds),
-    PDP::fitting_resolution_cap(p.fitting_resolution_cap), PDP::use_exterior_band_samples(p.use_exterior_band_samples),
-    PDP::use_reachable_regions(p.use_reachable_regions), PDP::use_seed_exclusion(p.use_seed_exclusion),
-    PDP::maximum_solver_evaluations(p.maximum_solver_evaluations),
-    PDP::maximum_rejections_in_a_row(p.maximum_rejections_in_a_row), PDP::dihedral_percentile(p.dihedral_percentile),
-    PDP::smoothing_iterations(p.smoothing_iterations), PDP::minimum_patch_size(p.minimum_patch_size),
-    PDP::patch_split_size(p.patch_split_size), PDP::vote_temperature(p.vote_temperature),
-    PDP::boundary_smoothness(p.boundary_smoothness), PDP::merge_primitives(p.merge_primitives),
-    PDP::minimum_merge_iou(p.minimum_merge_iou), PDP::merge_thin_sheets(p.merge_thin_sheets), PDP::use_pieces(p.use_pieces), PDP::crease_angle(p.crease_angle),
-    PDP::minimum_part_area(p.minimum_part_area), PDP::keep_residual_patches(p.keep_residual_patches),
-    PDP::residual_tolerance(p.residual_tolerance),
-    PDP::primitive_output_iterator(std::back_inserter(primitives)), PDP::stage_timings(&r.timings));
+  auto np = PDP::combine(Part_decomposition_tools::named_parameters(p),
+                         PDP::primitive_output_iterator(std::back_inserter(primitives)),
+                         PDP::stage_timings(&r.timings));
 #ifdef CGAL_LINKED_WITH_TBB
   // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
   tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);

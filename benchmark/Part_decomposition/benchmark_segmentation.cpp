@@ -25,6 +25,7 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 
+#include "decomposition_settings.h"
 #include "parts_tsv.h"
 #include "sdf_peer.h"
 
@@ -289,32 +290,9 @@ struct Face_part_map
 // ------------------------------------------------------------------------------------------
 // Ablation variants (paper Tables 3 and 4); every one passes all its settings explicitly.
 
-struct Variant
+struct Variant : Part_decomposition_tools::Decomposition_settings
 {
   std::string id;
-  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
-  double alpha = PD::defaults::freeze_ratio;
-  std::array<double, 4> weights = PD::defaults::cue_weights;
-  bool freeze = true, tsdf = true, body = true;
-  bool density = PD::defaults::use_density;
-  // the departures from the paper's Algorithm A.2 and App. B (manual, "Deviations from the Paper")
-  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
-  bool exterior_band = PD::defaults::use_exterior_band_samples;
-  bool reachable = PD::defaults::use_reachable_regions;
-  bool exclusion = PD::defaults::use_seed_exclusion;
-  int evaluations = PD::defaults::maximum_solver_evaluations;
-  std::size_t rejections = PD::defaults::maximum_rejections_in_a_row;
-  double coverage = PD::defaults::coverage_target;
-  double patch_split = PD::defaults::patch_split_size;
-  bool sheet_merge = PD::defaults::merge_thin_sheets;
-  bool pieces = PD::defaults::use_pieces;
-  double crease_angle = PD::defaults::crease_angle;
-  double minimum_part_area = PD::defaults::minimum_part_area;
-  bool residual = PD::defaults::keep_residual_patches;
-  double residual_tolerance = PD::defaults::residual_tolerance;
-  double smoothness = PD::defaults::boundary_smoothness;
-  bool merge_primitives = PD::defaults::merge_primitives;
-  double merge_iou = PD::defaults::minimum_merge_iou;
 };
 
 // The paper's settings where this implementation departs from it: r_fit = min(r, 32), no
@@ -328,11 +306,11 @@ constexpr double paper_coverage = 0.95;
 void make_paper_literal(Variant& v)
 {
   v.fitting_resolution_cap = paper_fitting_resolution_cap;
-  v.exterior_band = v.reachable = v.exclusion = v.sheet_merge = false;
-  v.evaluations = paper_solver_evaluations;
-  v.rejections = 0;
-  v.coverage = paper_coverage;
-  v.patch_split = 1.;
+  v.use_exterior_band_samples = v.use_reachable_regions = v.use_seed_exclusion = v.merge_thin_sheets = false;
+  v.maximum_solver_evaluations = paper_solver_evaluations;
+  v.maximum_rejections_in_a_row = 0;
+  v.coverage_target = paper_coverage;
+  v.patch_split_size = 1.;
 }
 
 std::vector<Variant> all_variants()
@@ -340,74 +318,74 @@ std::vector<Variant> all_variants()
   std::vector<Variant> v;
   auto add = [&](const std::string& id) { v.push_back(Variant()); v.back().id = id; return &v.back(); };
   add("full");
-  add("no_body")->body = false;
-  add("no_freeze")->freeze = false;
-  add("alpha05")->alpha = 0.05;
-  add("alpha25")->alpha = 0.25;
-  add("no_curvature")->weights = {{0., 0., 0., 1.}};
-  add("no_normal")->weights = {{1., 1., 1., 0.}};
-  add("no_density")->density = false;
-  add("no_tsdf")->tsdf = false;
+  add("no_body")->use_body_seeds = false;
+  add("no_freeze")->use_freeze_zone = false;
+  add("alpha05")->freeze_ratio = 0.05;
+  add("alpha25")->freeze_ratio = 0.25;
+  add("no_curvature")->cue_weights = {{0., 0., 0., 1.}};
+  add("no_normal")->cue_weights = {{1., 1., 1., 0.}};
+  add("no_density")->use_density = false;
+  add("no_tsdf")->use_tsdf_guidance = false;
   for(int r : {16, 32, 64})
   {
     const std::string s = std::to_string(r);
-    add("r" + s)->resolutions = {r};
+    add("r" + s)->voxel_resolutions = {r};
     Variant* a = add("r" + s + "_no_freeze");
-    a->resolutions = {r};
-    a->freeze = false;
+    a->voxel_resolutions = {r};
+    a->use_freeze_zone = false;
     Variant* b = add("r" + s + "_no_tsdf");
-    b->resolutions = {r};
-    b->tsdf = false;
+    b->voxel_resolutions = {r};
+    b->use_tsdf_guidance = false;
     Variant* c = add("r" + s + "_paper_fit_resolution");
-    c->resolutions = {r};
+    c->voxel_resolutions = {r};
     c->fitting_resolution_cap = paper_fitting_resolution_cap;
   }
   // one departure from the paper undone at a time, then all of them
   add("paper_fit_resolution")->fitting_resolution_cap = paper_fitting_resolution_cap;
-  add("no_exterior_band")->exterior_band = false;
-  add("no_reachable_regions")->reachable = false;
-  add("no_seed_exclusion")->exclusion = false;
-  add("paper_evaluations")->evaluations = paper_solver_evaluations;
-  add("no_rejection_stop")->rejections = 0;
-  add("paper_coverage")->coverage = paper_coverage;
-  add("no_patch_split")->patch_split = 1.;
-  add("no_sheet_merge")->sheet_merge = false;
+  add("no_exterior_band")->use_exterior_band_samples = false;
+  add("no_reachable_regions")->use_reachable_regions = false;
+  add("no_seed_exclusion")->use_seed_exclusion = false;
+  add("paper_evaluations")->maximum_solver_evaluations = paper_solver_evaluations;
+  add("no_rejection_stop")->maximum_rejections_in_a_row = 0;
+  add("paper_coverage")->coverage_target = paper_coverage;
+  add("no_patch_split")->patch_split_size = 1.;
+  add("no_sheet_merge")->merge_thin_sheets = false;
   make_paper_literal(*add("paper_literal"));
   // the evidence of pieces and creases, and its two thresholds
-  add("no_pieces")->pieces = false;
+  add("no_pieces")->use_pieces = false;
   for(double a : {45., 75.}) add("crease" + std::to_string(int(a)))->crease_angle = a;
   for(double a : {0.002, 0.01}) add("min_part_area_" + std::to_string(int(a * 1000)))->minimum_part_area = a;
   // the residual patches, off by default, at three tolerances
   for(double t : {1., 2., 4.})
   {
     Variant* r = add("residual_" + std::to_string(int(t)));
-    r->residual = true;
+    r->keep_residual_patches = true;
     r->residual_tolerance = t;
   }
   // the final labelling: the patch vote (0) and the weight of the boundary cost
   for(double s : {0., 0.3, 1., 3., 10.})
-    add("smooth_" + std::to_string(int(s * 10)))->smoothness = s;
+    add("smooth_" + std::to_string(int(s * 10)))->boundary_smoothness = s;
   // finer fitting: the last stage at 64, or the whole hierarchy one level finer
   add("fit64")->fitting_resolution_cap = 64;
-  add("r128")->resolutions = {32, 64, 128};
+  add("r128")->voxel_resolutions = {32, 64, 128};
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
-  for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->merge_iou = t;
+  for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;
   for(double t : {0.7, 0.8, 0.9})
   {
     Variant* v = add("r128_merge_iou_" + std::to_string(int(t * 100)));
-    v->resolutions = {32, 64, 128};
-    v->merge_iou = t;
+    v->voxel_resolutions = {32, 64, 128};
+    v->minimum_merge_iou = t;
   }
   Variant* r128_apart = add("r128_no_primitive_merge");
-  r128_apart->resolutions = {32, 64, 128};
+  r128_apart->voxel_resolutions = {32, 64, 128};
   r128_apart->merge_primitives = false;
   Variant* before = add("vote_no_primitive_merge"); // the final labelling of issue 16
-  before->smoothness = 0.;
+  before->boundary_smoothness = 0.;
   before->merge_primitives = false;
   Variant* vote_no_split = add("smooth_0_no_patch_split");
-  vote_no_split->smoothness = 0.;
-  vote_no_split->patch_split = 1.;
+  vote_no_split->boundary_smoothness = 0.;
+  vote_no_split->patch_split_size = 1.;
   return v;
 }
 
@@ -1512,31 +1490,8 @@ int main(int argc, char** argv)
           {
             const Variant& v = *run.second;
             r.parts = run_ours(mesh, labels,
-                               PD::parameters::combine(PD::parameters::stage_timings(&st),
-                                                       PD::parameters::voxel_resolutions(v.resolutions),
-                                                       PD::parameters::freeze_ratio(v.alpha),
-                                                       PD::parameters::cue_weights(v.weights),
-                                                       PD::parameters::use_density(v.density),
-                                                       PD::parameters::use_freeze_zone(v.freeze),
-                                                       PD::parameters::use_tsdf_guidance(v.tsdf),
-                                                       PD::parameters::use_body_seeds(v.body),
-                                                       PD::parameters::fitting_resolution_cap(v.fitting_resolution_cap),
-                                                       PD::parameters::use_exterior_band_samples(v.exterior_band),
-                                                       PD::parameters::use_reachable_regions(v.reachable),
-                                                       PD::parameters::use_seed_exclusion(v.exclusion),
-                                                       PD::parameters::maximum_solver_evaluations(v.evaluations),
-                                                       PD::parameters::maximum_rejections_in_a_row(v.rejections),
-                                                       PD::parameters::coverage_target(v.coverage),
-                                                       PD::parameters::patch_split_size(v.patch_split),
-                                                       PD::parameters::merge_thin_sheets(v.sheet_merge),
-                                                       PD::parameters::use_pieces(v.pieces),
-                                                       PD::parameters::crease_angle(v.crease_angle),
-                                                       PD::parameters::minimum_part_area(v.minimum_part_area),
-                                                       PD::parameters::keep_residual_patches(v.residual),
-                                                       PD::parameters::residual_tolerance(v.residual_tolerance),
-                                                       PD::parameters::boundary_smoothness(v.smoothness),
-                                                       PD::parameters::merge_primitives(v.merge_primitives),
-                                                       PD::parameters::minimum_merge_iou(v.merge_iou)),
+                               PD::parameters::combine(Part_decomposition_tools::named_parameters(*run.second),
+                                                       PD::parameters::stage_timings(&st)),
                                &primitives);
           }
           r.t_method = seconds_since(t0);

@@ -15,6 +15,8 @@
 #include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/decompose.h>
 
+#include "decomposition_settings.h"
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
@@ -59,47 +61,8 @@ struct Options
   bool parts_glb_primitives = false;
   std::size_t shard = 0, shards = 1;
   int threads = 0;
-  bool timings = false, verbose = false;
-  // the named parameters, at the library's defaults
-  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
-  unsigned int samples_per_face = PD::defaults::number_of_points_per_face;
-  unsigned int neighbors = PD::defaults::number_of_neighbors;
-  double curvature_percentile = PD::defaults::curvature_percentile;
-  std::array<double, 4> cue_weights = PD::defaults::cue_weights;
-  double freeze_ratio = PD::defaults::freeze_ratio;
-  double margin = PD::defaults::normalization_margin;
-  double truncation = PD::defaults::tsdf_truncation;
-  PD::Tsdf_sign_method sign_method = PD::Tsdf_sign_method::AUTOMATIC;
-  double flow_tolerance = PD::defaults::flow_zone_tolerance;
-  std::vector<double> trust_region_scales = PD::defaults::trust_region_scales();
-  double body_seed_threshold = PD::defaults::body_seed_threshold;
-  double min_body_volume = PD::defaults::minimum_body_volume;
-  double min_surface_volume = PD::defaults::minimum_surface_volume;
-  double exterior_penalty = PD::defaults::exterior_penalty;
-  double coverage = PD::defaults::coverage_target;
-  double roi_radius = PD::defaults::roi_radius;
-  PD::Interior_weight_mode interior_weight = PD::Interior_weight_mode::ONE_SHOT;
-  std::size_t max_primitives = PD::defaults::maximum_number_of_primitives;
-  bool use_freeze = true, use_tsdf = true, use_body_seeds = true;
-  bool merge_sheets = PD::defaults::merge_thin_sheets;
-  bool use_pieces = PD::defaults::use_pieces;
-  double crease_angle = PD::defaults::crease_angle;
-  double min_part_area = PD::defaults::minimum_part_area;
-  bool use_density = PD::defaults::use_density;
-  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
-  bool exterior_band = PD::defaults::use_exterior_band_samples;
-  bool reachable_regions = PD::defaults::use_reachable_regions;
-  bool seed_exclusion = PD::defaults::use_seed_exclusion;
-  int solver_evaluations = PD::defaults::maximum_solver_evaluations;
-  std::size_t rejections_in_a_row = PD::defaults::maximum_rejections_in_a_row;
-  double dihedral_percentile = PD::defaults::dihedral_percentile;
-  unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
-  double min_patch_size = PD::defaults::minimum_patch_size;
-  double patch_split_size = PD::defaults::patch_split_size;
-  double vote_temperature = PD::defaults::vote_temperature;
-  double boundary_smoothness = PD::defaults::boundary_smoothness;
-  bool merge_primitives = PD::defaults::merge_primitives;
-  double min_merge_iou = PD::defaults::minimum_merge_iou;
+  bool timings = false;
+  Part_decomposition_tools::Decomposition_settings decomposition; // the named parameters of decompose()
 };
 
 const char* const usage_text =
@@ -210,7 +173,7 @@ Options parse(int argc, char** argv)
     else if(a == "--parts-glb-primitives") o.parts_glb_primitives = true;
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
-    else if(a == "--verbose") o.verbose = true;
+    else if(a == "--verbose") o.decomposition.verbose = true;
     else if(a == "--batch") o.batch = value();
     else if(a == "--out") o.out_dir = value();
     else if(a == "--shard")
@@ -224,68 +187,68 @@ Options parse(int argc, char** argv)
     }
     else if(a == "--resolutions")
     {
-      o.resolutions.clear();
-      for(double r : to_numbers(a, value())) o.resolutions.push_back(int(r));
+      o.decomposition.voxel_resolutions.clear();
+      for(double r : to_numbers(a, value())) o.decomposition.voxel_resolutions.push_back(int(r));
     }
-    else if(a == "--samples-per-face") o.samples_per_face = to_count(a, value());
-    else if(a == "--neighbors") o.neighbors = to_count(a, value());
-    else if(a == "--curvature-percentile") o.curvature_percentile = to_number(a, value());
+    else if(a == "--samples-per-face") o.decomposition.number_of_points_per_face = to_count(a, value());
+    else if(a == "--neighbors") o.decomposition.number_of_neighbors = to_count(a, value());
+    else if(a == "--curvature-percentile") o.decomposition.curvature_percentile = to_number(a, value());
     else if(a == "--cue-weights")
     {
       const std::vector<double> w = to_numbers(a, value());
       if(w.size() != 4) throw Usage_error("--cue-weights expects four numbers");
-      for(int k = 0; k < 4; ++k) o.cue_weights[k] = w[k];
+      for(int k = 0; k < 4; ++k) o.decomposition.cue_weights[k] = w[k];
     }
-    else if(a == "--freeze-ratio") o.freeze_ratio = to_number(a, value());
-    else if(a == "--margin") o.margin = to_number(a, value());
-    else if(a == "--truncation") o.truncation = to_number(a, value());
+    else if(a == "--freeze-ratio") o.decomposition.freeze_ratio = to_number(a, value());
+    else if(a == "--margin") o.decomposition.normalization_margin = to_number(a, value());
+    else if(a == "--truncation") o.decomposition.tsdf_truncation = to_number(a, value());
     else if(a == "--sign-method")
     {
       const std::string m = value();
-      if(m == "auto") o.sign_method = PD::Tsdf_sign_method::AUTOMATIC;
-      else if(m == "inside") o.sign_method = PD::Tsdf_sign_method::INSIDE_TEST;
-      else if(m == "winding") o.sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
-      else if(m == "flood") o.sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
+      if(m == "auto") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::AUTOMATIC;
+      else if(m == "inside") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::INSIDE_TEST;
+      else if(m == "winding") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
+      else if(m == "flood") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
       else throw Usage_error("--sign-method expects auto, inside, winding or flood");
     }
-    else if(a == "--flow-tolerance") o.flow_tolerance = to_number(a, value());
-    else if(a == "--trust-region-scales") o.trust_region_scales = to_numbers(a, value());
-    else if(a == "--body-seed-threshold") o.body_seed_threshold = to_number(a, value());
-    else if(a == "--min-body-volume") o.min_body_volume = to_number(a, value());
-    else if(a == "--min-surface-volume") o.min_surface_volume = to_number(a, value());
-    else if(a == "--exterior-penalty") o.exterior_penalty = to_number(a, value());
-    else if(a == "--coverage") o.coverage = to_number(a, value());
-    else if(a == "--roi-radius") o.roi_radius = to_number(a, value());
+    else if(a == "--flow-tolerance") o.decomposition.flow_zone_tolerance = to_number(a, value());
+    else if(a == "--trust-region-scales") o.decomposition.trust_region_scales = to_numbers(a, value());
+    else if(a == "--body-seed-threshold") o.decomposition.body_seed_threshold = to_number(a, value());
+    else if(a == "--min-body-volume") o.decomposition.minimum_body_volume = to_number(a, value());
+    else if(a == "--min-surface-volume") o.decomposition.minimum_surface_volume = to_number(a, value());
+    else if(a == "--exterior-penalty") o.decomposition.exterior_penalty = to_number(a, value());
+    else if(a == "--coverage") o.decomposition.coverage_target = to_number(a, value());
+    else if(a == "--roi-radius") o.decomposition.roi_radius = to_number(a, value());
     else if(a == "--interior-weight")
     {
       const std::string m = value();
-      if(m == "one-shot") o.interior_weight = PD::Interior_weight_mode::ONE_SHOT;
-      else if(m == "mps") o.interior_weight = PD::Interior_weight_mode::MPS_REESTIMATED;
+      if(m == "one-shot") o.decomposition.interior_weight_mode = PD::Interior_weight_mode::ONE_SHOT;
+      else if(m == "mps") o.decomposition.interior_weight_mode = PD::Interior_weight_mode::MPS_REESTIMATED;
       else throw Usage_error("--interior-weight expects one-shot or mps");
     }
-    else if(a == "--max-primitives") o.max_primitives = to_count(a, value());
-    else if(a == "--no-freeze") o.use_freeze = false;
-    else if(a == "--no-sheet-merge") o.merge_sheets = false;
-    else if(a == "--no-pieces") o.use_pieces = false;
-    else if(a == "--crease-angle") o.crease_angle = to_number(a, value());
-    else if(a == "--min-part-area") o.min_part_area = to_number(a, value());
-    else if(a == "--no-density") o.use_density = false;
-    else if(a == "--fitting-resolution-cap") o.fitting_resolution_cap = int(to_count(a, value()));
-    else if(a == "--no-exterior-band") o.exterior_band = false;
-    else if(a == "--no-reachable-regions") o.reachable_regions = false;
-    else if(a == "--no-seed-exclusion") o.seed_exclusion = false;
-    else if(a == "--max-solver-evaluations") o.solver_evaluations = int(to_count(a, value()));
-    else if(a == "--max-rejections-in-a-row") o.rejections_in_a_row = to_count(a, value());
-    else if(a == "--no-tsdf") o.use_tsdf = false;
-    else if(a == "--no-body-seeds") o.use_body_seeds = false;
-    else if(a == "--dihedral-percentile" || a == "--dihedral-quantile") o.dihedral_percentile = to_number(a, value());
-    else if(a == "--smoothing-iterations") o.smoothing_iterations = to_count(a, value());
-    else if(a == "--min-patch-size") o.min_patch_size = to_number(a, value());
-    else if(a == "--patch-split-size" || a == "--max-patch-size") o.patch_split_size = to_number(a, value());
-    else if(a == "--vote-temperature") o.vote_temperature = to_number(a, value());
-    else if(a == "--boundary-smoothness") o.boundary_smoothness = to_number(a, value());
-    else if(a == "--no-primitive-merge") o.merge_primitives = false;
-    else if(a == "--min-merge-iou") o.min_merge_iou = to_number(a, value());
+    else if(a == "--max-primitives") o.decomposition.maximum_number_of_primitives = to_count(a, value());
+    else if(a == "--no-freeze") o.decomposition.use_freeze_zone = false;
+    else if(a == "--no-sheet-merge") o.decomposition.merge_thin_sheets = false;
+    else if(a == "--no-pieces") o.decomposition.use_pieces = false;
+    else if(a == "--crease-angle") o.decomposition.crease_angle = to_number(a, value());
+    else if(a == "--min-part-area") o.decomposition.minimum_part_area = to_number(a, value());
+    else if(a == "--no-density") o.decomposition.use_density = false;
+    else if(a == "--fitting-resolution-cap") o.decomposition.fitting_resolution_cap = int(to_count(a, value()));
+    else if(a == "--no-exterior-band") o.decomposition.use_exterior_band_samples = false;
+    else if(a == "--no-reachable-regions") o.decomposition.use_reachable_regions = false;
+    else if(a == "--no-seed-exclusion") o.decomposition.use_seed_exclusion = false;
+    else if(a == "--max-solver-evaluations") o.decomposition.maximum_solver_evaluations = int(to_count(a, value()));
+    else if(a == "--max-rejections-in-a-row") o.decomposition.maximum_rejections_in_a_row = to_count(a, value());
+    else if(a == "--no-tsdf") o.decomposition.use_tsdf_guidance = false;
+    else if(a == "--no-body-seeds") o.decomposition.use_body_seeds = false;
+    else if(a == "--dihedral-percentile" || a == "--dihedral-quantile") o.decomposition.dihedral_percentile = to_number(a, value());
+    else if(a == "--smoothing-iterations") o.decomposition.smoothing_iterations = to_count(a, value());
+    else if(a == "--min-patch-size") o.decomposition.minimum_patch_size = to_number(a, value());
+    else if(a == "--patch-split-size" || a == "--max-patch-size") o.decomposition.patch_split_size = to_number(a, value());
+    else if(a == "--vote-temperature") o.decomposition.vote_temperature = to_number(a, value());
+    else if(a == "--boundary-smoothness") o.decomposition.boundary_smoothness = to_number(a, value());
+    else if(a == "--no-primitive-merge") o.decomposition.merge_primitives = false;
+    else if(a == "--min-merge-iou") o.decomposition.minimum_merge_iou = to_number(a, value());
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
     else throw Usage_error("more than one input file: '" + o.input + "' and '" + a + "'");
@@ -356,28 +319,7 @@ Result run(const Mesh& mesh, const Options& o)
   auto part_map = CGAL::make_property_map(part); // Surface_mesh face indices are 0..F-1 here
   r.parts = PD::decompose(
     mesh, part_map,
-    PDP::combine(CGAL::parameters::number_of_points_per_face(o.samples_per_face).verbose(o.verbose),
-                 PDP::voxel_resolutions(o.resolutions), PDP::number_of_neighbors(o.neighbors),
-                 PDP::curvature_percentile(o.curvature_percentile), PDP::cue_weights(o.cue_weights),
-                 PDP::freeze_ratio(o.freeze_ratio), PDP::normalization_margin(o.margin),
-                 PDP::tsdf_truncation(o.truncation), PDP::tsdf_sign_method(o.sign_method),
-                 PDP::flow_zone_tolerance(o.flow_tolerance), PDP::trust_region_scales(o.trust_region_scales),
-                 PDP::body_seed_threshold(o.body_seed_threshold), PDP::minimum_body_volume(o.min_body_volume),
-                 PDP::minimum_surface_volume(o.min_surface_volume), PDP::exterior_penalty(o.exterior_penalty),
-                 PDP::coverage_target(o.coverage), PDP::roi_radius(o.roi_radius),
-                 PDP::interior_weight_mode(o.interior_weight), PDP::maximum_number_of_primitives(o.max_primitives),
-                 PDP::use_freeze_zone(o.use_freeze), PDP::use_tsdf_guidance(o.use_tsdf),
-                 PDP::use_body_seeds(o.use_body_seeds), PDP::dihedral_percentile(o.dihedral_percentile),
-                 PDP::smoothing_iterations(o.smoothing_iterations), PDP::minimum_patch_size(o.min_patch_size),
-                 PDP::patch_split_size(o.patch_split_size), PDP::vote_temperature(o.vote_temperature),
-                 PDP::boundary_smoothness(o.boundary_smoothness), PDP::merge_primitives(o.merge_primitives),
-                 PDP::minimum_merge_iou(o.min_merge_iou), PDP::merge_thin_sheets(o.merge_sheets), PDP::use_density(o.use_density),
-                 PDP::use_pieces(o.use_pieces), PDP::crease_angle(o.crease_angle),
-                 PDP::minimum_part_area(o.min_part_area),
-                 PDP::fitting_resolution_cap(o.fitting_resolution_cap),
-                 PDP::use_exterior_band_samples(o.exterior_band), PDP::use_reachable_regions(o.reachable_regions),
-                 PDP::use_seed_exclusion(o.seed_exclusion), PDP::maximum_solver_evaluations(o.solver_evaluations),
-                 PDP::maximum_rejections_in_a_row(o.rejections_in_a_row),
+    PDP::combine(Part_decomposition_tools::named_parameters(o.decomposition),
                  PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
                  PDP::part_hierarchy(o.parts > 0 || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
                  PDP::stage_timings(&r.timings)));
