@@ -110,6 +110,43 @@ inline Voxel_grid<std::int32_t> window_labels(const Voxel_grid<std::int32_t>& cl
   return out;
 }
 
+// Per voxel, 1 if it is claimed and its six face neighbours are claimed by the same label: from
+// a point outside it, its neighbour towards the point is strictly nearer, so it is never the
+// nearest voxel of its label.
+inline Voxel_grid<std::uint8_t> inner_voxels(const Voxel_grid<std::int32_t>& claimed)
+{
+  const int r = claimed.resolution();
+  Voxel_grid<std::uint8_t> inner(r, 0);
+  for(int z = 1; z + 1 < r; ++z)
+    for(int y = 1; y + 1 < r; ++y)
+      for(int x = 1; x + 1 < r; ++x)
+      {
+        const std::int32_t l = claimed(x, y, z);
+        inner(x, y, z) = l >= 0 && claimed(x - 1, y, z) == l && claimed(x + 1, y, z) == l && claimed(x, y - 1, z) == l &&
+                         claimed(x, y + 1, z) == l && claimed(x, y, z - 1) == l && claimed(x, y, z + 1) == l;
+      }
+  return inner;
+}
+
+// The claimed voxels within `window` voxels of voxel v along each axis that may be the nearest of
+// their label from a point of v: v itself if claimed, and the others that are not inner.
+inline void window_voxels(const Voxel_grid<std::int32_t>& claimed, const Voxel_grid<std::uint8_t>& inner,
+                          const std::array<int, 3>& v, int window,
+                          std::vector<std::pair<std::int32_t, Eigen::Vector3d> >& listed)
+{
+  const int r = claimed.resolution();
+  listed.clear();
+  for(int z = (std::max)(v[2] - window, 0); z <= (std::min)(v[2] + window, r - 1); ++z)
+    for(int y = (std::max)(v[1] - window, 0); y <= (std::min)(v[1] + window, r - 1); ++y)
+      for(int x = (std::max)(v[0] - window, 0); x <= (std::min)(v[0] + window, r - 1); ++x)
+      {
+        const std::int32_t l = claimed(x, y, z);
+        if(l < 0 || (inner(x, y, z) && (x != v[0] || y != v[1] || z != v[2]))) continue;
+        const std::array<double, 3> p = claimed.center(x, y, z);
+        listed.emplace_back(l, Eigen::Vector3d(p[0], p[1], p[2]));
+      }
+}
+
 // The candidate primitives of each face index for the final labelling: its nearest claimed voxel
 // (label k0, distance d0) and the other labels claimed within `window` voxels of its centroid at
 // a distance below d0 + `margin`, nearest first; a candidate at distance d costs
@@ -122,12 +159,14 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
 {
   const std::size_t nf = corners.vertex.size() / 3;
   const double h = claimed.voxel_size();
-  const int r = claimed.resolution();
   const Voxel_grid<std::int32_t> one_label = window_labels(claimed, window);
+  const Voxel_grid<std::uint8_t> inner = inner_voxels(claimed);
   Face_candidates out;
   out.resize(nf);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     std::vector<std::pair<double, std::int32_t> > near; // (distance, label), one per label
+    std::vector<std::pair<std::int32_t, Eigen::Vector3d> > listed; // the window of voxel `cached`
+    std::array<int, 3> cached{{-1, -1, -1}};
     for(std::size_t i = b; i < e; ++i)
     {
       std::array<Eigen::Vector3d, 3> u;
@@ -148,19 +187,19 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
         out.excluded[i] = area * margin / tau;
         continue;
       }
-      for(int z = (std::max)(v[2] - window, 0); z <= (std::min)(v[2] + window, r - 1); ++z)
-        for(int y = (std::max)(v[1] - window, 0); y <= (std::min)(v[1] + window, r - 1); ++y)
-          for(int x = (std::max)(v[0] - window, 0); x <= (std::min)(v[0] + window, r - 1); ++x)
-          {
-            const std::int32_t l = claimed(x, y, z);
-            if(l < 0) continue;
-            const std::array<double, 3> p = claimed.center(x, y, z);
-            const double d = (c - Eigen::Vector3d(p[0], p[1], p[2])).norm();
-            if(d > nearest.distance + margin) continue;
-            auto it = std::find_if(near.begin(), near.end(), [&](const std::pair<double, std::int32_t>& n) { return n.second == l; });
-            if(it == near.end()) near.emplace_back(d, l);
-            else it->first = (std::min)(it->first, d);
-          }
+      if(v != cached) // faces come in runs of one voxel on fine meshes
+      {
+        cached = v;
+        window_voxels(claimed, inner, v, window, listed);
+      }
+      for(const std::pair<std::int32_t, Eigen::Vector3d>& w : listed)
+      {
+        const double d = (c - w.second).norm();
+        if(d > nearest.distance + margin) continue;
+        auto it = std::find_if(near.begin(), near.end(), [&](const std::pair<double, std::int32_t>& n) { return n.second == w.first; });
+        if(it == near.end()) near.emplace_back(d, w.first);
+        else it->first = (std::min)(it->first, d);
+      }
       std::sort(near.begin() + 1, near.end());
       const std::size_t n = (std::min)(near.size(), std::size_t(Face_candidates::capacity));
       for(std::size_t k = 0; k < n; ++k)
