@@ -88,16 +88,6 @@ struct Options
   std::string command_line;
 };
 
-std::vector<std::string> split(const std::string& s, char sep)
-{
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while(std::getline(in, item, sep))
-    if(!item.empty()) out.push_back(item);
-  return out;
-}
-
 bool contains(const std::vector<std::string>& v, const std::string& x)
 {
   return std::find(v.begin(), v.end(), x) != v.end();
@@ -138,18 +128,18 @@ bool parse(int argc, char** argv, Options& o)
     };
     std::string v;
     if(a == "--out") { if(!value(o.out)) return false; }
-    else if(a == "--methods") { if(!value(v)) return false; o.methods = split(v, ','); }
+    else if(a == "--methods") { if(!value(v)) return false; o.methods = pd_benchmark::split(v, ','); }
     else if(a == "--scale") { if(!value(o.scale_shape)) return false; }
     else if(a == "--scale-faces")
     {
       if(!value(v)) return false;
       o.scale_faces.clear();
-      for(const std::string& x : split(v, ',')) o.scale_faces.push_back(std::atof(x.c_str()));
+      for(const std::string& x : pd_benchmark::split(v, ',')) o.scale_faces.push_back(std::atof(x.c_str()));
       for(double x : o.scale_faces)
         if(!(x >= 1.)) return false;
     }
-    else if(a == "--shapes") { if(!value(v)) return false; o.shapes = split(v, ','); }
-    else if(a == "--variants") { if(!value(v)) return false; o.variants = split(v, ','); o.ablations = true; }
+    else if(a == "--shapes") { if(!value(v)) return false; o.shapes = pd_benchmark::split(v, ','); }
+    else if(a == "--variants") { if(!value(v)) return false; o.variants = pd_benchmark::split(v, ','); o.ablations = true; }
     else if(a == "--threads") { if(!value(v)) return false; o.threads = std::atoi(v.c_str()); }
     else if(a == "--samples") { if(!value(v)) return false; o.samples = std::strtoull(v.c_str(), nullptr, 10); }
     else if(a == "--seed") { if(!value(v)) return false; o.seed = unsigned(std::strtoul(v.c_str(), nullptr, 10)); }
@@ -186,7 +176,7 @@ std::vector<Shape_entry> read_dataset(const Options& o, std::string& error)
   if(!in) { error = "cannot open " + (dir / "manifest.tsv").string(); return shapes; }
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> header = split(line, '\t');
+  const std::vector<std::string> header = pd_benchmark::split(line, '\t');
   auto column = [&](const std::string& name) {
     return int(std::find(header.begin(), header.end(), name) - header.begin());
   };

@@ -819,16 +819,6 @@ void write_off(const std::string& file, const Mesh& m)
   }
 }
 
-std::vector<std::string> split(const std::string& s, char sep)
-{
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while(std::getline(in, item, sep))
-    if(!item.empty()) out.push_back(item);
-  return out;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -840,7 +830,7 @@ int main(int argc, char** argv)
   {
     const std::string a = argv[i];
     if(a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
-    else if(a == "--only" && i + 1 < argc) only = split(argv[++i], ',');
+    else if(a == "--only" && i + 1 < argc) only = pd_benchmark::split(argv[++i], ',');
     else if(!a.empty() && a[0] != '-') folder = a;
     else
     {

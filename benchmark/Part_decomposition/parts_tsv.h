@@ -43,6 +43,17 @@ struct True_primitive
   double smallest_semi_axis() const { return *std::min_element(semi_axes.begin(), semi_axes.end()); }
 };
 
+// The non-empty items of `s` between the separators (the lists of the programs' options).
+inline std::vector<std::string> split(const std::string& s, char sep)
+{
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(s);
+  while(std::getline(in, item, sep))
+    if(!item.empty()) out.push_back(item);
+  return out;
+}
+
 // The rule of the data set: the smallest semi-axis at most 1/8 of the largest.
 inline bool is_thin(const std::array<double, 3>& a)
 {
