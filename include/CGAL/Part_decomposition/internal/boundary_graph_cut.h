@@ -158,27 +158,32 @@ inline void merge_parallel_links(std::vector<Label_problem::Link>& links)
   links.resize(n);
 }
 
-// The problem on the clusters of `faces` (increasing): a cluster may take any candidate of its
-// faces, at the sum of their costs (a face without that candidate adds its `excluded` cost), and
-// starts with its cheapest; a cut between two clusters costs the cut edges between them.
-// `local` receives the cluster of each face, 0..C-1.
-template <typename LabelOf>
-Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
-                              const std::vector<int>& orientation, double edge_scale,
-                              const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
-                              const LabelOf& label_of, std::vector<std::size_t>& local)
+// The cluster of each face of `faces` numbered 0..C-1 in increasing cluster id; returns C.
+inline std::size_t local_clusters(const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
+                                  std::vector<std::size_t>& local)
 {
   std::vector<std::size_t> ids;
   for(std::size_t i : faces) ids.push_back(cluster[i]);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   local.resize(faces.size());
-  std::vector<std::vector<std::size_t> > members(ids.size());
   for(std::size_t m = 0; m < faces.size(); ++m)
-  {
     local[m] = std::size_t(std::lower_bound(ids.begin(), ids.end(), cluster[faces[m]]) - ids.begin());
-    members[local[m]].push_back(faces[m]);
-  }
+  return ids.size();
+}
+
+// The problem on the C clusters of `faces` (increasing), `local` the cluster of each face: a
+// cluster may take any candidate of its faces, at the sum of their costs (a face without that
+// candidate adds its `excluded` cost), and starts with its cheapest; a cut between two clusters
+// costs the cut edges between them.
+template <typename LabelOf>
+Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
+                              const std::vector<int>& orientation, double edge_scale,
+                              const std::vector<std::size_t>& faces, const std::vector<std::size_t>& local,
+                              std::size_t number_of_clusters, const LabelOf& label_of)
+{
+  std::vector<std::vector<std::size_t> > members(number_of_clusters);
+  for(std::size_t m = 0; m < faces.size(); ++m) members[local[m]].push_back(faces[m]);
   Label_problem p;
   std::vector<std::int32_t> labels;
   for(const std::vector<std::size_t>& c : members)
@@ -230,16 +235,16 @@ inline void label_contested_set(const Face_adjacency& adj, const Face_corners& c
 {
   const auto initial_label = [&](std::size_t j) { return initial[j]; };
   std::vector<std::size_t> local;
-  Label_problem coarse;
-  if(!cluster.empty())
-    coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, cluster, initial_label, local);
-  if(cluster.empty() || 2 * coarse.size() > faces.size())
+  const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters(faces, cluster, local);
+  if(2 * number_of_clusters > faces.size())
   {
     Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, initial_label);
     minimize_labels(p);
     for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
     return;
   }
+  Label_problem coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, local,
+                                         number_of_clusters, initial_label);
   minimize_labels(coarse);
   // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
   std::vector<std::int32_t> projected(faces.size());
