@@ -221,16 +221,10 @@ std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patc
                                             const std::vector<double>& face_distance, double tau)
 {
   const std::size_t nf = patch.size();
-  // Faces grouped by patch, increasing face index inside a patch (counting sort): the sums
-  // run in a fixed order whatever the number of threads.
-  std::vector<std::size_t> start(number_of_patches + 1, 0);
-  for(std::size_t i = 0; i < nf; ++i) ++start[patch[i] + 1];
-  for(std::size_t p = 0; p < number_of_patches; ++p) start[p + 1] += start[p];
-  std::vector<std::size_t> order(nf);
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for(std::size_t i = 0; i < nf; ++i) order[fill[patch[i]]++] = i;
-  }
+  // faces grouped by patch, in a fixed order whatever the number of threads
+  std::vector<std::size_t> start, order;
+  group_indices(nf, number_of_patches, [&](std::size_t i) { return patch[i]; }, [](std::size_t) { return true; },
+                start, order);
   std::vector<std::int32_t> winner(number_of_patches, -1);
   for_each_range<ConcurrencyTag>(number_of_patches, [&](std::size_t b, std::size_t e) {
     std::vector<std::pair<std::int32_t, double> > votes;

@@ -296,16 +296,9 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
   }, component);
   // the contested faces of each component, by increasing face index
-  std::vector<std::size_t> start(nc + 1, 0), order;
-  for(std::size_t i = 0; i < nf; ++i)
-    if(contested[i]) ++start[component[i] + 1];
-  for(std::size_t c = 0; c < nc; ++c) start[c + 1] += start[c];
-  order.resize(start[nc]);
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for(std::size_t i = 0; i < nf; ++i)
-      if(contested[i]) order[fill[component[i]]++] = i;
-  }
+  std::vector<std::size_t> start, order;
+  group_indices(nf, nc, [&](std::size_t i) { return component[i]; }, [&](std::size_t i) { return contested[i] != 0; },
+                start, order);
   std::vector<std::size_t> sets; // the components with contested faces
   for(std::size_t c = 0; c < nc; ++c)
     if(start[c] < start[c + 1]) sets.push_back(c);

@@ -164,6 +164,23 @@ inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The indices i in [0, n) with keep(i), grouped by key(i) in [0, number_of_keys) and increasing
+// inside a group (a counting sort): group g is order[start[g] .. start[g + 1]). Sums over a group
+// then run in a fixed order whatever the number of threads.
+template <typename Key, typename Keep>
+void group_indices(std::size_t n, std::size_t number_of_keys, const Key& key, const Keep& keep,
+                   std::vector<std::size_t>& start, std::vector<std::size_t>& order)
+{
+  start.assign(number_of_keys + 1, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    if(keep(i)) ++start[key(i) + 1];
+  for(std::size_t g = 0; g < number_of_keys; ++g) start[g + 1] += start[g];
+  order.resize(start[number_of_keys]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for(std::size_t i = 0; i < n; ++i)
+    if(keep(i)) order[fill[key(i)]++] = i;
+}
+
 // ---- 3D vectors of doubles (the inner loops work on plain arrays, not on kernel objects)
 
 typedef std::array<double, 3> Vec3;
