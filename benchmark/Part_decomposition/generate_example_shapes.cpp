@@ -158,40 +158,11 @@ Mesh cylinder(const Point& a, const Point& b, double r, int na = 64, int nz = 8)
 Mesh box(const Point& lo, const Point& hi, int n = 8)
 {
   std::vector<Point> points;
-  std::map<std::array<int, 3>, std::size_t> index;
-  auto vertex = [&](int i, int j, int k) {
-    const std::array<int, 3> key = {{i, j, k}};
-    auto it = index.find(key);
-    if(it != index.end()) return it->second;
-    points.emplace_back(lo.x() + (hi.x() - lo.x()) * i / n, lo.y() + (hi.y() - lo.y()) * j / n,
-                        lo.z() + (hi.z() - lo.z()) * k / n);
-    return index[key] = points.size() - 1;
-  };
   std::vector<std::array<std::size_t, 3> > triangles;
-  for(int axis = 0; axis < 3; ++axis)
-    for(int side = 0; side < 2; ++side)
-      for(int s = 0; s < n; ++s)
-        for(int t = 0; t < n; ++t)
-        {
-          auto P = [&](int a, int b) {
-            std::array<int, 3> c;
-            c[axis] = side * n;
-            c[(axis + 1) % 3] = a;
-            c[(axis + 2) % 3] = b;
-            return vertex(c[0], c[1], c[2]);
-          };
-          const std::size_t p00 = P(s, t), p10 = P(s + 1, t), p11 = P(s + 1, t + 1), p01 = P(s, t + 1);
-          if(side)
-          {
-            triangles.push_back({p00, p10, p11});
-            triangles.push_back({p00, p11, p01});
-          }
-          else
-          {
-            triangles.push_back({p00, p11, p10});
-            triangles.push_back({p00, p01, p11});
-          }
-        }
+  pd_benchmark::lattice_box_soup({{n, n, n}}, [&](const std::array<int, 3>& c) {
+    return Point(lo.x() + (hi.x() - lo.x()) * c[0] / n, lo.y() + (hi.y() - lo.y()) * c[1] / n,
+                 lo.z() + (hi.z() - lo.z()) * c[2] / n);
+  }, points, triangles);
   return from_soup(points, triangles);
 }
 

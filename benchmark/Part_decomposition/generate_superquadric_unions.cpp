@@ -197,43 +197,11 @@ Mesh superquadric_mesh(const Part& p, double h, int minimum = 4)
     return (1 - w) * s + w * std::tan(pi / 4 * s);
   };
   std::vector<Point> points;
-  std::map<std::array<int, 3>, std::size_t> index;
-  auto vertex = [&](std::array<int, 3> c) {
-    auto it = index.find(c);
-    if(it != index.end()) return it->second;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  pd_benchmark::lattice_box_soup({{n[0], n[1], n[2]}}, [&](const std::array<int, 3>& c) {
     const Vec3 q = surface_point(p, {{coordinate(c[0], 0), coordinate(c[1], 1), coordinate(c[2], 2)}});
-    points.emplace_back(q[0], q[1], q[2]);
-    return index[c] = points.size() - 1;
-  };
-  std::vector<std::vector<std::size_t> > triangles;
-  for(int a = 0; a < 3; ++a)
-    for(int side = 0; side < 2; ++side)
-    {
-      const int u = (a + 1) % 3, v = (a + 2) % 3;
-      for(int i = 0; i < n[u]; ++i)
-        for(int j = 0; j < n[v]; ++j)
-        {
-          auto P = [&](int di, int dj) {
-            std::array<int, 3> c;
-            c[a] = side * n[a];
-            c[u] = i + di;
-            c[v] = j + dj;
-            return vertex(c);
-          };
-          // split along the diagonal away from the cube's corners, for symmetric corners
-          const std::size_t p00 = P(0, 0), p10 = P(1, 0), p11 = P(1, 1), p01 = P(0, 1);
-          if(side)
-          {
-            triangles.push_back({p00, p10, p11});
-            triangles.push_back({p00, p11, p01});
-          }
-          else
-          {
-            triangles.push_back({p00, p11, p10});
-            triangles.push_back({p00, p01, p11});
-          }
-        }
-    }
+    return Point(q[0], q[1], q[2]);
+  }, points, triangles);
   Mesh m;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, m);
   return m;

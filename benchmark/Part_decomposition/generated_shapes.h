@@ -5,9 +5,9 @@
 //
 // Author(s)     : The Part_decomposition authors
 
-// The two steps shared by the generators of shapes with known parts (generate_example_shapes,
-// generate_superquadric_unions): remeshing a union while keeping its creases, and the true part of
-// each face.
+// The steps shared by the generators of shapes with known parts (generate_example_shapes,
+// generate_superquadric_unions): the surface of a lattice box, remeshing a union while keeping its
+// creases, and the true part of each face.
 #ifndef PD_BENCHMARK_GENERATED_SHAPES_H
 #define PD_BENCHMARK_GENERATED_SHAPES_H
 
@@ -20,11 +20,56 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/centroid.h>
 
+#include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <vector>
 
 namespace pd_benchmark {
+
+// The surface of a box of n[0] x n[1] x n[2] lattice cells as a soup: each lattice node c of the
+// surface (0 <= c[a] <= n[a]) made once, as position(c), and each square of a side split into two
+// triangles along the same diagonal, oriented outward.
+template <typename Point, typename Position>
+void lattice_box_soup(const std::array<int, 3>& n, const Position& position, std::vector<Point>& points,
+                      std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  std::map<std::array<int, 3>, std::size_t> index;
+  auto vertex = [&](const std::array<int, 3>& c) {
+    auto it = index.find(c);
+    if(it != index.end()) return it->second;
+    points.push_back(position(c));
+    return index[c] = points.size() - 1;
+  };
+  for(int a = 0; a < 3; ++a)
+    for(int side = 0; side < 2; ++side)
+    {
+      const int u = (a + 1) % 3, v = (a + 2) % 3;
+      for(int i = 0; i < n[u]; ++i)
+        for(int j = 0; j < n[v]; ++j)
+        {
+          auto node = [&](int di, int dj) {
+            std::array<int, 3> c;
+            c[a] = side * n[a];
+            c[u] = i + di;
+            c[v] = j + dj;
+            return vertex(c);
+          };
+          const std::size_t p00 = node(0, 0), p10 = node(1, 0), p11 = node(1, 1), p01 = node(0, 1);
+          if(side)
+          {
+            triangles.push_back({{p00, p10, p11}});
+            triangles.push_back({{p00, p11, p01}});
+          }
+          else
+          {
+            triangles.push_back({{p00, p11, p10}});
+            triangles.push_back({{p00, p01, p11}});
+          }
+        }
+    }
+}
 
 // Isotropic remeshing of a Surface_mesh at edge length `L`, keeping the creases (dihedral above 50
 // degrees) and the vertices where more than two of them meet.
