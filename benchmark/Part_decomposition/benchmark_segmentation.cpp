@@ -15,6 +15,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
@@ -265,17 +266,6 @@ bool reset_peak_memory()
   return bool(f);
 }
 
-// A writable map face -> part id into a vector indexed like faces(mesh) (no garbage).
-struct Face_part_map
-{
-  typedef Face key_type;
-  typedef std::size_t value_type;
-  typedef std::size_t& reference;
-  typedef boost::read_write_property_map_tag category;
-  std::vector<std::size_t>* parts;
-  friend void put(const Face_part_map& m, Face f, std::size_t v) { (*m.parts)[std::size_t(f)] = v; }
-  friend std::size_t get(const Face_part_map& m, Face f) { return (*m.parts)[std::size_t(f)]; }
-};
 
 // ------------------------------------------------------------------------------------------
 // Ablation variants (paper Tables 3 and 4); every one passes all its settings explicitly.
@@ -467,17 +457,6 @@ void score(const std::vector<std::size_t>& face_labels, const std::vector<std::s
   r.sc = sc / k;
 }
 
-// A readable map face -> value over a vector indexed like faces(mesh) (no garbage).
-template <typename T>
-struct Face_vector_map
-{
-  typedef Face key_type;
-  typedef T value_type;
-  typedef const T& reference;
-  typedef boost::readable_property_map_tag category;
-  const std::vector<T>* values;
-  friend const T& get(const Face_vector_map& m, Face f) { return (*m.values)[std::size_t(f)]; }
-};
 
 // The cut discrepancy of the face labels against each ground truth (face labels in mesh order),
 // averaged over the ground truths where it is defined: NaN where only one side has cuts.
@@ -486,7 +465,7 @@ double mean_cut_discrepancy(const Mesh& mesh, const std::vector<std::size_t>& fa
 {
   std::vector<double> cd;
   for(const std::vector<long>& g : gt_faces)
-    cd.push_back(PD::cut_discrepancy(mesh, Face_vector_map<long>{&g}, Face_vector_map<std::size_t>{&face_labels}));
+    cd.push_back(PD::cut_discrepancy(mesh, CGAL::make_property_map(g), CGAL::make_property_map(face_labels)));
   double sum = 0.;
   std::size_t n = 0;
   for(double x : cd)
@@ -560,7 +539,7 @@ std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const N
   labels.assign(num_faces(mesh), std::size_t(-1));
   std::vector<PD::Superquadric<K> > out;
   const std::size_t k = PD::decompose<CGAL::Parallel_if_available_tag>(
-    mesh, Face_part_map{&labels},
+    mesh, CGAL::make_property_map(labels), // Surface_mesh face indices are 0..F-1 (no garbage)
     PD::parameters::combine(np, PD::parameters::primitive_output_iterator(std::back_inserter(out))));
   for(std::size_t l : labels)
     if(l >= k) throw std::runtime_error("decompose left a face without a part id in [0, K)");
