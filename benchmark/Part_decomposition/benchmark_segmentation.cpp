@@ -348,6 +348,11 @@ std::vector<Variant> all_variants()
   // finer fitting: the last stage at 64, or the whole hierarchy one level finer
   add("fit64")->fitting_resolution_cap = 64;
   add("r128")->voxel_resolutions = {32, 64, 128};
+  // which of the finer distance field and the finer fitting grid separates thin parts
+  Variant* fine_field = add("r128_fit32");
+  fine_field->voxel_resolutions = {32, 64, 128};
+  fine_field->fitting_resolution_cap = 32;
+  add("r32_64")->voxel_resolutions = {32, 64}; // the first fitting stage at 32, the field at 64
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;
@@ -547,6 +552,16 @@ std::size_t run_ours(const Mesh& mesh, std::vector<std::size_t>& labels, const N
   return k;
 }
 
+// The stage times of decompose() in a row.
+void copy_stage_timings(const PD::Stage_timings& st, Row& r)
+{
+  r.t_prior = st.prior;
+  r.t_tsdf = st.tsdf;
+  r.t_fitting = st.fitting;
+  r.t_overseg = st.over_segmentation;
+  r.t_assign = st.assignment;
+}
+
 // The true primitives of a shape (NAME.parts.tsv, whose ids are the labels of its single ground
 // truth) and the area of each face; empty without a parts file or a ground truth.
 struct Shape_truth
@@ -726,10 +741,38 @@ std::string machine_description(int threads)
   return o.str();
 }
 
-void write_summary(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
-                   const std::vector<std::string>& categories, int threads)
+// The methods present in `rows`, in run order, and the found columns when the data set has true
+// primitives.
+struct Summary_columns
 {
-  std::ofstream out(fs::path(o.out) / "summary.md");
+  std::vector<std::string> methods;
+  bool with_primitives = false;
+
+  explicit Summary_columns(const std::vector<Row>& rows)
+  {
+    for(const std::string& m : all_methods())
+      for(const Row& r : rows)
+        if(r.method == m) { methods.push_back(m); break; }
+    for(const Row& r : rows) with_primitives = with_primitives || r.true_primitives > 0;
+  }
+  std::string found_head() const { return with_primitives ? " found % ↑ | thin found % ↑ |" : ""; }
+  std::string found_rule() const { return with_primitives ? "---|---|" : ""; }
+  std::string found_cells(const Aggregate& a) const
+  {
+    return with_primitives ? " " + percent(a.found, a.true_primitives) + " | " + percent(a.thin_found, a.thin_total) + " |"
+                           : std::string();
+  }
+  // method, shapes ok, mIoU, RI, VoI, CD, SC and the found columns
+  std::string quality_cells(const std::string& m, const Aggregate& a) const
+  {
+    return " " + method_label(m) + " | " + std::to_string(a.n_ok) + "/" + std::to_string(a.n_all) + " | " +
+           num(a.miou, 3) + " | " + num(a.ri, 3) + " | " + num(a.voi, 3) + " | " + cd_cell(a.cd, a.cd_shapes) + " | " +
+           num(a.sc, 3) + " |" + found_cells(a);
+  }
+};
+
+void write_protocol(std::ostream& out, const Options& o, const std::string& dataset, int threads)
+{
   out << "# Segmentation benchmark: " << dataset << "\n\n"
       << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
       << "Protocol (paper, Appendix A): " << o.samples << " points per shape drawn on the surface with "
@@ -744,98 +787,92 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
       << "over the ground truths where it is defined (both or neither have cuts), then over the shapes where "
       << "it is (their number in parentheses): a single predicted part against a ground truth of several parts "
       << "leaves it undefined.\n\n";
+}
 
-  std::vector<std::string> methods;
-  for(const std::string& m : all_methods())
-    for(const Row& r : rows)
-      if(r.method == m) { methods.push_back(m); break; }
-  bool with_primitives = false;
-  for(const Row& r : rows) with_primitives = with_primitives || r.true_primitives > 0;
-  // the columns of the true primitives, when the data set has them
-  const std::string found_head = with_primitives ? " found % ↑ | thin found % ↑ |" : "";
-  const std::string found_rule = with_primitives ? "---|---|" : "";
-  auto found_cells = [&](const Aggregate& a) {
-    return with_primitives ? " " + percent(a.found, a.true_primitives) + " | " + percent(a.thin_found, a.thin_total) + " |"
-                           : std::string();
-  };
-  if(with_primitives)
+void write_quality_tables(std::ostream& out, const Summary_columns& c, const std::vector<Row>& rows,
+                          const std::vector<std::string>& categories)
+{
+  if(c.with_primitives)
     out << "Primitives (NAME.parts.tsv): a true primitive is found if some predicted part has its "
         << "superquadric's centre within the primitive's smallest semi-axis of its centre and more than half "
         << "of its area labelled with it in NAME.seg; thin: smallest semi-axis at most 1/8 of the largest. "
         << "Percentages pool the primitives of the shapes; n/a for methods without primitives (SDF).\n\n";
-
   out << "## Overall\n\n"
-      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | GT parts | median s | mean s "
+      << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << c.found_head() << " parts | GT parts | median s | mean s "
          "| median end-to-end s | median peak MB |\n"
-      << "|---|---|---|---|---|---|---|" << found_rule << "---|---|---|---|---|---|\n";
-  for(const std::string& m : methods)
+      << "|---|---|---|---|---|---|---|" << c.found_rule() << "---|---|---|---|---|---|\n";
+  for(const std::string& m : c.methods)
   {
     const Aggregate a = aggregate(rows, m);
-    out << "| " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | " << num(a.miou, 3) << " | "
-        << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | " << num(a.sc, 3) << " |"
-        << found_cells(a) << " " << num(a.parts, 1)
-        << " | " << num(a.gt_parts, 1) << " | " << num(a.t_median, 3) << " | " << num(a.t_mean, 3) << " | "
-        << num(a.end_to_end_median, 3) << " | " << num(a.peak_median, 0) << " |\n";
+    out << "|" << c.quality_cells(m, a) << " " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | "
+        << num(a.t_median, 3) << " | " << num(a.t_mean, 3) << " | " << num(a.end_to_end_median, 3) << " | "
+        << num(a.peak_median, 0) << " |\n";
   }
-
   out << "\n## Per category\n\n"
-      << "| Category | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | GT parts | median s |\n"
-      << "|---|---|---|---|---|---|---|---|" << found_rule << "---|---|---|\n";
-  for(const std::string& c : categories)
-    for(const std::string& m : methods)
+      << "| Category | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << c.found_head() << " parts | GT parts | median s |\n"
+      << "|---|---|---|---|---|---|---|---|" << c.found_rule() << "---|---|---|\n";
+  for(const std::string& category : categories)
+    for(const std::string& m : c.methods)
     {
-      const Aggregate a = aggregate(rows, m, c);
+      const Aggregate a = aggregate(rows, m, category);
       if(a.n_all == 0) continue;
-      out << "| " << c << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
-          << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | "
-          << num(a.sc, 3) << " |" << found_cells(a) << " " << num(a.parts, 1) << " | " << num(a.gt_parts, 1) << " | "
-          << num(a.t_median, 3) << " |\n";
+      out << "| " << category << " |" << c.quality_cells(m, a) << " " << num(a.parts, 1) << " | " << num(a.gt_parts, 1)
+          << " | " << num(a.t_median, 3) << " |\n";
     }
+}
 
-  // Halves for tuning and checking: the shapes in name order, alternately in half A and half B.
-  {
-    std::vector<std::string> names;
-    for(const Row& r : rows) names.push_back(r.shape);
-    std::sort(names.begin(), names.end());
-    names.erase(std::unique(names.begin(), names.end()), names.end());
-    std::vector<Row> halves(rows);
-    for(Row& r : halves)
-      r.category = (std::lower_bound(names.begin(), names.end(), r.shape) - names.begin()) % 2 ? "B" : "A";
-    out << "\n## Halves (shapes in name order, alternately A and B)\n\n"
-        << "| Half | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << found_head << " parts | median parts | median s |\n"
-        << "|---|---|---|---|---|---|---|---|" << found_rule << "---|---|---|\n";
-    for(const std::string h : {"A", "B"})
-      for(const std::string& m : methods)
-      {
-        const Aggregate a = aggregate(halves, m, h);
-        std::vector<double> parts;
-        for(const Row& r : halves)
-          if(r.ok && r.method == m && r.category == h) parts.push_back(double(r.parts));
-        out << "| " << h << " | " << method_label(m) << " | " << a.n_ok << "/" << a.n_all << " | "
-            << num(a.miou, 3) << " | " << num(a.ri, 3) << " | " << num(a.voi, 3) << " | " << cd_cell(a.cd, a.cd_shapes) << " | "
-            << num(a.sc, 3) << " |" << found_cells(a) << " " << num(a.parts, 1) << " | " << num(median(parts), 1)
-            << " | " << num(a.t_median, 3) << " |\n";
-      }
-  }
+// Halves for tuning and checking: the shapes in name order, alternately in half A and half B.
+void write_halves(std::ostream& out, const Summary_columns& c, const std::vector<Row>& rows)
+{
+  std::vector<std::string> names;
+  for(const Row& r : rows) names.push_back(r.shape);
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  std::vector<Row> halves(rows);
+  for(Row& r : halves)
+    r.category = (std::lower_bound(names.begin(), names.end(), r.shape) - names.begin()) % 2 ? "B" : "A";
+  out << "\n## Halves (shapes in name order, alternately A and B)\n\n"
+      << "| Half | Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << c.found_head() << " parts | median parts | median s |\n"
+      << "|---|---|---|---|---|---|---|---|" << c.found_rule() << "---|---|---|\n";
+  for(const std::string h : {"A", "B"})
+    for(const std::string& m : c.methods)
+    {
+      const Aggregate a = aggregate(halves, m, h);
+      std::vector<double> parts;
+      for(const Row& r : halves)
+        if(r.ok && r.method == m && r.category == h) parts.push_back(double(r.parts));
+      out << "| " << h << " |" << c.quality_cells(m, a) << " " << num(a.parts, 1) << " | " << num(median(parts), 1)
+          << " | " << num(a.t_median, 3) << " |\n";
+    }
+}
 
-  // Pair by pair: the ratio of each shape's times, then their median.
-  std::map<std::string, const Row*> sdf, ours, ours1;
+double geometric_mean(const std::vector<double>& v)
+{
+  double log_sum = 0.;
+  for(double x : v) log_sum += std::log(x);
+  return std::exp(log_sum / double(v.size()));
+}
+
+// The successful rows of one method, by shape.
+std::map<std::string, const Row*> rows_by_shape(const std::vector<Row>& rows, const std::string& method)
+{
+  std::map<std::string, const Row*> by_shape;
   for(const Row& r : rows)
-    if(r.ok && r.method == "sdf") sdf[r.shape] = &r;
-    else if(r.ok && r.method == "ours") ours[r.shape] = &r;
-    else if(r.ok && r.method == "ours1") ours1[r.shape] = &r;
-  auto geometric_mean = [](const std::vector<double>& v) {
-    double log_sum = 0.;
-    for(double x : v) log_sum += std::log(x);
-    return std::exp(log_sum / double(v.size()));
-  };
+    if(r.ok && r.method == method) by_shape[r.shape] = &r;
+  return by_shape;
+}
+
+// Pair by pair: the ratio of each shape's times, then their median.
+void write_time_ratios(std::ostream& out, const std::vector<Row>& rows)
+{
+  const std::map<std::string, const Row*> sdf = rows_by_shape(rows, "sdf");
   std::vector<double> ratios, e2e_ratios;
   std::size_t at_most_half = 0;
   std::ostringstream table;
   for(const Row& r : rows)
   {
     if(r.method != "ours" || !r.ok || !sdf.count(r.shape)) continue;
-    const Row& s = *sdf[r.shape];
+    const Row& s = *sdf.at(r.shape);
     const double ratio = r.t_method / s.t_method, e2e = r.end_to_end() / s.end_to_end();
     ratios.push_back(ratio);
     e2e_ratios.push_back(e2e);
@@ -844,48 +881,55 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
           << num(e2e, 3) << " | " << num(ratio, 3) << " | " << num(r.miou, 3) << " | " << num(s.miou, 3) << " |\n";
   }
   out << "\n## Time ratio ours / SDF, shape by shape\n\n";
-  if(ratios.empty())
-    out << "No shape where both methods succeeded.\n";
-  else
-    out << "End to end (read + method): median ratio " << num(median(e2e_ratios), 3) << ", geometric mean "
-        << num(geometric_mean(e2e_ratios), 3) << ", largest " << num(*std::max_element(e2e_ratios.begin(), e2e_ratios.end()), 3)
-        << "; at most 0.5 on " << at_most_half << "/" << e2e_ratios.size() << " shapes. Method only: median "
-        << num(median(ratios), 3) << ", geometric mean " << num(geometric_mean(ratios), 3) << ".\n\n"
-        << "| Shape | ours end-to-end s | SDF end-to-end s | ours/SDF end-to-end | ours/SDF method | ours mIoU "
-           "| SDF mIoU |\n|---|---|---|---|---|---|---|\n"
-        << table.str();
+  if(ratios.empty()) { out << "No shape where both methods succeeded.\n"; return; }
+  out << "End to end (read + method): median ratio " << num(median(e2e_ratios), 3) << ", geometric mean "
+      << num(geometric_mean(e2e_ratios), 3) << ", largest " << num(*std::max_element(e2e_ratios.begin(), e2e_ratios.end()), 3)
+      << "; at most 0.5 on " << at_most_half << "/" << e2e_ratios.size() << " shapes. Method only: median "
+      << num(median(ratios), 3) << ", geometric mean " << num(geometric_mean(ratios), 3) << ".\n\n"
+      << "| Shape | ours end-to-end s | SDF end-to-end s | ours/SDF end-to-end | ours/SDF method | ours mIoU "
+         "| SDF mIoU |\n|---|---|---|---|---|---|---|\n"
+      << table.str();
+}
 
-  if(!ours1.empty())
+// The same shapes on one thread: speed-up and bit-identical labels.
+void write_one_thread(std::ostream& out, const std::vector<Row>& rows, int threads)
+{
+  const std::map<std::string, const Row*> ours = rows_by_shape(rows, "ours");
+  std::vector<double> speedups, method_speedups;
+  std::size_t same = 0, compared = 0;
+  std::ostringstream t;
+  for(const Row& r : rows)
   {
-    // the same shapes on one thread: speed-up and bit-identical labels
-    std::vector<double> speedups, method_speedups;
-    std::size_t same = 0, compared = 0;
-    std::ostringstream t;
-    for(const Row& r : rows)
-    {
-      if(r.method != "ours1" || !r.ok || !ours.count(r.shape)) continue;
-      const Row& n = *ours[r.shape];
-      speedups.push_back(r.end_to_end() / n.end_to_end());
-      method_speedups.push_back(r.t_method / n.t_method);
-      if(!r.same_labels.empty()) ++compared;
-      if(r.same_labels == "yes") ++same;
-      t << "| " << r.shape << " | " << r.faces << " | " << num(r.end_to_end(), 3) << " | " << num(n.end_to_end(), 3)
-        << " | " << num(speedups.back(), 3) << " | " << num(method_speedups.back(), 3) << " | "
-        << (r.same_labels.empty() ? "-" : r.same_labels) << " |\n";
-    }
-    out << "\n## One thread against " << threads << ", shape by shape\n\n";
-    if(speedups.empty())
-      out << "No shape where both runs succeeded.\n";
-    else
-      out << "Speed-up end to end (1-thread time / " << threads << "-thread time, read + method): median "
-          << num(median(speedups), 3) << ", geometric mean " << num(geometric_mean(speedups), 3)
-          << "; method only: median " << num(median(method_speedups), 3) << ". Labels bit-identical on "
-          << same << "/" << compared << " shapes.\n\n"
-          << "| Shape | faces | 1 thread end-to-end s | " << threads << " threads end-to-end s | speed-up | "
-          << "speed-up method only | same labels |\n|---|---|---|---|---|---|---|\n"
-          << t.str();
+    if(r.method != "ours1" || !r.ok || !ours.count(r.shape)) continue;
+    const Row& n = *ours.at(r.shape);
+    speedups.push_back(r.end_to_end() / n.end_to_end());
+    method_speedups.push_back(r.t_method / n.t_method);
+    if(!r.same_labels.empty()) ++compared;
+    if(r.same_labels == "yes") ++same;
+    t << "| " << r.shape << " | " << r.faces << " | " << num(r.end_to_end(), 3) << " | " << num(n.end_to_end(), 3)
+      << " | " << num(speedups.back(), 3) << " | " << num(method_speedups.back(), 3) << " | "
+      << (r.same_labels.empty() ? "-" : r.same_labels) << " |\n";
   }
+  out << "\n## One thread against " << threads << ", shape by shape\n\n";
+  if(speedups.empty()) { out << "No shape where both runs succeeded.\n"; return; }
+  out << "Speed-up end to end (1-thread time / " << threads << "-thread time, read + method): median "
+      << num(median(speedups), 3) << ", geometric mean " << num(geometric_mean(speedups), 3)
+      << "; method only: median " << num(median(method_speedups), 3) << ". Labels bit-identical on "
+      << same << "/" << compared << " shapes.\n\n"
+      << "| Shape | faces | 1 thread end-to-end s | " << threads << " threads end-to-end s | speed-up | "
+      << "speed-up method only | same labels |\n|---|---|---|---|---|---|---|\n"
+      << t.str();
+}
 
+void write_stage_medians(std::ostream& out, const std::vector<Row>& rows, int threads)
+{
+  const std::map<std::string, const Row*> ours = rows_by_shape(rows, "ours"), ours1 = rows_by_shape(rows, "ours1"),
+                                          sdf = rows_by_shape(rows, "sdf");
+  auto values = [](const std::map<std::string, const Row*>& m) {
+    std::vector<const Row*> ok;
+    for(const auto& e : m) ok.push_back(e.second);
+    return ok;
+  };
   if(!ours.empty() || !ours1.empty())
   {
     out << "\n## Our stages, median seconds\n\n"
@@ -898,8 +942,7 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
     for(const auto* m : {&ours, &ours1})
     {
       if(m->empty()) continue;
-      std::vector<const Row*> ok;
-      for(const auto& e : *m) ok.push_back(e.second);
+      const std::vector<const Row*> ok = values(*m);
       out << "| " << (m == &ours ? std::to_string(threads) + " thread(s)" : std::string("1 thread")) << " | "
           << num(median(field(ok, [](const Row& r) { return r.t_read; })), 3) << " | "
           << num(median(field(ok, [](const Row& r) { return r.t_prior; })), 3) << " | "
@@ -911,15 +954,15 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
           << num(median(field(ok, [](const Row& r) { return r.end_to_end(); })), 3) << " |\n";
     }
   }
-  if(!sdf.empty())
-  {
-    std::vector<const Row*> ok;
-    for(const auto& e : sdf) ok.push_back(e.second);
-    out << "\nSDF peer, median seconds: sdf_values " << num(median(field(ok, [](const Row& r) { return r.t_sdf; })), 3)
-        << ", segmentation_from_sdf_values "
-        << num(median(field(ok, [](const Row& r) { return r.t_sdf_segmentation; })), 3) << ".\n";
-  }
+  if(sdf.empty()) return;
+  const std::vector<const Row*> ok = values(sdf);
+  out << "\nSDF peer, median seconds: sdf_values " << num(median(field(ok, [](const Row& r) { return r.t_sdf; })), 3)
+      << ", segmentation_from_sdf_values "
+      << num(median(field(ok, [](const Row& r) { return r.t_sdf_segmentation; })), 3) << ".\n";
+}
 
+void write_errors(std::ostream& out, const std::vector<Row>& rows)
+{
   out << "\n## Errors and guards\n\n";
   bool any = false;
   for(const Row& r : rows)
@@ -929,6 +972,20 @@ void write_summary(const Options& o, const std::string& dataset, const std::vect
     if(!r.note.empty()) { out << "- " << r.shape << " / " << r.method << ": " << clean(r.note) << "\n"; any = true; }
   }
   if(!any) out << "None: no error, no guard fired.\n";
+}
+
+void write_summary(const Options& o, const std::string& dataset, const std::vector<Row>& rows,
+                   const std::vector<std::string>& categories, int threads)
+{
+  std::ofstream out(fs::path(o.out) / "summary.md");
+  const Summary_columns columns(rows);
+  write_protocol(out, o, dataset, threads);
+  write_quality_tables(out, columns, rows, categories);
+  write_halves(out, columns, rows);
+  write_time_ratios(out, rows);
+  if(!rows_by_shape(rows, "ours1").empty()) write_one_thread(out, rows, threads);
+  write_stage_medians(out, rows, threads);
+  write_errors(out, rows);
 }
 
 // One level of one shape's hierarchy (--levels).
@@ -1080,7 +1137,6 @@ void write_ablations(const Options& o, const std::string& dataset, const std::ve
   if(!any) out << "None.\n";
 }
 
-
 // ------------------------------------------------------------------------------------------
 // Scale run: one shape subdivided to several sizes, each decomposed from its file.
 
@@ -1121,6 +1177,116 @@ double binary_read_seconds(const Mesh& m, const fs::path& file)
   return seconds;
 }
 
+// Writes the subdivided mesh of `steps` to `file`; false if it cannot.
+bool write_subdivided(const Mesh& base, const std::string& steps, const fs::path& file)
+{
+  Mesh m = base;
+  for(char c : steps)
+    if(c == 'L') CGAL::Subdivision_method_3::Loop_subdivision(m);
+    else CGAL::Subdivision_method_3::Sqrt3_subdivision(m);
+  std::ofstream out(file);
+  out.precision(17);
+  return bool(CGAL::IO::write_OFF(out, m));
+}
+
+// Reads `file` and decomposes it at the default parameters; then times binary PLY and STL reads.
+Row decompose_file(const Options& o, const fs::path& file, const std::string& steps, std::size_t& vertices,
+                   double& t_read_ply, double& t_read_stl)
+{
+  Row r;
+  auto t0 = std::chrono::steady_clock::now();
+  try
+  {
+    Mesh mesh;
+    PD::IO::read_triangle_mesh(file.string(), mesh);
+    r.t_read = seconds_since(t0);
+    r.faces = num_faces(mesh);
+    vertices = num_vertices(mesh);
+    std::vector<std::size_t> labels;
+    PD::Stage_timings st;
+    t0 = std::chrono::steady_clock::now();
+    r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st));
+    r.t_method = seconds_since(t0);
+    copy_stage_timings(st, r);
+    r.ok = true;
+    r.peak_mb = status_mb("VmHWM:");
+    // the same mesh as binary files, read only (after the peak memory of the OFF run)
+    const std::string stem = "scale_" + o.scale_shape + "_" + steps;
+    t_read_ply = binary_read_seconds(mesh, fs::path(o.out) / (stem + ".ply"));
+    t_read_stl = binary_read_seconds(mesh, fs::path(o.out) / (stem + ".stl"));
+  }
+  catch(const std::exception& e) { r.error = e.what(); }
+  if(std::isnan(r.peak_mb)) r.peak_mb = status_mb("VmHWM:");
+  return r;
+}
+
+// One size of the scale run: a row of scale.tsv and, if it succeeded, of the table of scale.md.
+bool run_scale_size(const Options& o, const Mesh& base, double target, std::ostream& tsv, std::ostream& table,
+                    std::vector<std::pair<double, double> >& sizes)
+{
+  const std::string steps = subdivision_steps(double(num_faces(base)), target);
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path file = fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".off");
+  if(!write_subdivided(base, steps, file)) { std::cerr << "cannot write " << file << "\n"; return false; }
+  const double t_generate = seconds_since(t0);
+  const double file_mb = double(fs::file_size(file)) / (1024. * 1024.);
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+  const double rss_before = status_mb("VmRSS:");
+  reset_peak_memory();
+  std::size_t vertices = 0;
+  double t_read_ply = NaN, t_read_stl = NaN;
+  const Row r = decompose_file(o, file, steps, vertices, t_read_ply, t_read_stl);
+  fs::remove(file);
+
+  tsv << o.scale_shape << '\t' << steps << '\t' << r.faces << '\t' << vertices << '\t' << num(file_mb, 1) << '\t'
+      << num(t_generate) << '\t' << num(r.t_read) << '\t' << num(t_read_ply) << '\t' << num(t_read_stl) << '\t'
+      << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t' << num(r.t_fitting) << '\t' << num(r.t_overseg) << '\t'
+      << num(r.t_assign) << '\t' << num(r.t_method) << '\t' << num(r.end_to_end()) << '\t' << num(r.peak_mb, 1) << '\t'
+      << num(rss_before, 1) << '\t' << r.parts << '\t' << clean(r.error) << std::endl;
+  std::cout << "scale " << steps << ": " << r.faces << " faces, " << (r.ok ? "ok" : "ERROR " + r.error) << ", read "
+            << num(r.t_read, 3) << " s, decompose " << num(r.t_method, 3) << " s, peak " << num(r.peak_mb, 0)
+            << " MB" << std::endl;
+  if(!r.ok) return true;
+  double slope = NaN;
+  if(!sizes.empty())
+    slope = std::log(r.end_to_end() / sizes.back().second) / std::log(double(r.faces) / sizes.back().first);
+  sizes.emplace_back(double(r.faces), r.end_to_end());
+  table << "| " << steps << " | " << r.faces << " | " << num(file_mb, 0) << " | " << num(r.t_read, 2) << " | "
+        << num(t_read_ply, 2) << " | " << num(t_read_stl, 2) << " | " << num(r.t_prior, 2) << " | "
+        << num(r.t_tsdf, 2) << " | " << num(r.t_fitting, 2) << " | " << num(r.t_overseg, 2) << " | "
+        << num(r.t_assign, 2) << " | " << num(r.t_method, 2) << " | " << num(r.end_to_end(), 2) << " | "
+        << num(1e5 * r.end_to_end() / double(r.faces), 3) << " | " << (std::isnan(slope) ? std::string("-") : num(slope, 2))
+        << " | " << num(r.peak_mb, 0) << " | " << r.parts << " |\n";
+  return true;
+}
+
+void write_scale_md(const Options& o, const Mesh& base, int threads, const std::string& table,
+                    const std::vector<std::pair<double, double> >& sizes)
+{
+  std::ofstream md(fs::path(o.out) / "scale.md");
+  md << "# Scale run: " << o.scale_shape << " (" << num_faces(base) << " faces) subdivided\n\n"
+     << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
+     << "Each size is made by Loop (L, 1 to 4 faces) and sqrt(3) (S, 1 to 3) subdivision steps of CGAL's "
+        "Subdivision_method_3, written as an OFF file, then read with IO::read_triangle_mesh() and decomposed "
+        "with decompose() at the default parameters; the file is deleted afterwards. The same mesh is then "
+        "written as binary PLY and binary STL and read again (read only). Seconds are wall-clock; "
+        "end-to-end = read + decompose; peak MB is the process's VmHWM from just before the read to the end "
+        "(the mesh, the file buffer and every stage). Growth exponent: log(t2/t1)/log(F2/F1) of the "
+        "end-to-end time against the previous size (1 = linear).\n\n"
+     << "| steps | faces | file MB | read s | read binary PLY s | read binary STL s | prior s | TSDF s | fitting s "
+        "| over-seg. s | assignment s | decompose s | end-to-end s | s per 100k faces | growth exponent | peak MB | parts |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+     << table;
+  if(sizes.size() >= 2)
+    md << "\nFrom " << num(sizes.front().first, 0) << " to " << num(sizes.back().first, 0) << " faces ("
+       << num(sizes.back().first / sizes.front().first, 1) << "x) the end-to-end time grows "
+       << num(sizes.back().second / sizes.front().second, 1) << "x (exponent "
+       << num(std::log(sizes.back().second / sizes.front().second) / std::log(sizes.back().first / sizes.front().first), 2)
+       << ").\n";
+}
+
 int run_scale(const Options& o, int threads)
 {
   const fs::path dir(o.dataset);
@@ -1140,102 +1306,298 @@ int run_scale(const Options& o, int threads)
   std::ostringstream table;
   std::vector<std::pair<double, double> > sizes; // (faces, end-to-end seconds)
   for(double target : o.scale_faces)
-  {
-    const std::string steps = subdivision_steps(double(num_faces(base)), target);
-    auto t0 = std::chrono::steady_clock::now();
-    const fs::path file = fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".off");
-    {
-      Mesh m = base;
-      for(char c : steps)
-        if(c == 'L') CGAL::Subdivision_method_3::Loop_subdivision(m);
-        else CGAL::Subdivision_method_3::Sqrt3_subdivision(m);
-      std::ofstream out(file);
-      out.precision(17);
-      if(!CGAL::IO::write_OFF(out, m)) { std::cerr << "cannot write " << file << "\n"; return 1; }
-    }
-    const double t_generate = seconds_since(t0);
-    const double file_mb = double(fs::file_size(file)) / (1024. * 1024.);
-
-#ifdef __GLIBC__
-    malloc_trim(0);
-#endif
-    const double rss_before = status_mb("VmRSS:");
-    reset_peak_memory();
-    Row r;
-    std::size_t vertices = 0;
-    double t_read_ply = NaN, t_read_stl = NaN;
-    t0 = std::chrono::steady_clock::now();
-    try
-    {
-      Mesh mesh;
-      PD::IO::read_triangle_mesh(file.string(), mesh);
-      r.t_read = seconds_since(t0);
-      r.faces = num_faces(mesh);
-      vertices = num_vertices(mesh);
-      std::vector<std::size_t> labels;
-      PD::Stage_timings st;
-      t0 = std::chrono::steady_clock::now();
-      r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st));
-      r.t_method = seconds_since(t0);
-      r.t_prior = st.prior;
-      r.t_tsdf = st.tsdf;
-      r.t_fitting = st.fitting;
-      r.t_overseg = st.over_segmentation;
-      r.t_assign = st.assignment;
-      r.ok = true;
-      r.peak_mb = status_mb("VmHWM:");
-      // the same mesh as binary files, read only (after the peak memory of the OFF run)
-      t_read_ply = binary_read_seconds(mesh, fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".ply"));
-      t_read_stl = binary_read_seconds(mesh, fs::path(o.out) / ("scale_" + o.scale_shape + "_" + steps + ".stl"));
-    }
-    catch(const std::exception& e) { r.error = e.what(); }
-    if(std::isnan(r.peak_mb)) r.peak_mb = status_mb("VmHWM:");
-    fs::remove(file);
-
-    tsv << o.scale_shape << '\t' << steps << '\t' << r.faces << '\t' << vertices << '\t' << num(file_mb, 1) << '\t'
-        << num(t_generate) << '\t' << num(r.t_read) << '\t' << num(t_read_ply) << '\t' << num(t_read_stl) << '\t' << num(r.t_prior) << '\t' << num(r.t_tsdf) << '\t'
-        << num(r.t_fitting) << '\t' << num(r.t_overseg) << '\t' << num(r.t_assign) << '\t' << num(r.t_method) << '\t'
-        << num(r.end_to_end()) << '\t' << num(r.peak_mb, 1) << '\t' << num(rss_before, 1) << '\t' << r.parts << '\t'
-        << clean(r.error) << std::endl;
-    std::cout << "scale " << steps << ": " << r.faces << " faces, " << (r.ok ? "ok" : "ERROR " + r.error) << ", read "
-              << num(r.t_read, 3) << " s, decompose " << num(r.t_method, 3) << " s, peak " << num(r.peak_mb, 0)
-              << " MB" << std::endl;
-    if(!r.ok) continue;
-    double slope = NaN;
-    if(!sizes.empty())
-      slope = std::log(r.end_to_end() / sizes.back().second) / std::log(double(r.faces) / sizes.back().first);
-    sizes.emplace_back(double(r.faces), r.end_to_end());
-    table << "| " << steps << " | " << r.faces << " | " << num(file_mb, 0) << " | " << num(r.t_read, 2) << " | "
-          << num(t_read_ply, 2) << " | " << num(t_read_stl, 2) << " | "
-          << num(r.t_prior, 2) << " | " << num(r.t_tsdf, 2) << " | " << num(r.t_fitting, 2) << " | "
-          << num(r.t_overseg, 2) << " | " << num(r.t_assign, 2) << " | " << num(r.t_method, 2) << " | "
-          << num(r.end_to_end(), 2) << " | " << num(1e5 * r.end_to_end() / double(r.faces), 3) << " | "
-          << (std::isnan(slope) ? std::string("-") : num(slope, 2)) << " | " << num(r.peak_mb, 0) << " | "
-          << r.parts << " |\n";
-  }
-
-  std::ofstream md(fs::path(o.out) / "scale.md");
-  md << "# Scale run: " << o.scale_shape << " (" << num_faces(base) << " faces) subdivided\n\n"
-     << "Command: `" << o.command_line << "`\n\n" << machine_description(threads) << "\n"
-     << "Each size is made by Loop (L, 1 to 4 faces) and sqrt(3) (S, 1 to 3) subdivision steps of CGAL's "
-        "Subdivision_method_3, written as an OFF file, then read with IO::read_triangle_mesh() and decomposed "
-        "with decompose() at the default parameters; the file is deleted afterwards. The same mesh is then "
-        "written as binary PLY and binary STL and read again (read only). Seconds are wall-clock; "
-        "end-to-end = read + decompose; peak MB is the process's VmHWM from just before the read to the end "
-        "(the mesh, the file buffer and every stage). Growth exponent: log(t2/t1)/log(F2/F1) of the "
-        "end-to-end time against the previous size (1 = linear).\n\n"
-     << "| steps | faces | file MB | read s | read binary PLY s | read binary STL s | prior s | TSDF s | fitting s "
-        "| over-seg. s | assignment s | decompose s | end-to-end s | s per 100k faces | growth exponent | peak MB | parts |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
-     << table.str();
-  if(sizes.size() >= 2)
-    md << "\nFrom " << num(sizes.front().first, 0) << " to " << num(sizes.back().first, 0) << " faces ("
-       << num(sizes.back().first / sizes.front().first, 1) << "x) the end-to-end time grows "
-       << num(sizes.back().second / sizes.front().second, 1) << "x (exponent "
-       << num(std::log(sizes.back().second / sizes.front().second) / std::log(sizes.back().first / sizes.front().first), 2)
-       << ").\n";
+    if(!run_scale_size(o, base, target, tsv, table, sizes)) return 1;
+  write_scale_md(o, base, threads, table.str(), sizes);
   std::cout << "wrote " << (fs::path(o.out) / "scale.tsv").string() << ", " << (fs::path(o.out) / "scale.md").string() << "\n";
   return 0;
+}
+
+// ------------------------------------------------------------------------------------------
+// The data set run
+
+// The variants named by --variants (all of them with --ablations alone); false on an unknown name.
+bool select_variants(const Options& o, std::vector<Variant>& variants)
+{
+  if(!o.ablations) return true;
+  for(const Variant& v : all_variants())
+    if(o.variants.empty() || contains(o.variants, v.id)) variants.push_back(v);
+  for(const std::string& id : o.variants)
+  {
+    bool known = false;
+    for(const Variant& v : variants) known = known || v.id == id;
+    if(!known) { std::cerr << "unknown variant " << id << "\n"; return false; }
+  }
+  return true;
+}
+
+std::string dataset_name(const Options& o)
+{
+  const fs::path p = fs::path(o.dataset).lexically_normal();
+  return p.filename().string().empty() ? p.parent_path().filename().string() : p.filename().string();
+}
+
+// One shape read once: the same mesh, samples and ground truths serve every method.
+struct Shape_data
+{
+  Mesh mesh;
+  std::vector<std::size_t> samples;
+  std::vector<std::vector<long> > gt_samples, gt_faces; // gt_faces: in mesh face order
+  std::string error, note;
+};
+
+void append_note(std::string& note, const std::string& s) { note += (note.empty() ? "" : "; ") + s; }
+
+// Reads the ground truths with one label per input face, at the samples and per mesh face; sets
+// base.k (the lower median of their part counts), gt_parts and n_gt.
+void read_ground_truths(const Shape_entry& e, const PD::IO::Mesh_file_info& info, Shape_data& s, Row& base)
+{
+  double gt_parts = 0.;
+  std::vector<std::size_t> gt_counts;
+  for(const fs::path& p : e.ground_truths)
+  {
+    std::vector<long> file_labels;
+    if(!read_labels(p, file_labels) || file_labels.size() != info.number_of_input_faces)
+    {
+      append_note(s.note, p.filename().string() + " skipped (" + std::to_string(file_labels.size()) + " labels for " +
+                            std::to_string(info.number_of_input_faces) + " faces)");
+      continue;
+    }
+    std::vector<long> g;
+    g.reserve(s.samples.size());
+    for(std::size_t f : s.samples) g.push_back(file_labels[info.face_to_input[f]]);
+    std::vector<long> sorted(file_labels);
+    std::sort(sorted.begin(), sorted.end());
+    gt_counts.push_back(std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin()));
+    gt_parts += double(gt_counts.back());
+    s.gt_samples.push_back(std::move(g));
+    s.gt_faces.emplace_back();
+    for(Face f : faces(s.mesh)) s.gt_faces.back().push_back(file_labels[info.face_to_input[std::size_t(f)]]);
+  }
+  std::sort(gt_counts.begin(), gt_counts.end());
+  if(!gt_counts.empty()) base.k = gt_counts[(gt_counts.size() - 1) / 2];
+  if(s.gt_samples.empty()) append_note(s.note, "no usable ground truth");
+  else base.gt_parts = gt_parts / double(s.gt_samples.size());
+  base.n_gt = s.gt_samples.size();
+}
+
+void read_shape(const Options& o, const Shape_entry& e, Shape_data& s, Row& base)
+{
+  PD::IO::Mesh_file_info info;
+  const auto t0 = std::chrono::steady_clock::now();
+  try
+  {
+    if(e.mesh.empty()) throw std::runtime_error("no mesh file " + e.name + ".{off,obj,ply,stl}");
+    info = PD::IO::read_triangle_mesh(e.mesh.string(), s.mesh);
+  }
+  catch(const std::exception& ex) { s.error = std::string("read: ") + ex.what(); }
+  base.t_read = seconds_since(t0);
+  base.faces = num_faces(s.mesh);
+  if(s.error.empty() && e.manifest_faces >= 0 && std::size_t(e.manifest_faces) != info.number_of_input_faces)
+    s.error = "manifest says " + std::to_string(e.manifest_faces) + " faces, the file has " +
+              std::to_string(info.number_of_input_faces);
+  if(!s.error.empty()) return;
+  s.samples = PD::sample_faces_by_area(s.mesh, CGAL::parameters::number_of_points_on_faces(o.samples).random_seed(o.seed));
+  read_ground_truths(e, info, s, base);
+  if(info.number_of_reversed_components > 0)
+    append_note(s.note, "reader reoriented " + std::to_string(info.number_of_reversed_components) + " inward component(s)");
+}
+
+// What the methods of one shape write to and read from each other.
+struct Shape_run
+{
+  const Options& o;
+  const Shape_entry& e;
+  const Shape_data& s;
+  const Row& base;
+  std::vector<Level_row>& level_rows;
+  std::vector<std::size_t> ours_labels; // of the "ours" run, compared with "ours1"
+  bool has_ours_labels = false;
+};
+
+// One thread from the file to the labels: the mesh is read again inside the arena.
+void run_ours_one_thread(Shape_run& run, Row& r, std::vector<std::size_t>& labels,
+                         std::vector<PD::Superquadric<K> >& primitives)
+{
+  PD::Stage_timings st;
+  auto one_thread = [&]() {
+    Mesh mesh1;
+    const auto tr = std::chrono::steady_clock::now();
+    PD::IO::read_triangle_mesh(run.e.mesh.string(), mesh1);
+    r.t_read = seconds_since(tr);
+    const auto t0 = std::chrono::steady_clock::now();
+    r.parts = run_ours(mesh1, labels, PD::parameters::stage_timings(&st), &primitives);
+    r.t_method = seconds_since(t0);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena arena(1);
+  arena.execute(one_thread);
+#else
+  one_thread();
+#endif
+  copy_stage_timings(st, r);
+  if(run.has_ours_labels) r.same_labels = labels == run.ours_labels ? "yes" : "no";
+}
+
+// Told the part count; with --levels, also scores every level of the hierarchy.
+void run_ours_k(Shape_run& run, Row& r, std::vector<std::size_t>& labels, std::vector<PD::Superquadric<K> >& primitives)
+{
+  if(r.k == 0) throw std::runtime_error("no ground truth: no part count");
+  PD::Stage_timings st;
+  PD::Part_hierarchy<K> h;
+  const auto t0 = std::chrono::steady_clock::now();
+  r.parts = run_ours(run.s.mesh, labels,
+                     PD::parameters::combine(PD::parameters::stage_timings(&st), PD::parameters::number_of_parts(r.k),
+                                             PD::parameters::part_hierarchy(&h)),
+                     &primitives);
+  r.t_method = seconds_since(t0);
+  r.t_hierarchy = st.hierarchy;
+  r.leaves = h.number_of_leaves();
+  if(!run.o.levels) return;
+  for(std::size_t k = 1; k <= (std::min)(h.number_of_leaves(), max_level); ++k)
+  {
+    Row l = run.base;
+    score(h.labels(k), run.s.samples, run.s.gt_samples, l);
+    run.level_rows.push_back(Level_row{run.e.name, run.base.k, k, h.number_of_leaves(), l.miou, l.ri});
+  }
+}
+
+void run_sdf(const Mesh& mesh, const std::string& method, Row& r, std::vector<std::size_t>& labels)
+{
+  if(method == "sdf_k" && r.k == 0) throw std::runtime_error("no ground truth: no part count");
+  const auto t0 = std::chrono::steady_clock::now();
+  pd_benchmark::Sdf_peer_result p = method == "sdf" ? pd_benchmark::segment_with_sdf(mesh)
+                                                    : pd_benchmark::segment_with_sdf(mesh, r.k);
+  r.t_method = seconds_since(t0);
+  r.t_sdf = p.sdf_seconds;
+  r.t_sdf_segmentation = p.segmentation_seconds;
+  r.parts = p.number_of_segments;
+  r.note = p.note;
+  labels = std::move(p.labels);
+}
+
+// "ours" at the defaults, or one variant of it.
+void run_ours_variant(Shape_run& run, const Variant* variant, Row& r, std::vector<std::size_t>& labels,
+                      std::vector<PD::Superquadric<K> >& primitives)
+{
+  PD::Stage_timings st;
+  const auto t0 = std::chrono::steady_clock::now();
+  if(variant == nullptr)
+    r.parts = run_ours(run.s.mesh, labels, PD::parameters::stage_timings(&st), &primitives);
+  else
+    r.parts = run_ours(run.s.mesh, labels,
+                       PD::parameters::combine(Part_decomposition_tools::named_parameters(*variant),
+                                               PD::parameters::stage_timings(&st)),
+                       &primitives);
+  r.t_method = seconds_since(t0);
+  copy_stage_timings(st, r);
+  if(r.method == "ours")
+  {
+    run.ours_labels = labels;
+    run.has_ours_labels = true;
+  }
+}
+
+// Scores the labels against the ground truths, and the primitives against the true ones.
+void score_run(const Shape_run& run, const Shape_truth& truth, const std::vector<std::size_t>& labels,
+               const std::vector<PD::Superquadric<K> >& primitives, Row& r)
+{
+  score(labels, run.s.samples, run.s.gt_samples, r);
+  r.cd = mean_cut_discrepancy(run.s.mesh, labels, run.s.gt_faces);
+  if(truth.primitives.empty()) return;
+  if(r.method.compare(0, 3, "sdf") != 0)
+  {
+    score_primitives(truth.primitives, primitives, labels, run.s.gt_faces.front(), truth.face_area, r);
+    write_primitives(fs::path(run.o.out) / "primitives" / (run.e.name + "." + r.method + ".tsv"), primitives);
+    return;
+  }
+  // no primitives to match: found is n/a
+  r.true_primitives = long(truth.primitives.size());
+  r.thin_total = long(std::count_if(truth.primitives.begin(), truth.primitives.end(),
+                                    [](const pd_benchmark::True_primitive& t) { return t.thin; }));
+}
+
+void run_method(Shape_run& run, const Shape_truth& truth, const Variant* variant, Row& r)
+{
+  std::vector<std::size_t> labels;
+  std::vector<PD::Superquadric<K> > primitives;
+  const auto t0 = std::chrono::steady_clock::now();
+  try
+  {
+    if(r.method == "ours1") run_ours_one_thread(run, r, labels, primitives);
+    else if(r.method == "ours_k") run_ours_k(run, r, labels, primitives);
+    else if(r.method == "sdf" || r.method == "sdf_k") run_sdf(run.s.mesh, r.method, r, labels);
+    else run_ours_variant(run, variant, r, labels, primitives);
+    score_run(run, truth, labels, primitives, r);
+    r.ok = true;
+  }
+  catch(const std::exception& ex)
+  {
+    r.t_method = seconds_since(t0);
+    r.error = ex.what();
+  }
+  catch(...)
+  {
+    r.t_method = seconds_since(t0);
+    r.error = "unknown exception";
+  }
+}
+
+void print_row(std::size_t si, std::size_t n, const Row& r)
+{
+  std::cout << "[" << (si + 1) << "/" << n << "] " << std::left << std::setw(14) << r.shape << " " << std::setw(22)
+            << r.method << std::right << (r.ok ? " ok   " : " ERROR ") << " " << num(r.t_method, 3) << " s  mIoU "
+            << num(r.miou, 3) << " RI " << num(r.ri, 3) << " VoI " << num(r.voi, 3) << " SC " << num(r.sc, 3)
+            << " CD " << num(r.cd, 3) << " parts " << r.parts
+            << (r.found < 0 ? "" : " found " + count(r.found) + "/" + count(r.true_primitives) + " thin " +
+                                     count(r.thin_found) + "/" + count(r.thin_total))
+            << (r.ok ? "" : "  " + r.error) << (r.note.empty() ? "" : "  [" + r.note + "]") << std::endl;
+}
+
+// The methods asked for, in run order, then the variants of ours.
+std::vector<std::pair<std::string, const Variant*> > method_runs(const Options& o, const std::vector<Variant>& variants)
+{
+  std::vector<std::pair<std::string, const Variant*> > runs;
+  for(const std::string& m : all_methods())
+    if(contains(o.methods, m)) runs.emplace_back(m, nullptr);
+  if(contains(o.methods, "ours") || o.ablations)
+    for(const Variant& v : variants) runs.emplace_back("ours:" + v.id, &v);
+  return runs;
+}
+
+// Runs every method on one shape; one row per method, written to `tsv` as it comes.
+void run_shape(const Options& o, const Shape_entry& e, const std::vector<Variant>& variants, std::size_t si,
+               std::size_t n, const std::string& dataset, std::ostream& tsv, std::vector<Row>& rows,
+               std::vector<Level_row>& level_rows)
+{
+  Row base;
+  base.shape = e.name;
+  base.category = e.category;
+  base.n_gt = e.ground_truths.size();
+  Shape_data s;
+  read_shape(o, e, s, base);
+  const Shape_truth truth = read_truth(e, s.mesh, s.gt_faces, s.note);
+  Shape_run run{o, e, s, base, level_rows};
+  for(const auto& m : method_runs(o, variants))
+  {
+    Row r = base;
+    r.method = m.first;
+    if(s.error.empty())
+    {
+#ifdef __GLIBC__
+      malloc_trim(0); // give freed heap pages back, so that the peak counts what the method needs
+#endif
+      r.rss_before_mb = status_mb("VmRSS:");
+      reset_peak_memory();
+      run_method(run, truth, m.second, r);
+    }
+    else
+      r.error = s.error;
+    r.peak_mb = status_mb("VmHWM:");
+    if(!s.note.empty()) r.note = r.note.empty() ? s.note : s.note + "; " + r.note;
+    write_tsv_row(tsv, dataset, r);
+    print_row(si, n, r);
+    rows.push_back(r);
+  }
 }
 
 } // namespace
@@ -1255,254 +1617,23 @@ int main(int argc, char** argv)
   const std::vector<Shape_entry> shapes = read_dataset(o, error);
   if(!error.empty()) { std::cerr << error << "\n"; return 1; }
   if(shapes.empty()) { std::cerr << "no shape selected\n"; return 1; }
-
   std::vector<Variant> variants;
-  if(o.ablations)
-  {
-    for(const Variant& v : all_variants())
-      if(o.variants.empty() || contains(o.variants, v.id)) variants.push_back(v);
-    for(const std::string& id : o.variants)
-    {
-      bool known = false;
-      for(const Variant& v : variants) known = known || v.id == id;
-      if(!known) { std::cerr << "unknown variant " << id << "\n"; return 2; }
-    }
-  }
+  if(!select_variants(o, variants)) return 2;
 
   fs::create_directories(o.out);
-  const std::string dataset = fs::path(o.dataset).lexically_normal().filename().string().empty()
-                                ? fs::path(o.dataset).lexically_normal().parent_path().filename().string()
-                                : fs::path(o.dataset).lexically_normal().filename().string();
+  const std::string dataset = dataset_name(o);
   std::ofstream tsv(fs::path(o.out) / "results.tsv");
   write_tsv_header(tsv);
-  const bool peak_ok = reset_peak_memory();
-  if(!peak_ok) std::cerr << "warning: cannot reset the peak memory (/proc/self/clear_refs): peak_mb is the process peak\n";
+  if(!reset_peak_memory())
+    std::cerr << "warning: cannot reset the peak memory (/proc/self/clear_refs): peak_mb is the process peak\n";
 
   std::vector<Row> rows;
   std::vector<Level_row> level_rows;
   std::vector<std::string> categories;
   for(std::size_t si = 0; si < shapes.size(); ++si)
   {
-    const Shape_entry& e = shapes[si];
-    if(!contains(categories, e.category)) categories.push_back(e.category);
-    Row base;
-    base.shape = e.name;
-    base.category = e.category;
-    base.n_gt = e.ground_truths.size();
-
-    // Read once; the same mesh, samples and ground truths serve every method.
-    Mesh mesh;
-    PD::IO::Mesh_file_info info;
-    std::string shape_error;
-    auto t0 = std::chrono::steady_clock::now();
-    try
-    {
-      if(e.mesh.empty()) throw std::runtime_error("no mesh file " + e.name + ".{off,obj,ply,stl}");
-      info = PD::IO::read_triangle_mesh(e.mesh.string(), mesh);
-    }
-    catch(const std::exception& ex) { shape_error = std::string("read: ") + ex.what(); }
-    base.t_read = seconds_since(t0);
-    base.faces = num_faces(mesh);
-    if(shape_error.empty() && e.manifest_faces >= 0 && std::size_t(e.manifest_faces) != info.number_of_input_faces)
-      shape_error = "manifest says " + std::to_string(e.manifest_faces) + " faces, the file has " +
-                    std::to_string(info.number_of_input_faces);
-
-    std::vector<std::size_t> samples;
-    std::vector<std::vector<long> > gt_samples, gt_faces; // gt_faces: in mesh face order
-    std::string shape_note;
-    if(shape_error.empty())
-    {
-      samples = PD::sample_faces_by_area(
-        mesh, CGAL::parameters::number_of_points_on_faces(o.samples).random_seed(o.seed));
-      double gt_parts = 0.;
-      std::vector<std::size_t> gt_counts;
-      for(const fs::path& p : e.ground_truths)
-      {
-        std::vector<long> file_labels;
-        if(!read_labels(p, file_labels) || file_labels.size() != info.number_of_input_faces)
-        {
-          shape_note += (shape_note.empty() ? "" : "; ") + p.filename().string() + " skipped (" +
-                        std::to_string(file_labels.size()) + " labels for " +
-                        std::to_string(info.number_of_input_faces) + " faces)";
-          continue;
-        }
-        std::vector<long> g;
-        g.reserve(samples.size());
-        for(std::size_t f : samples) g.push_back(file_labels[info.face_to_input[f]]);
-        std::vector<long> sorted(file_labels);
-        std::sort(sorted.begin(), sorted.end());
-        gt_counts.push_back(std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin()));
-        gt_parts += double(gt_counts.back());
-        gt_samples.push_back(std::move(g));
-        gt_faces.emplace_back();
-        for(Face f : faces(mesh)) gt_faces.back().push_back(file_labels[info.face_to_input[std::size_t(f)]]);
-      }
-      std::sort(gt_counts.begin(), gt_counts.end());
-      if(!gt_counts.empty()) base.k = gt_counts[(gt_counts.size() - 1) / 2];
-      if(gt_samples.empty()) shape_note += (shape_note.empty() ? "" : "; ") + std::string("no usable ground truth");
-      else base.gt_parts = gt_parts / double(gt_samples.size());
-      base.n_gt = gt_samples.size();
-      if(info.number_of_reversed_components > 0)
-        shape_note += (shape_note.empty() ? "" : "; ") + std::string("reader reoriented ") +
-                      std::to_string(info.number_of_reversed_components) + " inward component(s)";
-    }
-    const Shape_truth truth = read_truth(e, mesh, gt_faces, shape_note);
-
-    auto finish = [&](Row& r) {
-      r.peak_mb = status_mb("VmHWM:");
-      if(!shape_note.empty()) r.note = r.note.empty() ? shape_note : shape_note + "; " + r.note;
-      write_tsv_row(tsv, dataset, r);
-      std::cout << "[" << (si + 1) << "/" << shapes.size() << "] " << std::left << std::setw(14) << r.shape
-                << " " << std::setw(22) << r.method << std::right
-                << (r.ok ? " ok   " : " ERROR ") << " " << num(r.t_method, 3) << " s  mIoU " << num(r.miou, 3)
-                << " RI " << num(r.ri, 3) << " VoI " << num(r.voi, 3) << " SC " << num(r.sc, 3)
-                << " CD " << num(r.cd, 3) << " parts " << r.parts
-                << (r.found < 0 ? "" : " found " + count(r.found) + "/" + count(r.true_primitives) + " thin " +
-                                         count(r.thin_found) + "/" + count(r.thin_total))
-                << (r.ok ? "" : "  " + r.error)
-                << (r.note.empty() ? "" : "  [" + r.note + "]") << std::endl;
-      rows.push_back(r);
-    };
-    auto begin_method = [&](Row& r) {
-#ifdef __GLIBC__
-      malloc_trim(0); // give freed heap pages back, so that the peak counts what the method needs
-#endif
-      r.rss_before_mb = status_mb("VmRSS:");
-      reset_peak_memory();
-    };
-
-    std::vector<std::pair<std::string, const Variant*> > runs;
-    for(const std::string& m : all_methods())
-      if(contains(o.methods, m)) runs.emplace_back(m, nullptr);
-    if(contains(o.methods, "ours") || o.ablations)
-      for(const Variant& v : variants)
-        runs.emplace_back("ours:" + v.id, &v);
-
-    std::vector<std::size_t> ours_labels; // of the "ours" run, compared with "ours1"
-    bool has_ours_labels = false;
-    for(const auto& run : runs)
-    {
-      Row r = base;
-      r.method = run.first;
-      if(!shape_error.empty()) { r.error = shape_error; finish(r); continue; }
-      std::vector<std::size_t> labels;
-      std::vector<PD::Superquadric<K> > primitives;
-      begin_method(r);
-      t0 = std::chrono::steady_clock::now();
-      try
-      {
-        if(run.first == "ours1")
-        {
-          // One thread from the file to the labels: the mesh is read again inside the arena.
-          PD::Stage_timings st;
-          auto one_thread = [&]() {
-            Mesh mesh1;
-            const auto tr = std::chrono::steady_clock::now();
-            PD::IO::read_triangle_mesh(e.mesh.string(), mesh1);
-            r.t_read = seconds_since(tr);
-            t0 = std::chrono::steady_clock::now();
-            r.parts = run_ours(mesh1, labels, PD::parameters::stage_timings(&st), &primitives);
-            r.t_method = seconds_since(t0);
-          };
-#ifdef CGAL_LINKED_WITH_TBB
-          tbb::task_arena arena(1);
-          arena.execute(one_thread);
-#else
-          one_thread();
-#endif
-          r.t_prior = st.prior;
-          r.t_tsdf = st.tsdf;
-          r.t_fitting = st.fitting;
-          r.t_overseg = st.over_segmentation;
-          r.t_assign = st.assignment;
-          if(has_ours_labels) r.same_labels = labels == ours_labels ? "yes" : "no";
-        }
-        else if(run.first == "ours_k")
-        {
-          if(r.k == 0) throw std::runtime_error("no ground truth: no part count");
-          PD::Stage_timings st;
-          PD::Part_hierarchy<K> h;
-          r.parts = run_ours(mesh, labels,
-                             PD::parameters::combine(PD::parameters::stage_timings(&st),
-                                                     PD::parameters::number_of_parts(r.k),
-                                                     PD::parameters::part_hierarchy(&h)),
-                             &primitives);
-          r.t_method = seconds_since(t0);
-          r.t_hierarchy = st.hierarchy;
-          r.leaves = h.number_of_leaves();
-          if(o.levels)
-            for(std::size_t k = 1; k <= (std::min)(h.number_of_leaves(), max_level); ++k)
-            {
-              Row l = base;
-              score(h.labels(k), samples, gt_samples, l);
-              level_rows.push_back(Level_row{e.name, base.k, k, h.number_of_leaves(), l.miou, l.ri});
-            }
-        }
-        else if(run.first == "sdf" || run.first == "sdf_k")
-        {
-          if(run.first == "sdf_k" && r.k == 0) throw std::runtime_error("no ground truth: no part count");
-          pd_benchmark::Sdf_peer_result p = run.first == "sdf" ? pd_benchmark::segment_with_sdf(mesh)
-                                                               : pd_benchmark::segment_with_sdf(mesh, r.k);
-          r.t_method = seconds_since(t0);
-          r.t_sdf = p.sdf_seconds;
-          r.t_sdf_segmentation = p.segmentation_seconds;
-          r.parts = p.number_of_segments;
-          r.note = p.note;
-          labels = std::move(p.labels);
-        }
-        else
-        {
-          PD::Stage_timings st;
-          if(run.second == nullptr)
-            r.parts = run_ours(mesh, labels, PD::parameters::stage_timings(&st), &primitives);
-          else
-          {
-            const Variant& v = *run.second;
-            r.parts = run_ours(mesh, labels,
-                               PD::parameters::combine(Part_decomposition_tools::named_parameters(*run.second),
-                                                       PD::parameters::stage_timings(&st)),
-                               &primitives);
-          }
-          r.t_method = seconds_since(t0);
-          r.t_prior = st.prior;
-          r.t_tsdf = st.tsdf;
-          r.t_fitting = st.fitting;
-          r.t_overseg = st.over_segmentation;
-          r.t_assign = st.assignment;
-          if(run.first == "ours")
-          {
-            ours_labels = labels;
-            has_ours_labels = true;
-          }
-        }
-        score(labels, samples, gt_samples, r);
-        r.cd = mean_cut_discrepancy(mesh, labels, gt_faces);
-        if(run.first.compare(0, 3, "sdf") != 0 && !truth.primitives.empty())
-        {
-          score_primitives(truth.primitives, primitives, labels, gt_faces.front(), truth.face_area, r);
-          write_primitives(fs::path(o.out) / "primitives" / (e.name + "." + run.first + ".tsv"), primitives);
-        }
-        else if(!truth.primitives.empty())
-        {
-          // no primitives to match: found is n/a
-          r.true_primitives = long(truth.primitives.size());
-          r.thin_total = long(std::count_if(truth.primitives.begin(), truth.primitives.end(),
-                                            [](const pd_benchmark::True_primitive& t) { return t.thin; }));
-        }
-        r.ok = true;
-      }
-      catch(const std::exception& ex)
-      {
-        r.t_method = seconds_since(t0);
-        r.error = ex.what();
-      }
-      catch(...)
-      {
-        r.t_method = seconds_since(t0);
-        r.error = "unknown exception";
-      }
-      finish(r);
-    }
+    if(!contains(categories, shapes[si].category)) categories.push_back(shapes[si].category);
+    run_shape(o, shapes[si], variants, si, shapes.size(), dataset, tsv, rows, level_rows);
   }
 
   write_summary(o, dataset, rows, categories, threads);
