@@ -156,67 +156,55 @@ bool write_slice(const std::string& file, int r, int axis, int index, const Colo
   return bool(out);
 }
 
-int main(int argc, char** argv)
+struct Figure_options
+{
+  std::string input, dir;
+  double alpha = PD::defaults::freeze_ratio;
+  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
+  int axis = 2;
+  double slice_fraction = -1.; // < 0: the slice with the most non-exterior voxels
+};
+
+bool parse(int argc, char** argv, Figure_options& o)
 {
   if(argc < 3)
   {
     std::cerr << "usage: figure_data MESH OUTDIR [--freeze-ratio A] [--resolutions 16,32,64] [--slice AXIS[:T]]\n";
-    return EXIT_FAILURE;
+    return false;
   }
-  const std::string input = argv[1], dir = argv[2];
-  double alpha = PD::defaults::freeze_ratio;
-  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
-  int axis = 2;
-  double slice_fraction = -1.;
+  o.input = argv[1];
+  o.dir = argv[2];
   for(int i = 3; i + 1 < argc; i += 2)
   {
     const std::string a = argv[i], v = argv[i + 1];
-    if(a == "--freeze-ratio") alpha = std::stod(v);
+    if(a == "--freeze-ratio") o.alpha = std::stod(v);
     else if(a == "--resolutions")
     {
-      resolutions.clear();
+      o.resolutions.clear();
       std::istringstream s(v);
       std::string t;
-      while(std::getline(s, t, ',')) resolutions.push_back(std::stoi(t));
+      while(std::getline(s, t, ',')) o.resolutions.push_back(std::stoi(t));
     }
     else if(a == "--slice")
     {
-      axis = v[0] == 'x' ? 0 : v[0] == 'y' ? 1 : 2;
-      if(v.size() > 2) slice_fraction = std::stod(v.substr(2));
+      o.axis = v[0] == 'x' ? 0 : v[0] == 'y' ? 1 : 2;
+      if(v.size() > 2) o.slice_fraction = std::stod(v.substr(2));
     }
     else
     {
       std::cerr << "unknown option " << a << "\n";
-      return EXIT_FAILURE;
+      return false;
     }
   }
+  return true;
+}
 
-  Mesh mesh;
-  PD::IO::Mesh_file_info info;
-  try
-  {
-    info = PD::IO::read_triangle_mesh(input, mesh);
-  }
-  catch(const PD::Invalid_input& e)
-  {
-    std::cerr << "cannot read " << input << ": " << e.what() << "\n";
-    return EXIT_FAILURE;
-  }
-
-  const auto np = PD::parameters::combine(PD::parameters::freeze_ratio(alpha),
-                                          PD::parameters::voxel_resolutions(resolutions));
-  PD::Part_decomposer<Mesh> decomposer(mesh);
-  const PD::Hierarchical_prior& prior = decomposer.compute_prior<Concurrency>(np);
-  const PD::Truncated_signed_distance_field& tsdf = decomposer.compute_distance_field<Concurrency>(np);
-  const PD::Superquadric_fitting_result<K>& fit = decomposer.fit_primitives<Concurrency>(np);
-  const std::size_t number_of_patches = decomposer.over_segment<Concurrency>(np);
-  std::vector<std::size_t> part(num_faces(mesh), 0);
-  const std::size_t number_of_parts = decomposer.assign_parts<Concurrency>(CGAL::make_property_map(part), np);
+// The cut of each resolution, one cube per non-empty voxel.
+bool write_level_cubes(const std::string& dir, const PD::Hierarchical_prior& prior)
+{
   const PD::Normalization& normalization = prior.normalization;
   const double unit = 1. / normalization.scale(); // one normalized unit in input units
-
   bool ok = true;
-  // the cut of each resolution
   for(const PD::Topology_score_field& field : prior.fields)
   {
     std::vector<Cube> cubes;
@@ -229,117 +217,160 @@ int main(int argc, char** argv)
     }
     ok = ok && write_cubes(dir + "/prior_" + std::to_string(r) + ".off", cubes);
   }
-  // the fused leaves: the leaf of resolution R(v) that holds each finest voxel, once
+  return ok;
+}
+
+// The fused leaves: the leaf of resolution R(v) that holds each finest voxel, once.
+bool write_fused_leaves(const std::string& dir, const PD::Hierarchical_prior& prior)
+{
+  const PD::Normalization& normalization = prior.normalization;
+  const double unit = 1. / normalization.scale();
+  const int rf = prior.classes.resolution();
+  const std::size_t L = prior.resolutions.size();
+  std::map<std::array<int, 4>, Cube> leaves;
+  for(std::size_t v = 0; v < prior.classes.size(); ++v)
   {
-    const int rf = prior.classes.resolution();
-    const std::size_t L = prior.resolutions.size();
-    std::map<std::array<int, 4>, Cube> leaves;
-    for(std::size_t v = 0; v < prior.classes.size(); ++v)
-    {
-      if(prior.classes[v] == PD::Voxel_class::EMPTY) continue;
-      const int rl = prior.leaf_resolution[v], f = rf / rl;
-      const std::array<int, 3> c = prior.classes.coordinates(v);
-      const std::array<int, 4> key = {{rl, c[0] / f, c[1] / f, c[2] / f}};
-      if(leaves.count(key)) continue;
-      std::size_t level = 0;
-      while(level + 1 < L && prior.resolutions[level] != rl) ++level;
-      const double shade = L > 1 ? 0.6 + 0.4 * double(level) / double(L - 1) : 1.; // coarse = darker
-      const std::array<double, 3> center = {{-0.5 + (key[1] + 0.5) / rl, -0.5 + (key[2] + 0.5) / rl,
-                                             -0.5 + (key[3] + 0.5) / rl}};
-      leaves[key] = {normalization.from_unit(center), unit / rl,
-                     shaded(prior.classes[v] == PD::Voxel_class::FREEZE ? freeze_color : flow_color, shade)};
-    }
-    std::vector<Cube> cubes;
-    for(const auto& kv : leaves) cubes.push_back(kv.second);
-    ok = ok && write_cubes(dir + "/prior_fused.off", cubes, 0.94);
+    if(prior.classes[v] == PD::Voxel_class::EMPTY) continue;
+    const int rl = prior.leaf_resolution[v], f = rf / rl;
+    const std::array<int, 3> c = prior.classes.coordinates(v);
+    const std::array<int, 4> key = {{rl, c[0] / f, c[1] / f, c[2] / f}};
+    if(leaves.count(key)) continue;
+    std::size_t level = 0;
+    while(level + 1 < L && prior.resolutions[level] != rl) ++level;
+    const double shade = L > 1 ? 0.6 + 0.4 * double(level) / double(L - 1) : 1.; // coarse = darker
+    const std::array<double, 3> center = {{-0.5 + (key[1] + 0.5) / rl, -0.5 + (key[2] + 0.5) / rl,
+                                           -0.5 + (key[3] + 0.5) / rl}};
+    leaves[key] = {normalization.from_unit(center), unit / rl,
+                   shaded(prior.classes[v] == PD::Voxel_class::FREEZE ? freeze_color : flow_color, shade)};
   }
+  std::vector<Cube> cubes;
+  for(const auto& kv : leaves) cubes.push_back(kv.second);
+  return write_cubes(dir + "/prior_fused.off", cubes, 0.94);
+}
 
-  // the slice of the distance field and of the zones of the finest fitting resolution
+std::size_t voxel_index(int r, const std::array<int, 3>& v) { return std::size_t(v[0] + r * (v[1] + r * v[2])); }
+
+// The slice along `axis` with the most voxels outside the exterior.
+int fullest_slice(const PD::Fitting_zones& zones, int r, int axis)
+{
+  int index = r / 2;
+  std::size_t best = 0;
+  for(int s = 0; s < r; ++s)
   {
-    const int r = tsdf.values.resolution();
-    std::vector<int> fitting_resolutions;
-    for(int res : prior.resolutions) fitting_resolutions.push_back(std::min(res, prior.resolutions.size() > 1 ? prior.resolutions[prior.resolutions.size() - 2] : res));
-    const PD::Fitting_zones zones = PD::compute_fitting_zones<Concurrency>(prior.classes, fitting_resolutions);
-    const int rfit = *std::max_element(fitting_resolutions.begin(), fitting_resolutions.end());
-    const PD::Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(rfit);
-    int index = r / 2;
-    auto at = [r](const std::array<int, 3>& v) { return std::size_t(v[0] + r * (v[1] + r * v[2])); };
-    if(slice_fraction >= 0.) index = std::min(r - 1, int(slice_fraction * r));
-    else
-    {
-      std::size_t best = 0;
-      for(int s = 0; s < r; ++s)
+    std::size_t n = 0;
+    for(int a = 0; a < r; ++a)
+      for(int b = 0; b < r; ++b)
       {
-        std::size_t n = 0;
-        for(int a = 0; a < r; ++a)
-          for(int b = 0; b < r; ++b)
-          {
-            std::array<int, 3> v;
-            v[std::size_t(axis)] = s;
-            v[std::size_t(axis == 0 ? 1 : 0)] = a;
-            v[std::size_t(axis == 2 ? 1 : 2)] = b;
-            n += !zones.exterior[at(v)];
-          }
-        if(n > best) best = n, index = s;
+        std::array<int, 3> v;
+        v[std::size_t(axis)] = s;
+        v[std::size_t(axis == 0 ? 1 : 0)] = a;
+        v[std::size_t(axis == 2 ? 1 : 2)] = b;
+        n += !zones.exterior[voxel_index(r, v)];
       }
-    }
-    const double tau = tsdf.truncation;
-    auto inside = [&](const std::array<int, 3>& v) { return tsdf.values[at(v)] < 0.; };
-    auto tsdf_color = [&](const std::array<int, 3>& v) -> Rgb {
-      const double d = tsdf.values[at(v)], t = std::min(1., std::abs(d) / tau);
-      if(t >= 1.) return d < 0 ? Rgb{{48, 82, 160}} : Rgb{{236, 236, 236}};
-      const double s = 0.25 + 0.75 * t; // white at the surface, saturated at the truncation
-      return d < 0 ? Rgb{{int(255 * (1 - 0.8 * s)), int(255 * (1 - 0.6 * s)), 255}}
-                   : Rgb{{255, int(255 * (1 - 0.7 * s)), int(255 * (1 - 0.75 * s))}};
-    };
-    ok = ok && write_slice(dir + "/tsdf_slice.ppm", r, axis, index, tsdf_color,
-                           [&](const std::array<int, 3>& a, const std::array<int, 3>& b) { return inside(a) != inside(b); });
-    auto zone = [&](const std::array<int, 3>& v) -> int {
-      const std::size_t i = at(v);
-      if(prior.classes[i] == PD::Voxel_class::FREEZE) return 3;
-      if(!zones.exterior[i]) return prior.classes[i] == PD::Voxel_class::FLOW ? 2 : 1; // carrier / filled interior
-      return flow[i] ? 4 : 0;                                                       // dilation / exterior
-    };
-    auto zone_color = [&](const std::array<int, 3>& v) -> Rgb {
-      switch(zone(v))
-      {
-        case 1: return {{160, 190, 240}};  // interior of the hull
-        case 2: return flow_color;         // Flow carrier voxels
-        case 3: return freeze_color;       // Freeze zone
-        case 4: return {{215, 228, 250}};  // Flow-zone tolerance outside the hull
-        default: return {{255, 255, 255}}; // exterior
-      }
-    };
-    ok = ok && write_slice(dir + "/zones_slice.ppm", r, axis, index, zone_color,
-                           [&](const std::array<int, 3>& a, const std::array<int, 3>& b) { return inside(a) != inside(b); });
-
-    std::vector<Cube> claimed;
-    for(std::size_t v = 0; v < fit.labels.size(); ++v)
-      if(fit.labels[v] >= 0)
-        claimed.push_back({normalization.from_unit(fit.labels.center(v)), unit / r, palette(std::size_t(fit.labels[v]))});
-    ok = ok && write_cubes(dir + "/claimed.off", claimed);
-    std::ofstream summary(dir + "/summary.txt");
-    summary << input << ": " << num_faces(mesh) << " faces\n"
-            << "slice " << "xyz"[axis] << " = " << index << " of " << r << "\n";
-    for(std::size_t l = 0; l < prior.fields.size(); ++l)
-      summary << "r = " << prior.resolutions[l] << ": " << prior.fields[l].number_of_active_voxels << " active voxels, "
-              << prior.fields[l].number_of_freeze_voxels << " Freeze; fused leaves " << prior.number_of_flow_leaves[l]
-              << " Flow, " << prior.number_of_freeze_leaves[l] << " Freeze\n";
-    summary << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, " << number_of_parts
-            << " parts\n";
-    ok = ok && bool(summary);
+    if(n > best) best = n, index = s;
   }
+  return index;
+}
 
-  ok = ok && write_superquadrics(dir + "/primitives.off", fit.input_primitives);
-  ok = ok && write_superquadrics(dir + "/part_primitives.off", decomposer.part_primitives());
-  ok = ok && write_labels(dir + "/patches.seg", PD::IO::labels_in_file_order(info, decomposer.patches()));
-  ok = ok && write_labels(dir + "/parts.seg", PD::IO::labels_in_file_order(info, part));
-  if(!ok)
+// The slice of the distance field and of the zones of the finest fitting resolution; returns the
+// slice index.
+int write_slices(const Figure_options& o, const PD::Hierarchical_prior& prior,
+                 const PD::Truncated_signed_distance_field& tsdf, bool& ok)
+{
+  const int r = tsdf.values.resolution();
+  std::vector<int> fitting_resolutions;
+  for(int res : prior.resolutions)
+    fitting_resolutions.push_back(
+      std::min(res, prior.resolutions.size() > 1 ? prior.resolutions[prior.resolutions.size() - 2] : res));
+  const PD::Fitting_zones zones = PD::compute_fitting_zones<Concurrency>(prior.classes, fitting_resolutions);
+  const int rfit = *std::max_element(fitting_resolutions.begin(), fitting_resolutions.end());
+  const PD::Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(rfit);
+  const int index = o.slice_fraction >= 0. ? std::min(r - 1, int(o.slice_fraction * r)) : fullest_slice(zones, r, o.axis);
+  const double tau = tsdf.truncation;
+  auto inside = [&](const std::array<int, 3>& v) { return tsdf.values[voxel_index(r, v)] < 0.; };
+  auto boundary = [&](const std::array<int, 3>& a, const std::array<int, 3>& b) { return inside(a) != inside(b); };
+  auto tsdf_color = [&](const std::array<int, 3>& v) -> Rgb {
+    const double d = tsdf.values[voxel_index(r, v)], t = std::min(1., std::abs(d) / tau);
+    if(t >= 1.) return d < 0 ? Rgb{{48, 82, 160}} : Rgb{{236, 236, 236}};
+    const double s = 0.25 + 0.75 * t; // white at the surface, saturated at the truncation
+    return d < 0 ? Rgb{{int(255 * (1 - 0.8 * s)), int(255 * (1 - 0.6 * s)), 255}}
+                 : Rgb{{255, int(255 * (1 - 0.7 * s)), int(255 * (1 - 0.75 * s))}};
+  };
+  ok = ok && write_slice(o.dir + "/tsdf_slice.ppm", r, o.axis, index, tsdf_color, boundary);
+  auto zone_color = [&](const std::array<int, 3>& v) -> Rgb {
+    const std::size_t i = voxel_index(r, v);
+    if(prior.classes[i] == PD::Voxel_class::FREEZE) return freeze_color;
+    if(!zones.exterior[i])
+      return prior.classes[i] == PD::Voxel_class::FLOW ? flow_color        // Flow carrier voxels
+                                                       : Rgb{{160, 190, 240}}; // interior of the hull
+    return flow[i] ? Rgb{{215, 228, 250}}  // Flow-zone tolerance outside the hull
+                   : Rgb{{255, 255, 255}}; // exterior
+  };
+  ok = ok && write_slice(o.dir + "/zones_slice.ppm", r, o.axis, index, zone_color, boundary);
+  return index;
+}
+
+bool write_claims_and_summary(const Figure_options& o, const Mesh& mesh, const PD::Hierarchical_prior& prior,
+                              const PD::Superquadric_fitting_result<K>& fit, int r, int slice,
+                              std::size_t number_of_patches, std::size_t number_of_parts)
+{
+  const double unit = 1. / prior.normalization.scale();
+  std::vector<Cube> claimed;
+  for(std::size_t v = 0; v < fit.labels.size(); ++v)
+    if(fit.labels[v] >= 0)
+      claimed.push_back({prior.normalization.from_unit(fit.labels.center(v)), unit / r, palette(std::size_t(fit.labels[v]))});
+  bool ok = write_cubes(o.dir + "/claimed.off", claimed);
+  std::ofstream summary(o.dir + "/summary.txt");
+  summary << o.input << ": " << num_faces(mesh) << " faces\n"
+          << "slice " << "xyz"[o.axis] << " = " << slice << " of " << r << "\n";
+  for(std::size_t l = 0; l < prior.fields.size(); ++l)
+    summary << "r = " << prior.resolutions[l] << ": " << prior.fields[l].number_of_active_voxels << " active voxels, "
+            << prior.fields[l].number_of_freeze_voxels << " Freeze; fused leaves " << prior.number_of_flow_leaves[l]
+            << " Flow, " << prior.number_of_freeze_leaves[l] << " Freeze\n";
+  summary << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, " << number_of_parts
+          << " parts\n";
+  return ok && bool(summary);
+}
+
+int main(int argc, char** argv)
+{
+  Figure_options o;
+  if(!parse(argc, argv, o)) return EXIT_FAILURE;
+  Mesh mesh;
+  PD::IO::Mesh_file_info info;
+  try
   {
-    std::cerr << "cannot write the outputs in " << dir << "\n";
+    info = PD::IO::read_triangle_mesh(o.input, mesh);
+  }
+  catch(const PD::Invalid_input& e)
+  {
+    std::cerr << "cannot read " << o.input << ": " << e.what() << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << input << ": " << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, "
-            << number_of_parts << " parts; outputs in " << dir << std::endl;
+
+  const auto np = PD::parameters::combine(PD::parameters::freeze_ratio(o.alpha),
+                                          PD::parameters::voxel_resolutions(o.resolutions));
+  PD::Part_decomposer<Mesh> decomposer(mesh);
+  const PD::Hierarchical_prior& prior = decomposer.compute_prior<Concurrency>(np);
+  const PD::Truncated_signed_distance_field& tsdf = decomposer.compute_distance_field<Concurrency>(np);
+  const PD::Superquadric_fitting_result<K>& fit = decomposer.fit_primitives<Concurrency>(np);
+  const std::size_t number_of_patches = decomposer.over_segment<Concurrency>(np);
+  std::vector<std::size_t> part(num_faces(mesh), 0);
+  const std::size_t number_of_parts = decomposer.assign_parts<Concurrency>(CGAL::make_property_map(part), np);
+
+  bool ok = write_level_cubes(o.dir, prior) && write_fused_leaves(o.dir, prior);
+  const int slice = write_slices(o, prior, tsdf, ok);
+  ok = ok && write_claims_and_summary(o, mesh, prior, fit, tsdf.values.resolution(), slice, number_of_patches, number_of_parts);
+  ok = ok && write_superquadrics(o.dir + "/primitives.off", fit.input_primitives);
+  ok = ok && write_superquadrics(o.dir + "/part_primitives.off", decomposer.part_primitives());
+  ok = ok && write_labels(o.dir + "/patches.seg", PD::IO::labels_in_file_order(info, decomposer.patches()));
+  ok = ok && write_labels(o.dir + "/parts.seg", PD::IO::labels_in_file_order(info, part));
+  if(!ok)
+  {
+    std::cerr << "cannot write the outputs in " << o.dir << "\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << o.input << ": " << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, "
+            << number_of_parts << " parts; outputs in " << o.dir << std::endl;
   return EXIT_SUCCESS;
 }
