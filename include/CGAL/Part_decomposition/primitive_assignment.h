@@ -180,11 +180,11 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
       const Claimed_voxel_search::Result nearest = search.nearest({{c.x(), c.y(), c.z()}});
       near.assign(1, std::make_pair(nearest.distance, nearest.label));
       const std::array<int, 3> v = claimed.locate(c.x(), c.y(), c.z());
+      out.excluded[i] = area * margin / tau;
       const std::int32_t only = one_label(v[0], v[1], v[2]);
       if(only == -1 || only == nearest.label) // the window adds no other label
       {
         out.label[i][0] = nearest.label;
-        out.excluded[i] = area * margin / tau;
         continue;
       }
       if(v != cached) // faces come in runs of one voxel on fine meshes
@@ -207,7 +207,6 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
         out.label[i][k] = near[k].second;
         out.cost[i][k] = area * (std::max)(0., near[k].first - nearest.distance) / tau;
       }
-      out.excluded[i] = area * margin / tau;
     }
   }, 256);
   return out;

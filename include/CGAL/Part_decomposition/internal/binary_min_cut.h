@@ -19,6 +19,8 @@
 // edge by a scan of the source's and sink's n edges, quadratic in n. Here the graph is built in
 // linear time with the reverse edges known, then cut once by boost's Boykov-Kolmogorov max-flow.
 
+#include <CGAL/Part_decomposition/internal/toolbox.h>
+
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -63,15 +65,16 @@ inline std::vector<std::uint8_t> minimum_binary_labelling(const std::vector<std:
       arc.push_back({p.i, p.j, p.weight});
       arc.push_back({p.j, p.i, p.weight});
     }
-  // arcs sorted by their tail (counting sort): the graph keeps this order, so position = edge index
-  std::vector<std::size_t> start(n + 3, 0), position(arc.size());
-  for(const Arc& a : arc) ++start[a.from + 1];
-  for(std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+  // arcs sorted by their tail: the graph keeps this order, so position = edge index
+  std::vector<std::size_t> start, order;
+  group_indices(arc.size(), n + 2, [&](std::size_t k) { return arc[k].from; }, [](std::size_t) { return true; },
+                start, order);
+  std::vector<std::size_t> position(arc.size());
   std::vector<std::pair<std::size_t, std::size_t> > sorted(arc.size());
-  for(std::size_t k = 0; k < arc.size(); ++k)
+  for(std::size_t e = 0; e < order.size(); ++e)
   {
-    position[k] = start[arc[k].from]++;
-    sorted[position[k]] = std::make_pair(arc[k].from, arc[k].to);
+    position[order[e]] = e;
+    sorted[e] = std::make_pair(arc[order[e]].from, arc[order[e]].to);
   }
   const Graph graph(boost::edges_are_sorted, sorted.begin(), sorted.end(), n + 2);
   std::vector<double> capacity(arc.size()), residual(arc.size());
