@@ -562,6 +562,9 @@ void copy_stage_timings(const PD::Stage_timings& st, Row& r)
   r.t_assign = st.assignment;
 }
 
+// Appends `s` to a row's note, "; "-separated.
+void append_note(std::string& note, const std::string& s) { note += (note.empty() ? "" : "; ") + s; }
+
 // The true primitives of a shape (NAME.parts.tsv, whose ids are the labels of its single ground
 // truth) and the area of each face; empty without a parts file or a ground truth.
 struct Shape_truth
@@ -578,11 +581,11 @@ Shape_truth read_truth(const Shape_entry& e, const Mesh& mesh, const std::vector
   std::string error;
   if(!pd_benchmark::read_parts_tsv(e.parts.string(), t.primitives, error))
   {
-    note += (note.empty() ? "" : "; ") + error;
+    append_note(note, error);
     t.primitives.clear();
     return t;
   }
-  if(gt_faces.size() > 1) note += (note.empty() ? "" : "; ") + std::string("primitives scored on the first ground truth");
+  if(gt_faces.size() > 1) append_note(note, "primitives scored on the first ground truth");
   for(Face f : faces(mesh))
   {
     const auto h = halfedge(f, mesh);
@@ -1344,8 +1347,6 @@ struct Shape_data
   std::vector<std::vector<long> > gt_samples, gt_faces; // gt_faces: in mesh face order
   std::string error, note;
 };
-
-void append_note(std::string& note, const std::string& s) { note += (note.empty() ? "" : "; ") + s; }
 
 // Reads the ground truths with one label per input face, at the samples and per mesh face; sets
 // base.k (the lower median of their part counts), gt_parts and n_gt.
