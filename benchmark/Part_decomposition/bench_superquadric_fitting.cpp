@@ -24,6 +24,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -59,7 +60,7 @@ std::vector<int> read_seg(const std::string& file)
 
 } // namespace
 
-int main(int argc, char** argv)
+struct Options
 {
   int threads = 0, runs = 3;
   bool verbose = false;
@@ -69,25 +70,93 @@ int main(int argc, char** argv)
   int evaluations = PD::defaults::maximum_solver_evaluations;
   std::size_t rejections = PD::defaults::maximum_rejections_in_a_row;
   std::vector<std::string> files;
+};
+
+Options parse_options(int argc, char** argv)
+{
+  Options o;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if(a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
-    else if(a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    if(a == "--threads" && i + 1 < argc) o.threads = std::atoi(argv[++i]);
+    else if(a == "--runs" && i + 1 < argc) o.runs = std::max(1, std::atoi(argv[++i]));
     else if(a == "--mode" && i + 1 < argc)
-      mode = std::string(argv[++i]) == "mps" ? PD::Interior_weight_mode::MPS_REESTIMATED : PD::Interior_weight_mode::ONE_SHOT;
-    else if(a == "--roi" && i + 1 < argc) roi = std::atof(argv[++i]);
-    else if(a == "--no-exterior-band") exterior_band = false;
-    else if(a == "--no-connected") reachable = false;
-    else if(a == "--max-evals" && i + 1 < argc) evaluations = std::atoi(argv[++i]);
-    else if(a == "--rejections" && i + 1 < argc) rejections = std::size_t(std::atol(argv[++i]));
-    else if(a == "--verbose") verbose = true;
-    else files.push_back(a);
+      o.mode = std::string(argv[++i]) == "mps" ? PD::Interior_weight_mode::MPS_REESTIMATED : PD::Interior_weight_mode::ONE_SHOT;
+    else if(a == "--roi" && i + 1 < argc) o.roi = std::atof(argv[++i]);
+    else if(a == "--no-exterior-band") o.exterior_band = false;
+    else if(a == "--no-connected") o.reachable = false;
+    else if(a == "--max-evals" && i + 1 < argc) o.evaluations = std::atoi(argv[++i]);
+    else if(a == "--rejections" && i + 1 < argc) o.rejections = std::size_t(std::atol(argv[++i]));
+    else if(a == "--verbose") o.verbose = true;
+    else o.files.push_back(a);
   }
+  return o;
+}
+
+// fit_superquadrics() run `o.runs` times; `seconds` receives the median time.
+PD::Superquadric_fitting_result<K> timed_fit(const PD::Hierarchical_prior& prior,
+                                             const PD::Truncated_signed_distance_field& tsdf, const Options& o,
+                                             double& seconds)
+{
+  std::vector<double> times;
+  PD::Superquadric_fitting_result<K> res;
+  for(int run = 0; run < o.runs; ++run)
+  {
+    const double t0 = now_s();
+    // the zones are part of the fitting stage
+    res = PD::fit_superquadrics<Tag, K>(
+      prior, tsdf,
+      PD::parameters::combine(CGAL::parameters::verbose(o.verbose && run == 0), PD::parameters::roi_radius(o.roi),
+                              PD::parameters::interior_weight_mode(o.mode),
+                              PD::parameters::use_exterior_band_samples(o.exterior_band),
+                              PD::parameters::use_reachable_regions(o.reachable),
+                              PD::parameters::maximum_solver_evaluations(o.evaluations),
+                              PD::parameters::maximum_rejections_in_a_row(o.rejections)));
+    times.push_back(now_s() - t0);
+  }
+  seconds = median(times);
+  return res;
+}
+
+// The mean scores (mIoU, RI, VoI, SC) of the induced segmentation against every BASE_k.seg whose
+// size matches; the number of them in `n_gt`.
+std::array<double, 4> mean_scores(Mesh& mesh, const PD::IO::Mesh_file_info& info,
+                                  const PD::Superquadric_fitting_result<K>& res, const PD::Hierarchical_prior& prior,
+                                  const std::string& base, int& n_gt)
+{
+  auto patch = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  PD::over_segment<Tag>(mesh, patch);
+  auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  PD::assign_parts<Tag>(mesh, patch, res.labels, prior.normalization, part);
+  std::array<double, 4> s = {{0, 0, 0, 0}};
+  n_gt = 0;
+  for(int k = 0; k < 32; ++k)
+  {
+    const std::vector<int> gt_file = read_seg(base + "_" + std::to_string(k) + ".seg");
+    if(gt_file.empty()) continue;
+    if(gt_file.size() != info.number_of_input_faces) continue;
+    auto gt = get(CGAL::dynamic_face_property_t<int>(), mesh);
+    std::size_t i = 0;
+    for(auto f : faces(mesh)) put(gt, f, gt_file[info.face_to_input[i++]]);
+    const PD::Segmentation_scores sc = PD::evaluate_segmentation(mesh, gt, part);
+    s[0] += sc.mean_iou;
+    s[1] += sc.rand_index;
+    s[2] += sc.variation_of_information;
+    s[3] += sc.segmentation_covering;
+    ++n_gt;
+  }
+  if(n_gt > 0)
+    for(double& v : s) v /= n_gt;
+  return s;
+}
+
+int main(int argc, char** argv)
+{
+  const Options o = parse_options(argc, argv);
 #ifdef CGAL_LINKED_WITH_TBB
   std::unique_ptr<tbb::global_control> control;
-  if(threads > 0)
-    control.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(threads)));
+  if(o.threads > 0)
+    control.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads)));
 #endif
   std::cout << std::fixed << std::setprecision(3);
   std::cout << "mesh\tfaces\tfit_ms\tprims\tseeds\tbody\trej_flow\trej_vol\tsolves\tevals\tsamples\tcov16\tcov32\tcov64"
@@ -95,7 +164,7 @@ int main(int argc, char** argv)
   double sum[4] = {0, 0, 0, 0};
   std::size_t scored = 0;
   std::vector<double> all_times;
-  for(const std::string& file : files)
+  for(const std::string& file : o.files)
   {
     Mesh mesh;
     PD::IO::Mesh_file_info info;
@@ -110,49 +179,13 @@ int main(int argc, char** argv)
     }
     const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Tag>(mesh);
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Tag>(mesh);
-
-    std::vector<double> times;
-    PD::Superquadric_fitting_result<K> res;
-    for(int run = 0; run < runs; ++run)
-    {
-      const double t0 = now_s();
-      // the zones are part of the fitting stage
-      res = PD::fit_superquadrics<Tag, K>(
-        prior, tsdf,
-        PD::parameters::combine(CGAL::parameters::verbose(verbose && run == 0), PD::parameters::roi_radius(roi),
-                                PD::parameters::interior_weight_mode(mode),
-                                PD::parameters::use_exterior_band_samples(exterior_band),
-                                PD::parameters::use_reachable_regions(reachable),
-                                PD::parameters::maximum_solver_evaluations(evaluations),
-                                PD::parameters::maximum_rejections_in_a_row(rejections)));
-      times.push_back(now_s() - t0);
-    }
-    const double t = median(times);
+    double t = 0.;
+    const PD::Superquadric_fitting_result<K> res = timed_fit(prior, tsdf, o, t);
     all_times.push_back(t);
 
-    // score the induced segmentation against every NAME_k.seg
     const std::string base = file.substr(0, file.find_last_of('.'));
-    auto patch = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-    PD::over_segment<Tag>(mesh, patch);
-    auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-    PD::assign_parts<Tag>(mesh, patch, res.labels, prior.normalization, part);
-    double s[4] = {0, 0, 0, 0};
     int n_gt = 0;
-    for(int k = 0; k < 32; ++k)
-    {
-      const std::vector<int> gt_file = read_seg(base + "_" + std::to_string(k) + ".seg");
-      if(gt_file.empty()) continue;
-      if(gt_file.size() != info.number_of_input_faces) continue;
-      auto gt = get(CGAL::dynamic_face_property_t<int>(), mesh);
-      std::size_t i = 0;
-      for(auto f : faces(mesh)) put(gt, f, gt_file[info.face_to_input[i++]]);
-      const PD::Segmentation_scores sc = PD::evaluate_segmentation(mesh, gt, part);
-      s[0] += sc.mean_iou;
-      s[1] += sc.rand_index;
-      s[2] += sc.variation_of_information;
-      s[3] += sc.segmentation_covering;
-      ++n_gt;
-    }
+    const std::array<double, 4> s = mean_scores(mesh, info, res, prior, base, n_gt);
     const std::string name = base.substr(base.find_last_of('/') + 1);
     std::cout << name << "\t" << num_faces(mesh) << "\t" << 1000. * t << "\t" << res.primitives.size() << "\t"
               << res.number_of_seeds << "\t" << res.number_of_body_seeds << "\t" << res.rejected_by_flow_zone << "\t"
@@ -161,8 +194,8 @@ int main(int argc, char** argv)
     for(double c : res.stage_coverage) std::cout << "\t" << c;
     if(n_gt > 0)
     {
-      for(double v : s) std::cout << "\t" << v / n_gt;
-      for(int q = 0; q < 4; ++q) sum[q] += s[q] / n_gt;
+      for(double v : s) std::cout << "\t" << v;
+      for(int q = 0; q < 4; ++q) sum[q] += s[std::size_t(q)];
       ++scored;
     }
     std::cout << std::endl;

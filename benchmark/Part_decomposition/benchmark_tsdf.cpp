@@ -98,30 +98,125 @@ static double aabb_band_ms(const std::vector<PDI::Triangle_points>& tris, int r,
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int main(int argc, char** argv)
+struct Options
 {
   int runs = 5, open_faces = 0;
   bool check = false, aabb = false;
   PD::Tsdf_sign_method method = PD::Tsdf_sign_method::AUTOMATIC;
   std::vector<std::string> files;
+};
+
+static Options parse_options(int argc, char** argv)
+{
+  Options o;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if(a == "-runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-    else if(a == "-open" && i + 1 < argc) open_faces = std::max(0, std::atoi(argv[++i]));
-    else if(a == "-check") check = true;
-    else if(a == "-aabb") aabb = true;
+    if(a == "-runs" && i + 1 < argc) o.runs = std::max(1, std::atoi(argv[++i]));
+    else if(a == "-open" && i + 1 < argc) o.open_faces = std::max(0, std::atoi(argv[++i]));
+    else if(a == "-check") o.check = true;
+    else if(a == "-aabb") o.aabb = true;
     else if(a == "-method" && i + 1 < argc)
     {
       const std::string m = argv[++i];
-      method = m == "inside" ? PD::Tsdf_sign_method::INSIDE_TEST
-             : m == "winding" ? PD::Tsdf_sign_method::WINDING_NUMBER
-             : m == "flood" ? PD::Tsdf_sign_method::FLOOD_FILL
-                            : PD::Tsdf_sign_method::AUTOMATIC;
+      o.method = m == "inside" ? PD::Tsdf_sign_method::INSIDE_TEST
+               : m == "winding" ? PD::Tsdf_sign_method::WINDING_NUMBER
+               : m == "flood" ? PD::Tsdf_sign_method::FLOOD_FILL
+                              : PD::Tsdf_sign_method::AUTOMATIC;
     }
-    else files.push_back(a);
+    else o.files.push_back(a);
   }
-  if(files.empty())
+  return o;
+}
+
+// Removes `count` faces spread over `mesh` (an open mesh).
+static void remove_spread_faces(Mesh& mesh, int count)
+{
+  const std::size_t n = num_faces(mesh), step = std::max<std::size_t>(1, n / std::size_t(count));
+  std::vector<Mesh::Face_index> removed;
+  std::size_t i = 0;
+  for(auto f : faces(mesh))
+    if(i++ % step == 0 && removed.size() < std::size_t(count)) removed.push_back(f);
+  for(auto f : removed) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+  mesh.collect_garbage();
+}
+
+// Prints the 1- and 2-thread times of compute_tsdf(), of its steps (2 threads) and, with -aabb, of
+// the band distances by CGAL's plain AABB-tree query; returns the field.
+static PD::Truncated_signed_distance_field time_tsdf(const Mesh& mesh, const Options& o, const std::string& shown)
+{
+  const auto np = PD::parameters::tsdf_sign_method(o.method);
+  PD::Truncated_signed_distance_field tsdf;
+  double t1 = 0., t2 = 0., cpu = 0.;
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 1);
+#endif
+    t1 = median_ms(o.runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); });
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 2);
+#endif
+  t2 = median_ms(o.runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); }, &cpu);
+
+  const int r = tsdf.values.resolution();
+  const auto tris = PDI::normalized_triangles(mesh, get(CGAL::vertex_point, mesh), tsdf.normalization);
+  const bool closed = PDI::faces_form_closed_surface(mesh);
+  PDI::Surface_voxels sv;
+  const double t_vox = median_ms(o.runs, [&] { sv = PDI::surface_voxels<Tag>(tris, r); });
+  const double t_sign = median_ms(o.runs, [&] { PDI::inside_flags<Tag>(tris, closed, tsdf.sign_method, sv, r); });
+  const double t_dist = median_ms(o.runs, [&] { PDI::clipped_unsigned_distance<Tag>(tris, sv, r, tsdf.truncation); });
+  std::size_t band = 0;
+  for(double v : tsdf.values.values())
+    if(std::abs(v) < tsdf.truncation) ++band;
+  std::printf("%-20s %6zu %-14s %4s %8.1f %8.1f %8.1f | %12.1f %5.1f %6.1f %6.1f | %7zu", shown.c_str(),
+              std::size_t(num_faces(mesh)), name(tsdf.sign_method), closed ? "yes" : "no", t1, t2, cpu, t_vox, t_sign,
+              t_dist, t2 - t_vox - t_sign - t_dist, band);
+  if(o.aabb)
+  {
+    PD::Voxel_grid<double> reference;
+    const double ms = aabb_band_ms(tris, r, tsdf.truncation, reference);
+    double worst = 0.;
+    for(std::size_t i = 0; i < reference.size(); ++i)
+      worst = std::max(worst, std::abs(reference[i] - std::abs(tsdf.values[i])));
+    std::printf(" | %8.1f (max diff %.1e vox)", ms, worst * r);
+  }
+  return tsdf;
+}
+
+// Prints the largest distance error and the number of wrong signs of 4000 voxels, against CGAL's
+// AABB tree on `mesh` and Side_of_triangle_mesh on `input` (the mesh before faces were removed).
+static void check_against_cgal(const Mesh& mesh, const Mesh& input, const PD::Truncated_signed_distance_field& tsdf,
+                               int open_faces)
+{
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > Tree;
+  const int r = tsdf.values.resolution();
+  Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+  tree.accelerate_distance_queries();
+  std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K> > side;
+  const bool input_closed = CGAL::is_closed(input);
+  if(input_closed) side.reset(new CGAL::Side_of_triangle_mesh<Mesh, K>(input));
+  double worst = 0.;
+  std::size_t wrong = 0;
+  for(std::size_t s = 0; s < 4000; ++s)
+  {
+    const std::size_t i = (s * 2654435761u) % tsdf.values.size();
+    const std::array<double, 3> u = tsdf.values.center(i);
+    const std::array<double, 3> x = tsdf.normalization.from_unit(u);
+    const K::Point_3 p(x[0], x[1], x[2]);
+    const double d =
+      std::min(tsdf.truncation, std::sqrt(CGAL::to_double(tree.squared_distance(p))) * tsdf.normalization.scale());
+    worst = std::max(worst, std::abs(d - std::abs(tsdf.values[i])));
+    if(side && d > (open_faces > 0 ? 1. / r : 1e-9))
+      if(((*side)(p) == CGAL::ON_BOUNDED_SIDE) != (tsdf.values[i] < 0.)) ++wrong;
+  }
+  std::printf(" | %.1e, %zu%s", worst * r, wrong, input_closed ? "" : " (no sign reference)");
+}
+
+int main(int argc, char** argv)
+{
+  const Options o = parse_options(argc, argv);
+  if(o.files.empty())
   {
     std::cerr << "usage: " << argv[0]
               << " [-runs N] [-method auto|inside|winding|flood] [-open K] [-check] [-aabb] mesh [mesh ...]\n";
@@ -137,8 +232,8 @@ int main(int argc, char** argv)
   }
   std::printf("%-20s %6s %-14s %4s %8s %8s %8s | 2 thr: %5s %5s %6s %6s | %7s%s%s\n", "mesh", "faces", "sign",
               "clsd", "1thr ms", "2thr ms", "cpu ms", "vox", "sign", "dist", "other", "band",
-              aabb ? " | AABB band ms" : "", check ? " | check: max |d err| vox, wrong signs" : "");
-  for(const std::string& file : files)
+              o.aabb ? " | AABB band ms" : "", o.check ? " | check: max |d err| vox, wrong signs" : "");
+  for(const std::string& file : o.files)
   {
     Mesh mesh;
     try
@@ -151,77 +246,10 @@ int main(int argc, char** argv)
       continue;
     }
     const Mesh input = mesh;
-    if(open_faces > 0)
-    {
-      const std::size_t n = num_faces(mesh), step = std::max<std::size_t>(1, n / std::size_t(open_faces));
-      std::vector<Mesh::Face_index> removed;
-      std::size_t i = 0;
-      for(auto f : faces(mesh))
-        if(i++ % step == 0 && removed.size() < std::size_t(open_faces)) removed.push_back(f);
-      for(auto f : removed) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
-      mesh.collect_garbage();
-    }
-    const auto np = PD::parameters::tsdf_sign_method(method);
-    PD::Truncated_signed_distance_field tsdf;
-    double t1 = 0., t2 = 0., cpu = 0.;
-    {
-#ifdef CGAL_LINKED_WITH_TBB
-      tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 1);
-#endif
-      t1 = median_ms(runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); });
-    }
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 2);
-#endif
-    t2 = median_ms(runs, [&] { tsdf = PD::compute_tsdf<Tag>(mesh, np); }, &cpu);
-
-    // The steps, with 2 threads.
-    const int r = tsdf.values.resolution();
-    const auto tris = PDI::normalized_triangles(mesh, get(CGAL::vertex_point, mesh), tsdf.normalization);
-    const bool closed = PDI::faces_form_closed_surface(mesh);
-    PDI::Surface_voxels sv;
-    const double t_vox = median_ms(runs, [&] { sv = PDI::surface_voxels<Tag>(tris, r); });
-    const double t_sign = median_ms(runs, [&] { PDI::inside_flags<Tag>(tris, closed, tsdf.sign_method, sv, r); });
-    const double t_dist = median_ms(runs, [&] { PDI::clipped_unsigned_distance<Tag>(tris, sv, r, tsdf.truncation); });
-    std::size_t band = 0;
-    for(double v : tsdf.values.values())
-      if(std::abs(v) < tsdf.truncation) ++band;
+    if(o.open_faces > 0) remove_spread_faces(mesh, o.open_faces);
     const std::string shown = file.substr(file.find_last_of('/') == std::string::npos ? 0 : file.find_last_of('/') + 1);
-    std::printf("%-20s %6zu %-14s %4s %8.1f %8.1f %8.1f | %12.1f %5.1f %6.1f %6.1f | %7zu", shown.c_str(),
-                std::size_t(num_faces(mesh)), name(tsdf.sign_method), closed ? "yes" : "no", t1, t2, cpu, t_vox,
-                t_sign, t_dist, t2 - t_vox - t_sign - t_dist, band);
-    if(aabb)
-    {
-      PD::Voxel_grid<double> reference;
-      const double ms = aabb_band_ms(tris, r, tsdf.truncation, reference);
-      double worst = 0.;
-      for(std::size_t i = 0; i < reference.size(); ++i)
-        worst = std::max(worst, std::abs(reference[i] - std::abs(tsdf.values[i])));
-      std::printf(" | %8.1f (max diff %.1e vox)", ms, worst * r);
-    }
-    if(check)
-    {
-      typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > Tree;
-      Tree tree(faces(mesh).first, faces(mesh).second, mesh);
-      tree.accelerate_distance_queries();
-      std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K> > side;
-      const bool input_closed = CGAL::is_closed(input);
-      if(input_closed) side.reset(new CGAL::Side_of_triangle_mesh<Mesh, K>(input));
-      double worst = 0.;
-      std::size_t wrong = 0;
-      for(std::size_t s = 0; s < 4000; ++s)
-      {
-        const std::size_t i = (s * 2654435761u) % tsdf.values.size();
-        const std::array<double, 3> u = tsdf.values.center(i);
-        const std::array<double, 3> x = tsdf.normalization.from_unit(u);
-        const K::Point_3 p(x[0], x[1], x[2]);
-        const double d = std::min(tsdf.truncation, std::sqrt(CGAL::to_double(tree.squared_distance(p))) * tsdf.normalization.scale());
-        worst = std::max(worst, std::abs(d - std::abs(tsdf.values[i])));
-        if(side && d > (open_faces > 0 ? 1. / r : 1e-9))
-          if(((*side)(p) == CGAL::ON_BOUNDED_SIDE) != (tsdf.values[i] < 0.)) ++wrong;
-      }
-      std::printf(" | %.1e, %zu%s", worst * r, wrong, input_closed ? "" : " (no sign reference)");
-    }
+    const PD::Truncated_signed_distance_field tsdf = time_tsdf(mesh, o, shown);
+    if(o.check) check_against_cgal(mesh, input, tsdf, o.open_faces);
     std::printf("\n");
   }
   return EXIT_SUCCESS;

@@ -815,7 +815,7 @@ TEST_CASE("hitops refuses broken files with one line and exit status 1", "[robus
   CHECK(r.err.find("voxel_resolutions") != std::string::npos);
 }
 
-TEST_CASE("hitops decomposes ugly but meaningful files, one label per file face", "[robustness][hitops]")
+TEST_CASE("hitops reads ugly but meaningful file variants, one label per file face", "[robustness][hitops]")
 {
   SECTION("single triangle")
   {
@@ -865,6 +865,11 @@ TEST_CASE("hitops decomposes ugly but meaningful files, one label per file face"
     for(long long i = 0; i < 8; ++i) o.face({i, (i + 1) % 8, 8 + (i + 1) % 8, 8 + i});
     check_decomposed("prism.off", o.text(), 10);
   }
+}
+
+TEST_CASE("hitops decomposes degenerate, non-manifold and extreme geometry, one label per file face",
+          "[robustness][hitops]")
+{
   SECTION("zero-area and repeated-vertex faces, duplicated faces")
   {
     Off o = off_of(test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 2));

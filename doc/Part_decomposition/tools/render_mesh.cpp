@@ -174,22 +174,27 @@ Mesh read_off(const std::string& file)
   return m;
 }
 
-// PLY: ascii or binary little endian; vertex x y z [red green blue]; face vertex_indices [red green blue].
-Mesh read_ply(const std::string& file)
+struct Ply_property
 {
-  std::ifstream in(file, std::ios::binary);
-  if(!in) throw std::runtime_error("cannot open " + file);
-  struct Property
-  {
-    std::string name, type, count_type; // count_type non-empty for lists
-  };
-  struct Element
-  {
-    std::string name;
-    std::size_t count = 0;
-    std::vector<Property> properties;
-  };
-  std::vector<Element> elements;
+  std::string name, type, count_type; // count_type non-empty for lists
+};
+
+struct Ply_element
+{
+  std::string name;
+  std::size_t count = 0;
+  std::vector<Ply_property> properties;
+};
+
+struct Ply_header
+{
+  std::vector<Ply_element> elements;
+  bool ascii = true;
+};
+
+Ply_header read_ply_header(std::istream& in, const std::string& file)
+{
+  Ply_header h;
   std::string line, format;
   std::getline(in, line);
   if(line.compare(0, 3, "ply") != 0) throw std::runtime_error(file + " is not a PLY file");
@@ -202,96 +207,121 @@ Mesh read_ply(const std::string& file)
     if(key == "format") ls >> format;
     else if(key == "element")
     {
-      Element e;
+      Ply_element e;
       ls >> e.name >> e.count;
-      elements.push_back(e);
+      h.elements.push_back(e);
     }
     else if(key == "property")
     {
-      Property p;
+      Ply_property p;
       ls >> p.type;
       if(p.type == "list") ls >> p.count_type >> p.type;
       ls >> p.name;
-      if(elements.empty()) throw std::runtime_error(file + ": property before element");
-      elements.back().properties.push_back(p);
+      if(h.elements.empty()) throw std::runtime_error(file + ": property before element");
+      h.elements.back().properties.push_back(p);
     }
     else if(key == "end_header") break;
   }
-  const bool ascii = format == "ascii";
-  if(!ascii && format != "binary_little_endian") throw std::runtime_error(file + ": unsupported PLY format " + format);
-  auto size_of = [](const std::string& t) -> int {
-    if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
-    if(t == "double" || t == "float64") return 8;
-    throw std::runtime_error("unknown PLY type " + t);
-  };
-  auto read_value = [&](const std::string& t) -> double {
-    if(ascii)
+  h.ascii = format == "ascii";
+  if(!h.ascii && format != "binary_little_endian") throw std::runtime_error(file + ": unsupported PLY format " + format);
+  return h;
+}
+
+int ply_type_size(const std::string& t)
+{
+  if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if(t == "double" || t == "float64") return 8;
+  throw std::runtime_error("unknown PLY type " + t);
+}
+
+// One value of type `t`, as a double.
+double read_ply_value(std::istream& in, bool ascii, const std::string& t, const std::string& file)
+{
+  if(ascii)
+  {
+    std::string s;
+    if(!(in >> s)) throw std::runtime_error(file + ": truncated");
+    return std::stod(s);
+  }
+  unsigned char b[8];
+  const int n = ply_type_size(t);
+  if(!in.read(reinterpret_cast<char*>(b), n)) throw std::runtime_error(file + ": truncated");
+  if(t == "char" || t == "int8") return double(std::int8_t(b[0]));
+  if(t == "uchar" || t == "uint8") return double(b[0]);
+  if(t == "short" || t == "int16") { std::int16_t v; std::memcpy(&v, b, 2); return v; }
+  if(t == "ushort" || t == "uint16") { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
+  if(t == "int" || t == "int32") { std::int32_t v; std::memcpy(&v, b, 4); return v; }
+  if(t == "uint" || t == "uint32") { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
+  if(t == "float" || t == "float32") { float v; std::memcpy(&v, b, 4); return v; }
+  double v;
+  std::memcpy(&v, b, 8);
+  return v;
+}
+
+// One item of an element: its position, colour and vertex indices.
+struct Ply_item
+{
+  Vec3 p{{0, 0, 0}};
+  Rgb c{{200, 200, 200}};
+  std::vector<std::size_t> poly;
+};
+
+// Reads one item of `e`; sets `colored` when it has a colour.
+Ply_item read_ply_item(std::istream& in, bool ascii, const Ply_element& e, const std::string& file, bool& colored)
+{
+  Ply_item item;
+  for(const Ply_property& prop : e.properties)
+  {
+    if(!prop.count_type.empty())
     {
-      std::string s;
-      if(!(in >> s)) throw std::runtime_error(file + ": truncated");
-      return std::stod(s);
+      const std::size_t n = std::size_t(read_ply_value(in, ascii, prop.count_type, file));
+      std::vector<std::size_t> values(n);
+      for(std::size_t& v : values) v = std::size_t(read_ply_value(in, ascii, prop.type, file));
+      if(prop.name == "vertex_indices" || prop.name == "vertex_index") item.poly = values;
+      continue;
     }
-    unsigned char b[8];
-    const int n = size_of(t);
-    if(!in.read(reinterpret_cast<char*>(b), n)) throw std::runtime_error(file + ": truncated");
-    if(t == "char" || t == "int8") return double(std::int8_t(b[0]));
-    if(t == "uchar" || t == "uint8") return double(b[0]);
-    if(t == "short" || t == "int16") { std::int16_t v; std::memcpy(&v, b, 2); return v; }
-    if(t == "ushort" || t == "uint16") { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
-    if(t == "int" || t == "int32") { std::int32_t v; std::memcpy(&v, b, 4); return v; }
-    if(t == "uint" || t == "uint32") { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
-    if(t == "float" || t == "float32") { float v; std::memcpy(&v, b, 4); return v; }
-    double v;
-    std::memcpy(&v, b, 8);
-    return v;
-  };
+    const double v = read_ply_value(in, ascii, prop.type, file);
+    if(prop.name == "x") item.p[0] = v;
+    else if(prop.name == "y") item.p[1] = v;
+    else if(prop.name == "z") item.p[2] = v;
+    else if(prop.name == "red" || prop.name == "green" || prop.name == "blue")
+    {
+      const int ch = prop.name == "red" ? 0 : prop.name == "green" ? 1 : 2;
+      const bool unit = prop.type == "float" || prop.type == "double";
+      item.c[ch] = std::uint8_t(std::lround(std::min(255., std::max(0., unit ? 255 * v : v))));
+      colored = true;
+    }
+  }
+  return item;
+}
+
+// PLY: ascii or binary little endian; vertex x y z [red green blue]; face vertex_indices [red green blue].
+Mesh read_ply(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  if(!in) throw std::runtime_error("cannot open " + file);
+  const Ply_header h = read_ply_header(in, file);
   Mesh m;
   std::vector<Rgb> face_colors;
   bool vertex_colored = false, face_colored = false;
-  for(const Element& e : elements)
-  {
+  for(const Ply_element& e : h.elements)
     for(std::size_t i = 0; i < e.count; ++i)
     {
-      Vec3 p{{0, 0, 0}};
-      Rgb c{{200, 200, 200}};
-      std::vector<std::size_t> poly;
-      for(const Property& prop : e.properties)
-      {
-        if(!prop.count_type.empty())
-        {
-          const std::size_t n = std::size_t(read_value(prop.count_type));
-          std::vector<std::size_t> values(n);
-          for(std::size_t& v : values) v = std::size_t(read_value(prop.type));
-          if(prop.name == "vertex_indices" || prop.name == "vertex_index") poly = values;
-          continue;
-        }
-        const double v = read_value(prop.type);
-        if(prop.name == "x") p[0] = v;
-        else if(prop.name == "y") p[1] = v;
-        else if(prop.name == "z") p[2] = v;
-        else if(prop.name == "red" || prop.name == "green" || prop.name == "blue")
-        {
-          const int ch = prop.name == "red" ? 0 : prop.name == "green" ? 1 : 2;
-          const bool unit = prop.type == "float" || prop.type == "double";
-          c[ch] = std::uint8_t(std::lround(std::min(255., std::max(0., unit ? 255 * v : v))));
-          (e.name == "vertex" ? vertex_colored : face_colored) = true;
-        }
-      }
+      const Ply_item item = read_ply_item(in, h.ascii, e, file, e.name == "vertex" ? vertex_colored : face_colored);
       if(e.name == "vertex")
       {
-        m.points.push_back(p);
-        m.point_colors.push_back(c);
+        m.points.push_back(item.p);
+        m.point_colors.push_back(item.c);
       }
       else if(e.name == "face")
       {
         const std::size_t before = m.triangles.size();
-        add_polygon(m, poly, i);
-        face_colors.insert(face_colors.end(), m.triangles.size() - before, c);
+        add_polygon(m, item.poly, i);
+        face_colors.insert(face_colors.end(), m.triangles.size() - before, item.c);
       }
     }
-  }
   if(face_colored) m.face_colors = face_colors;
   if(!vertex_colored) m.point_colors.clear();
   return m;
@@ -925,6 +955,122 @@ Options parse(int argc, char** argv)
   return o;
 }
 
+// One panel of `spec`: layers separated by '+', and view=AZ,EL, up=AXIS, zoom=F of its own.
+Panel parse_panel(const std::string& spec, const Options& o)
+{
+  Panel p;
+  std::istringstream ss(spec);
+  std::string layer;
+  p.azimuth = o.azimuth;
+  p.elevation = o.elevation;
+  p.zoom = o.zoom;
+  p.up = o.up;
+  while(std::getline(ss, layer, '+'))
+  {
+    if(layer.empty()) continue;
+    if(layer.compare(0, 5, "view=") == 0)
+    {
+      const std::size_t c = layer.find(',');
+      if(c == std::string::npos) throw std::runtime_error("view= expects AZ,EL");
+      p.azimuth = std::stod(layer.substr(5, c - 5));
+      p.elevation = std::stod(layer.substr(c + 1));
+      p.own_view = true;
+    }
+    else if(layer.compare(0, 3, "up=") == 0)
+    {
+      p.up = layer.substr(3);
+      p.own_view = true;
+    }
+    else if(layer.compare(0, 5, "zoom=") == 0)
+    {
+      p.zoom = std::stod(layer.substr(5));
+      p.own_view = true;
+    }
+    else p.layers.push_back(make_layer(layer));
+  }
+  return p;
+}
+
+// The bounds, in the camera's frame, of the panels that share the common view.
+Bounds shared_bounds(const std::vector<Panel>& panels, const Camera& cam)
+{
+  Bounds shared;
+  for(const Panel& p : panels)
+  {
+    if(p.own_view) continue;
+    const Bounds b = camera_bounds(p, cam);
+    if(b.empty()) continue;
+    shared.add(b.lo[0], b.lo[1], b.lo[2]);
+    shared.add(b.hi[0], b.hi[1], b.hi[2]);
+  }
+  return shared;
+}
+
+// The image layers of a panel at (px, py) of size pw x ph, scaled to fit it with nearest-neighbour
+// sampling (voxel slices).
+void draw_images(Canvas& cv, const Panel& panel, int px, int py, int pw, int ph)
+{
+  for(const Layer& l : panel.layers)
+  {
+    if(!l.is_image) continue;
+    const double f = 0.92 * std::min(double(pw) / l.image.width, double(ph) / l.image.height);
+    const int w = int(l.image.width * f), h = int(l.image.height * f);
+    const int x0 = px + (pw - w) / 2, y0 = py + (ph - h) / 2;
+    for(int y = 0; y < h; ++y)
+      for(int x = 0; x < w; ++x)
+      {
+        const Rgb& c = l.image.pixels[std::size_t(std::min(l.image.height - 1, int(y / f))) * std::size_t(l.image.width) +
+                                      std::size_t(std::min(l.image.width - 1, int(x / f)))];
+        cv.color[std::size_t(y0 + y) * std::size_t(cv.width) + std::size_t(x0 + x)] = {{c[0] / 255., c[1] / 255., c[2] / 255.}};
+      }
+  }
+}
+
+// The 3D layers of a panel, opaque ones first, outlined, copied into `cv` at (px, py). Each panel is
+// rendered on its own canvas so that nothing spills over its neighbours.
+void draw_meshes(Canvas& cv, const Panel& panel, Camera pc, const Bounds& frame_bounds, int px, int py, int pw,
+                 int ph, const Vec3& bg)
+{
+  frame(pc, frame_bounds, pw, ph, panel.zoom);
+  Canvas local(pw, ph, bg);
+  for(const Layer& l : panel.layers)
+    if(!l.is_image && l.alpha >= 1.)
+      for(const Triangle& t : l.triangles) rasterize(local, t, pc, pw / 2, ph / 2, 1.);
+  for(const Layer& l : panel.layers)
+    if(!l.is_image && l.alpha < 1.)
+      for(const Triangle& t : l.triangles) rasterize(local, t, pc, pw / 2, ph / 2, l.alpha);
+  std::vector<std::uint8_t> local_mask(local.depth.size(), 0);
+  for(std::size_t i = 0; i < local.depth.size(); ++i) local_mask[i] = std::isfinite(local.depth[i]);
+  outline(local, local_mask, 0.04 * pc.depth_span);
+  for(int y = 0; y < ph; ++y)
+    for(int x = 0; x < pw; ++x)
+    {
+      const std::size_t li = std::size_t(y) * std::size_t(pw) + std::size_t(x);
+      if(local.covered[li]) cv.color[std::size_t(py + y) * std::size_t(cv.width) + std::size_t(px + x)] = local.color[li];
+    }
+}
+
+// Averages the s x s blocks of the canvas.
+std::vector<Rgb> downsample(const Canvas& cv, int s, int W, int H)
+{
+  std::vector<Rgb> pixels(std::size_t(W) * std::size_t(H));
+  for(int y = 0; y < H; ++y)
+    for(int x = 0; x < W; ++x)
+    {
+      Vec3 acc{{0, 0, 0}};
+      for(int dy = 0; dy < s; ++dy)
+        for(int dx = 0; dx < s; ++dx)
+        {
+          const Vec3& c = cv.color[std::size_t(y * s + dy) * std::size_t(cv.width) + std::size_t(x * s + dx)];
+          for(int ch = 0; ch < 3; ++ch) acc[std::size_t(ch)] += c[std::size_t(ch)];
+        }
+      Rgb& p = pixels[std::size_t(y) * std::size_t(W) + std::size_t(x)];
+      for(int ch = 0; ch < 3; ++ch)
+        p[std::size_t(ch)] = std::uint8_t(std::lround(std::min(1., acc[std::size_t(ch)] / (s * s)) * 255.));
+    }
+  return pixels;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -933,40 +1079,7 @@ int main(int argc, char** argv)
   {
     const Options o = parse(argc, argv);
     std::vector<Panel> panels;
-    for(const std::string& spec : o.panels)
-    {
-      Panel p;
-      std::istringstream ss(spec);
-      std::string layer;
-      p.azimuth = o.azimuth;
-      p.elevation = o.elevation;
-      p.zoom = o.zoom;
-      p.up = o.up;
-      while(std::getline(ss, layer, '+'))
-      {
-        if(layer.empty()) continue;
-        if(layer.compare(0, 5, "view=") == 0)
-        {
-          const std::size_t c = layer.find(',');
-          if(c == std::string::npos) throw std::runtime_error("view= expects AZ,EL");
-          p.azimuth = std::stod(layer.substr(5, c - 5));
-          p.elevation = std::stod(layer.substr(c + 1));
-          p.own_view = true;
-        }
-        else if(layer.compare(0, 3, "up=") == 0)
-        {
-          p.up = layer.substr(3);
-          p.own_view = true;
-        }
-        else if(layer.compare(0, 5, "zoom=") == 0)
-        {
-          p.zoom = std::stod(layer.substr(5));
-          p.own_view = true;
-        }
-        else p.layers.push_back(make_layer(layer));
-      }
-      panels.push_back(std::move(p));
-    }
+    for(const std::string& spec : o.panels) panels.push_back(parse_panel(spec, o));
     const int n = int(panels.size());
     const int columns = o.columns > 0 ? std::min(o.columns, n) : n;
     const int rows = (n + columns - 1) / columns;
@@ -975,84 +1088,22 @@ int main(int argc, char** argv)
 
     Camera cam;
     orient(cam, axis_vector(o.up), o.azimuth, o.elevation);
-    Bounds shared;
-    for(const Panel& p : panels)
-    {
-      if(p.own_view) continue;
-      const Bounds b = camera_bounds(p, cam);
-      if(b.empty()) continue;
-      shared.add(b.lo[0], b.lo[1], b.lo[2]);
-      shared.add(b.hi[0], b.hi[1], b.hi[2]);
-    }
-
+    const Bounds shared = shared_bounds(panels, cam);
     const Vec3 bg{{o.background[0] / 255., o.background[1] / 255., o.background[2] / 255.}};
     Canvas cv(width, height, bg);
-    std::vector<std::uint8_t> mask(cv.depth.size(), 0); // pixels of 3D panels
     for(int pi = 0; pi < n; ++pi)
     {
       const Panel& panel = panels[std::size_t(pi)];
       const int px = (pi % columns) * pw, py = (pi / columns) * ph;
-      for(const Layer& l : panel.layers)
-      {
-        if(!l.is_image) continue;
-        // an image, scaled to fit the panel with nearest-neighbour sampling (voxel slices)
-        const double f = 0.92 * std::min(double(pw) / l.image.width, double(ph) / l.image.height);
-        const int w = int(l.image.width * f), h = int(l.image.height * f);
-        const int x0 = px + (pw - w) / 2, y0 = py + (ph - h) / 2;
-        for(int y = 0; y < h; ++y)
-          for(int x = 0; x < w; ++x)
-          {
-            const Rgb& c = l.image.pixels[std::size_t(std::min(l.image.height - 1, int(y / f))) * std::size_t(l.image.width) +
-                                          std::size_t(std::min(l.image.width - 1, int(x / f)))];
-            cv.color[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)] = {{c[0] / 255., c[1] / 255., c[2] / 255.}};
-          }
-      }
+      draw_images(cv, panel, px, py, pw, ph);
       Camera pc = cam;
       if(panel.own_view) orient(pc, axis_vector(panel.up), panel.azimuth, panel.elevation);
       const Bounds own = camera_bounds(panel, pc);
       if(own.empty()) continue;
-      frame(pc, o.shared_frame && !panel.own_view ? shared : own, pw, ph, panel.zoom);
-      // Each panel is rendered on its own canvas so that nothing spills over its neighbours.
-      Canvas local(pw, ph, bg);
-      for(const Layer& l : panel.layers)
-        if(!l.is_image && l.alpha >= 1.)
-          for(const Triangle& t : l.triangles) rasterize(local, t, pc, pw / 2, ph / 2, 1.);
-      for(const Layer& l : panel.layers)
-        if(!l.is_image && l.alpha < 1.)
-          for(const Triangle& t : l.triangles) rasterize(local, t, pc, pw / 2, ph / 2, l.alpha);
-      std::vector<std::uint8_t> local_mask(local.depth.size(), 0);
-      for(std::size_t i = 0; i < local.depth.size(); ++i) local_mask[i] = std::isfinite(local.depth[i]);
-      outline(local, local_mask, 0.04 * pc.depth_span);
-      local_mask = local.covered;
-      for(int y = 0; y < ph; ++y)
-        for(int x = 0; x < pw; ++x)
-        {
-          const std::size_t li = std::size_t(y) * std::size_t(pw) + std::size_t(x);
-          if(!local_mask[li]) continue;
-          const std::size_t gi = std::size_t(py + y) * std::size_t(width) + std::size_t(px + x);
-          cv.color[gi] = local.color[li];
-          mask[gi] = 1;
-        }
+      draw_meshes(cv, panel, pc, o.shared_frame && !panel.own_view ? shared : own, px, py, pw, ph, bg);
     }
-
-    // downsample by averaging s x s blocks
     const int W = width / s, H = height / s;
-    std::vector<Rgb> pixels(std::size_t(W) * std::size_t(H));
-    for(int y = 0; y < H; ++y)
-      for(int x = 0; x < W; ++x)
-      {
-        Vec3 acc{{0, 0, 0}};
-        for(int dy = 0; dy < s; ++dy)
-          for(int dx = 0; dx < s; ++dx)
-          {
-            const Vec3& c = cv.color[std::size_t(y * s + dy) * std::size_t(width) + std::size_t(x * s + dx)];
-            for(int ch = 0; ch < 3; ++ch) acc[std::size_t(ch)] += c[std::size_t(ch)];
-          }
-        Rgb& p = pixels[std::size_t(y) * std::size_t(W) + std::size_t(x)];
-        for(int ch = 0; ch < 3; ++ch)
-          p[std::size_t(ch)] = std::uint8_t(std::lround(std::min(1., acc[std::size_t(ch)] / (s * s)) * 255.));
-      }
-    write_png(o.output, W, H, pixels);
+    write_png(o.output, W, H, downsample(cv, s, W, H));
     std::cout << "wrote " << o.output << " (" << W << "x" << H << ", " << n << " panels)" << std::endl;
   }
   catch(const std::exception& e)
