@@ -353,6 +353,14 @@ std::vector<Variant> all_variants()
   fine_field->voxel_resolutions = {32, 64, 128};
   fine_field->fitting_resolution_cap = 32;
   add("r32_64")->voxel_resolutions = {32, 64}; // the first fitting stage at 32, the field at 64
+  // the grid at 128 with the thresholds of the finest grid kept at their lengths at 64
+  const Variant fine = *fine_field;
+  Variant* abs = add("r128_abs");
+  static_cast<Part_decomposition_tools::Decomposition_settings&>(*abs) = fine;
+  abs->tsdf_truncation *= 2.;
+  abs->vote_temperature *= 2.;
+  abs->boundary_smoothness *= 2.;
+  abs->residual_tolerance *= 2.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;

@@ -40,9 +40,9 @@ struct Sheet_merging_thresholds
 {
   // a primitive is flat when its smallest semi-axis times this is below its middle one
   double flatness_ratio = 2.;
-  // and thin when no voxel it claims lies deeper than this inside the shape, in finest voxels
-  // (a wall up to five voxels thick: the wall of a cup at 64^3)
-  double maximum_depth = 2.5;
+  // and thin when no voxel it claims lies deeper than this inside the shape, as a fraction of the
+  // normalized cube (2.5 voxels of 64^3: the wall of a cup); a length, so that a finer grid keeps it
+  double maximum_depth = 2.5 / 64.;
   // two sheets merge unless this fraction of their seam lies on sharp edges
   double sharp_seam_fraction = 0.5;
   // sharp: a dihedral angle at or above this percentile of the mesh's interior edges (nearest
@@ -68,6 +68,7 @@ std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
   for(std::size_t v = 0; v < n_voxels; ++v) outside[v] = tsdf_values[v] > 0. ? 1 : 0;
   const Voxel_grid<double> depth2 = squared_distance_transform<ConcurrencyTag>(outside);
 
+  const double max_depth = th.maximum_depth * double(tsdf_values.resolution()); // in voxels
   const std::size_t K = part_to_primitive.size();
   std::vector<char> sheet(K, 0);
   for(std::size_t k = 0; k < K; ++k)
@@ -79,7 +80,7 @@ std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
     double deepest2 = 0.;
     for(std::size_t v : fitting.claimed_voxels[q])
       if(v < n_voxels) deepest2 = (std::max)(deepest2, depth2[v]);
-    sheet[k] = (a[0] * th.flatness_ratio < a[1] && deepest2 <= th.maximum_depth * th.maximum_depth) ? 1 : 0;
+    sheet[k] = (a[0] * th.flatness_ratio < a[1] && deepest2 <= max_depth * max_depth) ? 1 : 0;
   }
   return sheet;
 }
