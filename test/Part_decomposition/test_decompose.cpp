@@ -80,11 +80,12 @@ struct Sheet_case
   std::vector<std::size_t> part_to_primitive{0, 1};
 };
 
-Sheet_case make_sheet_case(double thickness, bool split_by_top_face, const std::array<double, 3>& scales)
+Sheet_case make_sheet_case(double thickness, bool split_by_top_face, const std::array<double, 3>& scales,
+                           int finest_resolution = 64)
 {
   Sheet_case c;
   c.mesh = test_shapes::make_box(Point(-1, -1, -thickness / 2), Point(1, 1, thickness / 2), 16);
-  c.tsdf = PD::compute_tsdf(c.mesh);
+  c.tsdf = PD::compute_tsdf(c.mesh, PD::parameters::voxel_resolutions(std::vector<int>{finest_resolution}));
   c.fitting.normalization = c.tsdf.normalization;
   const PD::Superquadric<K>::Rotation identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
   for(int k = 0; k < 2; ++k)
@@ -145,6 +146,19 @@ TEST_CASE("the sheet merge keeps creases, round primitives and thick parts apart
     Sheet_case c = make_sheet_case(0.5, false, {{0.5, 0.5, 0.1}});
     CHECK(merge(c) == 2u);
     CHECK(c.part_to_primitive == std::vector<std::size_t>({0, 1}));
+  }
+}
+
+TEST_CASE("a sheet's thickness is a length: the same slab is a sheet on the 64^3 and 128^3 grids", "[sheet_merge]")
+{
+  // 2 x 2 x 0.1: about 3 voxels thick at 64^3 and 6 at 128^3, where its middle lies deeper than
+  // 2.5 voxels; a 2 x 2 x 0.5 box stays thick on both grids.
+  for(int r : {64, 128})
+  {
+    Sheet_case slab = make_sheet_case(0.1, false, {{0.5, 0.5, 0.05}}, r);
+    CHECK(merge(slab) == 1u);
+    Sheet_case box = make_sheet_case(0.5, false, {{0.5, 0.5, 0.1}}, r);
+    CHECK(merge(box) == 2u);
   }
 }
 
