@@ -349,22 +349,22 @@ std::vector<Variant> all_variants()
   add("fit64")->fitting_resolution_cap = 64;
   add("r128")->voxel_resolutions = {32, 64, 128};
   // which of the finer distance field and the finer fitting grid separates thin parts
-  Variant fine;
-  fine.voxel_resolutions = {32, 64, 128};
-  fine.fitting_resolution_cap = 32;
-  add("r128_fit32")->voxel_resolutions = fine.voxel_resolutions;
-  v.back().fitting_resolution_cap = fine.fitting_resolution_cap;
+  Variant* fine_field = add("r128_fit32");
+  fine_field->voxel_resolutions = {32, 64, 128};
+  fine_field->fitting_resolution_cap = 32;
   add("r32_64")->voxel_resolutions = {32, 64}; // the first fitting stage at 32, the field at 64
   // the paper's coarse stages with one finer level on top
-  add("r16_128_fit32")->voxel_resolutions = {16, 32, 64, 128};
-  v.back().fitting_resolution_cap = 32;
-  // the grid at 128 with the thresholds of the finest grid kept at their lengths at 64
-  add("r128_abs")->voxel_resolutions = fine.voxel_resolutions;
-  v.back().fitting_resolution_cap = fine.fitting_resolution_cap;
-  v.back().tsdf_truncation *= 2.;
-  v.back().vote_temperature *= 2.;
-  v.back().boundary_smoothness *= 2.;
-  v.back().residual_tolerance *= 2.;
+  Variant* four_levels = add("r16_128_fit32");
+  four_levels->voxel_resolutions = {16, 32, 64, 128};
+  four_levels->fitting_resolution_cap = 32;
+  // r128_fit32 with the thresholds of the finest grid kept at their lengths at 64
+  Variant* lengths = add("r128_abs");
+  lengths->voxel_resolutions = {32, 64, 128};
+  lengths->fitting_resolution_cap = 32;
+  lengths->tsdf_truncation *= 2.;
+  lengths->vote_temperature *= 2.;
+  lengths->boundary_smoothness *= 2.;
+  lengths->residual_tolerance *= 2.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;

@@ -55,9 +55,9 @@ Thin shells (the wall of a cup, the skin of a wing, a table top a few voxels thi
 several flat superquadrics: the fitter cannot grow one primitive along a curved shell.
 
 1. A part is a <em>sheet</em> if its primitive is flat (its smallest semi-axis is below half the
-   middle one) and thin (no voxel it claims lies deeper than 2.5/64 of the normalized cube inside the shape,
-   2.5 voxels of a \f$64^3\f$ grid of `tsdf` and 5 of a \f$128^3\f$ one, the depth being the distance
-   to the nearest voxel of positive distance).
+   middle one) and thin (no voxel it claims lies deeper inside the shape than 2.5/64 of the
+   normalized cube: 2.5 voxels of a \f$64^3\f$ grid of `tsdf`, 5 of a \f$128^3\f$ one; the depth
+   being the distance to the nearest voxel of positive distance).
 2. An interior edge is <em>sharp</em> if its dihedral angle (as in `over_segment()`; an edge of a
    face of zero area counts as 90 degrees) is at least the 90-th percentile of the angles of all
    interior edges, taken at the nearest rank below (position \f$\lfloor 0.9\,(n-1) \rfloor\f$ in
