@@ -116,6 +116,7 @@ const std::map<std::string, Keyword>& keywords()
     {"cue_weights", field(&Parameters::cue_weights, "a sequence of 4 floats")},
     {"freeze_ratio", field(&Parameters::freeze_ratio, "a float")},
     {"use_density", field(&Parameters::use_density, "a bool")},
+    {"prior_resolution_cap", field(&Parameters::prior_resolution_cap, "an int")},
     {"normalization_margin", field(&Parameters::normalization_margin, "a float")},
     {"tsdf_truncation", field(&Parameters::tsdf_truncation, "a float")},
     {"tsdf_sign_method",

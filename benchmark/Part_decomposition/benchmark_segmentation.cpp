@@ -365,6 +365,11 @@ std::vector<Variant> all_variants()
   lengths->vote_temperature *= 2.;
   lengths->boundary_smoothness *= 2.;
   lengths->residual_tolerance *= 2.;
+  // r128_fit32 with the topology score at 32 and 64 only: the 128 grid refines the field, not the prior
+  Variant* field_only = add("r128_fit32_prior64");
+  field_only->voxel_resolutions = {32, 64, 128};
+  field_only->fitting_resolution_cap = 32;
+  field_only->prior_resolution_cap = 64;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;

@@ -94,6 +94,7 @@ const char* const usage_text =
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
   "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
   "  --resolutions 16,32,64   voxel resolutions of the prior, coarse to fine\n"
+  "  --prior-cap R            finest resolution of the topology score (0: all); finer ones only refine the grid\n"
   "  --samples-per-face 36    barycentric samples per face (a perfect square)\n"
   "  --neighbors 8            neighbours of the normal deviation cue\n"
   "  --curvature-percentile 99.5\n"
@@ -233,6 +234,7 @@ Options parse(int argc, char** argv)
     else if(a == "--crease-angle") o.decomposition.crease_angle = to_number(a, value());
     else if(a == "--min-part-area") o.decomposition.minimum_part_area = to_number(a, value());
     else if(a == "--no-density") o.decomposition.use_density = false;
+    else if(a == "--prior-cap") o.decomposition.prior_resolution_cap = int(to_count(a, value()));
     else if(a == "--fitting-resolution-cap") o.decomposition.fitting_resolution_cap = int(to_count(a, value()));
     else if(a == "--no-exterior-band") o.decomposition.use_exterior_band_samples = false;
     else if(a == "--no-reachable-regions") o.decomposition.use_reachable_regions = false;

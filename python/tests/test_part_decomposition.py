@@ -54,7 +54,7 @@ def dumbbell():
 def test_every_named_parameter_is_a_keyword_with_its_default():
     names = {
         "voxel_resolutions", "number_of_points_per_face", "number_of_neighbors", "curvature_percentile",
-        "cue_weights", "freeze_ratio", "use_density", "normalization_margin", "tsdf_truncation",
+        "cue_weights", "freeze_ratio", "use_density", "prior_resolution_cap", "normalization_margin", "tsdf_truncation",
         "tsdf_sign_method", "flow_zone_tolerance", "trust_region_scales", "body_seed_threshold",
         "minimum_body_volume", "minimum_surface_volume", "exterior_penalty", "coverage_target", "roi_radius",
         "interior_weight_mode", "maximum_number_of_primitives", "use_freeze_zone", "use_tsdf_guidance",

@@ -737,6 +737,42 @@ TEST_CASE("the prior is the same with any number of threads and validates its pa
                   PD::Invalid_input);
 }
 
+TEST_CASE("prior_resolution_cap: the finer levels take the fused classes of the cap where sampled", "[prior]")
+{
+  const Mesh m = make_dumbbell();
+  using PD::parameters::prior_resolution_cap;
+  const PD::Hierarchical_prior full = PD::compute_flow_freeze_prior(m);
+  const PD::Hierarchical_prior capped = PD::compute_flow_freeze_prior(m, prior_resolution_cap(32));
+  REQUIRE(capped.resolutions == std::vector<int>({16, 32, 64}));
+  REQUIRE(capped.fields.size() == 2);
+  CHECK(capped.number_of_flow_leaves.size() == 3);
+  CHECK(capped.number_of_flow_leaves[2] + capped.number_of_freeze_leaves[2] == 0);
+  // the scored levels bin their samples at 64 as the full prior does, and fuse alone
+  const PD::Hierarchical_prior coarse = PD::fuse_flow_freeze({full.fields[0].classes, full.fields[1].classes});
+  CHECK(capped.number_of_flow_leaves[1] == coarse.number_of_flow_leaves[1]);
+  std::size_t sampled = 0, freeze = 0;
+  for(std::size_t v = 0; v < capped.classes.size(); ++v)
+  {
+    const std::array<int, 3> g = capped.classes.coordinates(v);
+    const std::size_t parent = coarse.classes.index(g[0] / 2, g[1] / 2, g[2] / 2);
+    const bool support = full.fields[2].sample_count[v] > 0;
+    sampled += support;
+    freeze += capped.classes[v] == VC::FREEZE;
+    CHECK(capped.classes[v] == (support ? coarse.classes[parent] : VC::EMPTY));
+    CHECK(capped.leaf_resolution[v] == (support ? coarse.leaf_resolution[parent] : 0));
+  }
+  CHECK(sampled > 0);
+  CHECK(freeze > 0);
+  CHECK(capped.classes != full.classes); // the 64 level of the full prior refines some leaves
+  // a cap at the finest resolution is no cap
+  const PD::Hierarchical_prior at_finest = PD::compute_flow_freeze_prior(m, prior_resolution_cap(64));
+  CHECK(at_finest.classes == full.classes);
+  CHECK(at_finest.fields.size() == 3);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(48)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(128)), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(-1)), PD::Invalid_input);
+}
+
 // ----------------------------------------------------------------- one parameter layer
 
 namespace {
@@ -751,6 +787,7 @@ auto explicit_defaults()
     PD::parameters::curvature_percentile(PD::defaults::curvature_percentile),
     PD::parameters::cue_weights(PD::defaults::cue_weights), PD::parameters::freeze_ratio(PD::defaults::freeze_ratio),
     PD::parameters::use_density(PD::defaults::use_density),
+    PD::parameters::prior_resolution_cap(PD::defaults::prior_resolution_cap),
     PD::parameters::normalization_margin(PD::defaults::normalization_margin));
 }
 

@@ -32,6 +32,7 @@ struct Decomposition_settings
   std::array<double, 4> cue_weights = PD::defaults::cue_weights;
   double freeze_ratio = PD::defaults::freeze_ratio;
   bool use_density = PD::defaults::use_density;
+  int prior_resolution_cap = PD::defaults::prior_resolution_cap;
   double normalization_margin = PD::defaults::normalization_margin;
   double tsdf_truncation = PD::defaults::tsdf_truncation;
   PD::Tsdf_sign_method tsdf_sign_method = PD::defaults::tsdf_sign_method;
@@ -81,6 +82,7 @@ inline auto named_parameters(const Decomposition_settings& s)
     PDP::voxel_resolutions(s.voxel_resolutions), PDP::number_of_neighbors(s.number_of_neighbors),
     PDP::curvature_percentile(s.curvature_percentile), PDP::cue_weights(s.cue_weights),
     PDP::freeze_ratio(s.freeze_ratio), PDP::use_density(s.use_density),
+    PDP::prior_resolution_cap(s.prior_resolution_cap),
     PDP::normalization_margin(s.normalization_margin), PDP::tsdf_truncation(s.tsdf_truncation),
     PDP::tsdf_sign_method(s.tsdf_sign_method), PDP::flow_zone_tolerance(s.flow_zone_tolerance),
     PDP::trust_region_scales(s.trust_region_scales), PDP::body_seed_threshold(s.body_seed_threshold),

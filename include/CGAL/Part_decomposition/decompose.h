@@ -730,6 +730,13 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, in \f$(0,1)\f$}
     \cgalParamDefault{`0.15`}
   \cgalParamNEnd
+  \cgalParamNBegin{prior_resolution_cap}
+    \cgalParamDescription{the finest resolution of the topology score; finer `voxel_resolutions` only
+                          refine the grid of the distance field, the zones and the claims, with the
+                          classes of the cap (see `compute_flow_freeze_prior()`). 0: every resolution}
+    \cgalParamType{`int`, 0 or one of `voxel_resolutions`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
   \cgalParamNBegin{normalization_margin}
     \cgalParamDescription{the free margin left on each side of the normalized cube (see `compute_normalization()`)}
     \cgalParamType{`double`, in `[0, 0.25]`}

@@ -33,6 +33,7 @@ namespace Part_decomposition {
   X(cue_weights_t, cue_weights, cue_weights)                                         \
   X(freeze_ratio_t, freeze_ratio, freeze_ratio)                                      \
   X(use_density_t, use_density, use_density)                                        \
+  X(prior_resolution_cap_t, prior_resolution_cap, prior_resolution_cap)              \
   /* normalization and TSDF (App. E.2) */                                            \
   X(normalization_t, normalization, normalization)                                   \
   X(normalization_margin_t, normalization_margin, normalization_margin)              \
@@ -157,6 +158,8 @@ constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
 constexpr double freeze_ratio = 0.15;
 /// whether the topology score is weighted by the density term \f$\sqrt{n_i}\f$
 constexpr bool use_density = true;
+/// the finest resolution of the topology score, 0: every resolution of the prior
+constexpr int prior_resolution_cap = 0;
 /// the free margin of the normalization, two voxels of the \f$64^3\f$ grid
 constexpr double normalization_margin = 2. / 64.;
 /// \f$\tau\f$, the truncation of the distance field, in voxels of the finest grid
@@ -267,6 +270,7 @@ package's parameters are:
 | `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
 | `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
 | `use_density()` | `bool` | `true` | `compute_topology_score()`, `compute_flow_freeze_prior()` |
+| `prior_resolution_cap()` | `int` | 0 (every resolution) | `compute_flow_freeze_prior()` |
 | `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
 | `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
 | `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |

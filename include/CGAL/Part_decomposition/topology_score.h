@@ -119,11 +119,13 @@ struct Topology_score_parameters
 // The score fields and cuts at every resolution of `resolutions`, all from one pass over the
 // samples binned at `sampling_resolution`, a power of two times each of them: large faces are cut
 // relative to that grid, and a coarser voxel sums the counts of the finer voxels it holds.
+// `sampled`, if given, receives the voxels of the sampling grid that hold a sample.
 template <typename ConcurrencyTag>
 std::vector<Topology_score_field>
 topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c, const std::vector<double>& phi,
                       const std::vector<int>& resolutions, int sampling_resolution,
-                      const Normalization& normalization, const Topology_score_parameters& parameters)
+                      const Normalization& normalization, const Topology_score_parameters& parameters,
+                      Voxel_grid<std::uint8_t>* sampled = nullptr)
 {
   CGAL_precondition(!resolutions.empty());
   const int rf = sampling_resolution;
@@ -138,7 +140,7 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
   std::vector<Vec3> unit_points(mesh.points.size());
   for(std::size_t v = 0; v < unit_points.size(); ++v)
     unit_points[v] = normalization.to_unit(mesh.points[v][0], mesh.points[v][1], mesh.points[v][2]);
-  accumulate_samples<ConcurrencyTag>(unit_points, mesh.faces, c, phi, parameters.barycentric, rf, sums);
+  accumulate_samples<ConcurrencyTag>(unit_points, mesh.faces, c, phi, parameters.barycentric, rf, sums, sampled);
 
   std::vector<Topology_score_field> fields(resolutions.size());
   for_each_block<ConcurrencyTag>(resolutions.size(), 1, [&](std::size_t begin, std::size_t end) {

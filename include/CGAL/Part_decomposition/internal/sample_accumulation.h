@@ -266,7 +266,7 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
                         const std::vector<std::array<std::uint32_t, 3> >& faces,
                         const std::vector<double>& c, const std::vector<double>& phi,
                         const std::vector<std::array<double, 3> >& barycentric, int rf,
-                        std::vector<Voxel_sums>& sums)
+                        std::vector<Voxel_sums>& sums, Voxel_grid<std::uint8_t>* sampled = nullptr)
 {
   const std::size_t nf = faces.size();
   const std::size_t block_size = 1024;
@@ -275,6 +275,10 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
     list_face_voxel_counts(unit_points, faces, barycentric, rf, begin, end, blocks[begin / block_size]);
   });
   add_counts_to_sums(blocks, c, phi, rf, sums);
+  if(sampled == nullptr) return;
+  *sampled = Voxel_grid<std::uint8_t>(rf, 0);
+  for(const std::vector<Face_voxel_count>& block : blocks)
+    for(const Face_voxel_count& e : block) (*sampled)[e.voxel] = 1;
 }
 
 // Gradient magnitude of the dense field at (i,j,k), unit spacing: central differences
