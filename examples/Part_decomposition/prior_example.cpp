@@ -100,7 +100,7 @@ int main(int argc, char** argv)
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::cout << "Prior computed in " << ms << " ms" << std::endl;
 
-  for(std::size_t l = 0; l < prior.resolutions.size(); ++l)
+  for(std::size_t l = 0; l < prior.fields.size(); ++l) // the scored resolutions: all, by default
   {
     const PD::Topology_score_field& f = prior.fields[l];
     std::cout << "r = " << prior.resolutions[l] << ": " << f.number_of_active_voxels << " active, "

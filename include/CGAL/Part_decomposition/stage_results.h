@@ -77,7 +77,8 @@ struct Hierarchical_prior
 {
   /// the resolutions, coarse to fine, each twice the previous one (default 16, 32, 64).
   std::vector<int> resolutions;
-  /// the score field and Flow/Freeze cut at each resolution, in the order of `resolutions`.
+  /// the score field and Flow/Freeze cut at each scored resolution, in the order of `resolutions`:
+  /// all of them, or the first ones up to the `prior_resolution_cap` of `compute_flow_freeze_prior()`.
   std::vector<Topology_score_field> fields;
   /// the class of the fused leaf that contains each voxel of the finest grid; `EMPTY` outside
   /// the surface support of the finest grid.
