@@ -155,6 +155,7 @@ const std::map<std::string, Keyword>& keywords()
     {"use_pieces", field(&Parameters::use_pieces, "a bool")},
     {"crease_angle", field(&Parameters::crease_angle, "a float")},
     {"minimum_part_area", field(&Parameters::minimum_part_area, "a float")},
+    {"maximum_merge_cost", field(&Parameters::maximum_merge_cost, "a float")},
     {"number_of_parts", field(&Parameters::number_of_parts, "None or a positive int")},
     {"keep_residual_patches", field(&Parameters::keep_residual_patches, "a bool")},
     {"residual_tolerance", field(&Parameters::residual_tolerance, "a float")},

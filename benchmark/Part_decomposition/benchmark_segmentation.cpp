@@ -370,6 +370,13 @@ std::vector<Variant> all_variants()
   field_only->voxel_resolutions = {32, 64, 128};
   field_only->fitting_resolution_cap = 32;
   field_only->prior_resolution_cap = 64;
+  // the parts of the assignment, without the hierarchy's merges below maximum_merge_cost
+  add("no_cost_merge")->maximum_merge_cost = 0.;
+  Variant* r128_no_cost = add("r128_fit32_prior64_no_cost_merge");
+  r128_no_cost->voxel_resolutions = {32, 64, 128};
+  r128_no_cost->fitting_resolution_cap = 32;
+  r128_no_cost->prior_resolution_cap = 64;
+  r128_no_cost->maximum_merge_cost = 0.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;

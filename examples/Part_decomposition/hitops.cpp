@@ -123,7 +123,8 @@ const char* const usage_text =
   "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
   "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
   "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
-  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n";
+  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n"
+  "  --max-merge-cost C       the parts go on merging in the hierarchy while a merge costs less (0.003; 0: none)\n";
 
 double to_number(const std::string& option, const std::string& text)
 {
@@ -233,6 +234,7 @@ Options parse(int argc, char** argv)
     else if(a == "--no-pieces") o.decomposition.use_pieces = false;
     else if(a == "--crease-angle") o.decomposition.crease_angle = to_number(a, value());
     else if(a == "--min-part-area") o.decomposition.minimum_part_area = to_number(a, value());
+    else if(a == "--max-merge-cost") o.decomposition.maximum_merge_cost = to_number(a, value());
     else if(a == "--no-density") o.decomposition.use_density = false;
     else if(a == "--prior-cap") o.decomposition.prior_resolution_cap = int(to_count(a, value()));
     else if(a == "--fitting-resolution-cap") o.decomposition.fitting_resolution_cap = int(to_count(a, value()));

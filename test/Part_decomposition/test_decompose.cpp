@@ -247,7 +247,9 @@ TEST_CASE("the thin-sheet merge is a step of its own of Part_decomposer", "[deco
   Mesh m;
   test_shapes::read_shipped_shape("table", m);
   std::vector<std::size_t> merged(num_faces(m)), unmerged(num_faces(m));
-  const std::size_t K_merged = PD::decompose(m, CGAL::make_property_map(merged), PDP::use_pieces(false));
+  // the parts of the assignment: without the hierarchy's merges
+  const std::size_t K_merged =
+    PD::decompose(m, CGAL::make_property_map(merged), PDP::combine(PDP::use_pieces(false), PDP::maximum_merge_cost(0.)));
 
   PD::Part_decomposer<Mesh> pd(m);
   pd.compute_prior();
@@ -311,7 +313,8 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
           PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets),
           PDP::use_pieces(D::use_pieces), PDP::crease_angle(D::crease_angle),
           PDP::minimum_part_area(D::minimum_part_area), PDP::boundary_smoothness(D::boundary_smoothness),
-          PDP::merge_primitives(D::merge_primitives), PDP::minimum_merge_iou(D::minimum_merge_iou)));
+          PDP::merge_primitives(D::merge_primitives), PDP::minimum_merge_iou(D::minimum_merge_iou),
+          PDP::maximum_merge_cost(D::maximum_merge_cost)));
   CHECK(na == 3u); // two balls and a bar
   CHECK(nb == na);
   CHECK(b == a);
@@ -723,6 +726,43 @@ TEST_CASE("three boxes in a row: two parts join the two boxes one box explains",
     CHECK(h.nodes[3].kind == PD::Merge_kind::CONTACT);
     CHECK(h.nodes[4].parent == PD::Part_hierarchy<K>::Node::no_node);
     CHECK(h.nodes[4].merge_cost > h.nodes[3].merge_cost);
+  }
+}
+
+TEST_CASE("maximum_merge_cost: the two boxes one box explains are one part by default", "[hierarchy][decompose]")
+{
+  for(bool small_first : {false, true})
+  {
+    CAPTURE(small_first);
+    std::vector<std::size_t> box;
+    const Mesh m = make_three_boxes(small_first, box);
+    const std::size_t small = small_first ? 0 : 2;
+    // without the merges: one part per box (three pieces)
+    std::vector<std::size_t> assigned(num_faces(m)), part(num_faces(m));
+    CHECK(PD::decompose(m, CGAL::make_property_map(assigned), PDP::maximum_merge_cost(0.)) == 3);
+    for(std::size_t i = 0; i < assigned.size(); ++i)
+      for(std::size_t j = 0; j < assigned.size(); ++j)
+        if((assigned[i] == assigned[j]) != (box[i] == box[j])) FAIL("faces " << i << " and " << j);
+    // by default the two big boxes merge (their union is a box: cost 0), the small one stays
+    std::vector<PD::Superquadric<K> > primitives;
+    PD::Part_hierarchy<K> h;
+    CHECK(PD::decompose(m, CGAL::make_property_map(part),
+                        PDP::combine(PDP::part_hierarchy(&h),
+                                     PDP::primitive_output_iterator(std::back_inserter(primitives)))) == 2);
+    CHECK(h.default_number_of_parts == 2);
+    CHECK(h.level_below_cost(3, 0.) == 3);
+    CHECK(h.level_below_cost(3, PD::defaults::maximum_merge_cost) == 2);
+    CHECK(h.level_below_cost(3, 1e9) == 1);
+    CHECK(h.labels(2) == part);
+    REQUIRE(primitives.size() == 2);
+    for(std::size_t i = 0; i < part.size(); ++i)
+      if((part[i] == part[small == 0 ? 0 : num_faces(m) - 1]) != (box[i] == small)) FAIL("face " << i);
+    std::array<double, 3> sc = primitives[part[small == 0 ? num_faces(m) - 1 : 0]].scales();
+    std::sort(sc.begin(), sc.end());
+    CHECK(sc[0] == Approx(0.5));
+    CHECK(sc[2] == Approx(1.));
+    CHECK(error_of([&] { PD::decompose(m, CGAL::make_property_map(part), PDP::maximum_merge_cost(-1.)); }) ==
+          PD::Input_error::INVALID_PARAMETER);
   }
 }
 

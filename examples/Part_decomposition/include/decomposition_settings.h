@@ -67,6 +67,7 @@ struct Decomposition_settings
   bool use_pieces = PD::defaults::use_pieces;
   double crease_angle = PD::defaults::crease_angle;
   double minimum_part_area = PD::defaults::minimum_part_area;
+  double maximum_merge_cost = PD::defaults::maximum_merge_cost;
   bool keep_residual_patches = PD::defaults::keep_residual_patches;
   double residual_tolerance = PD::defaults::residual_tolerance;
   bool verbose = false;
@@ -100,6 +101,7 @@ inline auto named_parameters(const Decomposition_settings& s)
     PDP::boundary_smoothness(s.boundary_smoothness), PDP::merge_primitives(s.merge_primitives),
     PDP::minimum_merge_iou(s.minimum_merge_iou), PDP::merge_thin_sheets(s.merge_thin_sheets),
     PDP::use_pieces(s.use_pieces), PDP::crease_angle(s.crease_angle), PDP::minimum_part_area(s.minimum_part_area),
+    PDP::maximum_merge_cost(s.maximum_merge_cost),
     PDP::keep_residual_patches(s.keep_residual_patches), PDP::residual_tolerance(s.residual_tolerance));
 }
 

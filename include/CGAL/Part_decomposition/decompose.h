@@ -57,7 +57,7 @@ struct Stage_timings
   double fitting_zones = 0.;     ///< of which the fitting zones (run next to the distance field when stages overlap)
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
-  double hierarchy = 0.;         ///< the part hierarchy and its cut (with `number_of_parts` only)
+  double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
   double total = 0.;             ///< the whole call, input checks included
   /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
   /// overlap and their sum exceeds `total`.
@@ -400,8 +400,10 @@ public:
   order and returns it. Its leaves are the finest parts: the parts of `assign_parts()` cut by the
   regions of `segment_pieces()` (before small parts were merged) and, in the pieces the volumetric
   stages decomposed, by the patches of `over_segment()`. The merges inside a part come first, so
-  that the parts of `assign_parts()` are a level of the tree (level `part_primitives().size()`), with their
-  primitives; the other nodes get their box-like superquadric.
+  that the parts of `assign_parts()` are a level of the tree (level `part_primitives().size()`, its
+  `default_number_of_parts`), with their primitives; the other nodes get their box-like
+  superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_below_cost()`
+  (named parameter `maximum_merge_cost`).
   \pre `assign_parts()` was called.
   */
   const Part_hierarchy<Geom_traits>& build_hierarchy()
@@ -654,8 +656,9 @@ one superquadric, optionally written to an output iterator. The same input and p
 the same output, whatever the number of threads.
 
 The stages, each also available on its own: `segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`,
-`fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`;
-`Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
+`fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`, then
+the part hierarchy (`build_part_hierarchy()`), whose merges go on from the assigned parts as long
+as they cost less than `maximum_merge_cost`; `Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
 and passed to the stage that reads it; the table below lists them all. The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
@@ -936,9 +939,24 @@ are chained with `parameters::combine()`)
     \cgalParamType{`std::size_t`, at least 1}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{maximum_merge_cost}
+    \cgalParamDescription{the default granularity: the parts of `Part_decomposer::assign_parts()` go on
+                          merging in the order of the part hierarchy as long as each merge costs less
+                          than this (`Part_hierarchy::level_below_cost()`; the cost is that of
+                          `build_part_hierarchy()`: the volume one box of the union adds to the boxes
+                          of the two parts, as a fraction of the bounding box, plus a term for a
+                          concave common boundary). Two parts that touch and that one box explains
+                          about as well as their two boxes, along a boundary that is not a concave
+                          crease, become one part with the box-like superquadric of its node; parts
+                          in separate places never merge. 0: the parts of the assignment}
+    \cgalParamType{`double`, finite, at least 0}
+    \cgalParamDefault{`0.003`}
+  \cgalParamNEnd
   \cgalParamNBegin{part_hierarchy}
     \cgalParamDescription{if not null, receives the part hierarchy (`Part_decomposer::build_hierarchy()`),
-                          built after the parts}
+                          built after the parts; its `default_number_of_parts` is the number of
+                          parts of the default granularity (after the merges below
+                          `maximum_merge_cost`)}
     \cgalParamType{`Part_hierarchy<GeomTraits>*`}
     \cgalParamDefault{`nullptr`}
   \cgalParamNEnd
@@ -1021,31 +1039,39 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
       timings.over_segmentation = internal::seconds_since(t);
     });
 
-  // the assignment, then the thin-sheet merge unless merge_thin_sheets(false), then the one write
-  // (of the level of the hierarchy if a number of parts is asked for)
+  // the assignment (with the thin-sheet merge unless merge_thin_sheets(false)), then the hierarchy
+  // when it is asked for or its cheap merges may go on, and the level of the hierarchy if it is
+  // not the assignment's
   const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),
                               CGAL::Emptyset_iterator());
   Part_hierarchy<GT>* hierarchy_out =
     choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
   const auto t = std::chrono::steady_clock::now();
-  std::size_t K = 0;
-  if(!hp.has_number_of_parts)
-  {
-    K = decomposer.template assign_parts<ConcurrencyTag>(face_part_map, np);
-    for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
-  }
-  else
-    decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
+  const std::size_t assigned = decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
   timings.assignment = internal::seconds_since(t);
-  if(hp.has_number_of_parts || hierarchy_out != nullptr)
+  std::size_t K = assigned;
+  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
   {
     const auto th = std::chrono::steady_clock::now();
     decomposer.build_hierarchy();
-    if(hp.has_number_of_parts) K = decomposer.parts_at_level(hp.number_of_parts, face_part_map, out);
-    if(hierarchy_out != nullptr) *hierarchy_out = decomposer.hierarchy();
+    const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
+    K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
+    if(hierarchy_out != nullptr)
+    {
+      *hierarchy_out = decomposer.hierarchy();
+      hierarchy_out->default_number_of_parts = default_parts;
+    }
     timings.hierarchy = internal::seconds_since(th);
   }
+  if(K == assigned && !hp.has_number_of_parts)
+  {
+    const std::vector<std::size_t>& parts = decomposer.parts();
+    for(auto f : faces(tm)) put(face_part_map, f, parts[std::size_t(get(decomposer.face_index_map(), f))]);
+    for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
+  }
+  else
+    K = decomposer.parts_at_level(K, face_part_map, out);
 
   timings.total = internal::seconds_since(t0);
   if(Stage_timings* st = choose_parameter(get_parameter(np, internal_np::stage_timings),

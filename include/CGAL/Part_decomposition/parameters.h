@@ -76,6 +76,7 @@ namespace Part_decomposition {
   X(minimum_part_area_t, minimum_part_area, minimum_part_area)                       \
   /* the part hierarchy and residual patches */                                      \
   X(number_of_parts_t, number_of_parts, number_of_parts)                             \
+  X(maximum_merge_cost_t, maximum_merge_cost, maximum_merge_cost)                    \
   X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
   X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
   X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
@@ -231,6 +232,8 @@ constexpr bool use_pieces = true;
 constexpr double crease_angle = 60.;
 /// the area below which a part is merged into a neighbour, as a fraction of the mesh area
 constexpr double minimum_part_area = 0.005;
+/// the merge cost of the part hierarchy below which the default parts go on merging
+constexpr double maximum_merge_cost = 0.003;
 /// whether Freeze-dominant patches that no primitive explains are kept as residual parts
 constexpr bool keep_residual_patches = false;
 /// the distance, in voxels of the finest grid, from which a patch is not explained by its primitive
@@ -307,6 +310,7 @@ package's parameters are:
 | `crease_angle()` | `double` | 60 | `segment_pieces()` |
 | `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()` |
+| `maximum_merge_cost()` | `double` | 0.003 | `decompose()` |
 | `part_hierarchy()` | `Part_hierarchy<GeomTraits>*` | `nullptr` | `decompose()` |
 | `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |

@@ -38,6 +38,7 @@ struct Hierarchy_parameters
 {
   bool has_number_of_parts = false;
   std::size_t number_of_parts = 0;
+  double maximum_merge_cost = 0.;
 };
 
 template <typename NamedParameters>
@@ -50,6 +51,9 @@ Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
   p.has_number_of_parts = !CGAL::parameters::is_default_parameter<NamedParameters, inp::number_of_parts_t>::value;
   p.number_of_parts = choose_parameter(get_parameter(np, inp::number_of_parts), std::size_t(0));
   if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts", "at least 1");
+  p.maximum_merge_cost = choose_parameter(get_parameter(np, inp::maximum_merge_cost), defaults::maximum_merge_cost);
+  check_parameter(p.maximum_merge_cost >= 0. && p.maximum_merge_cost < std::numeric_limits<double>::infinity(),
+                  "maximum_merge_cost", "finite and non-negative");
   return p;
 }
 

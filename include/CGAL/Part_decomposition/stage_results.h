@@ -310,6 +310,20 @@ struct Part_hierarchy
     return result;
   }
 
+  /// the coarsest level reached from level `k` by the merges that follow it in order, as long as
+  /// each costs less than `maximum_cost` and joins parts that touch (not `Merge_kind::NO_CONTACT`):
+  /// `k` if the next merge does not.
+  /// \pre `1 <= k <= number_of_leaves()`
+  std::size_t level_below_cost(std::size_t k, double maximum_cost) const
+  {
+    CGAL_precondition(k >= 1 && k <= number_of_leaves());
+    // the nodes made by the first L - k merges are [0, 2L - k): the next merge makes node 2L - k
+    for(std::size_t next = 2 * number_of_leaves() - k;
+        k > 1 && nodes[next].merge_cost < maximum_cost && nodes[next].kind != Merge_kind::NO_CONTACT; ++next)
+      --k;
+    return k;
+  }
+
   /// the part (`0` to `k - 1`, in the order of `level(k)`) of each face at level `k`.
   /// \pre `1 <= k <= number_of_leaves()`
   std::vector<std::size_t> labels(std::size_t k) const
