@@ -52,8 +52,7 @@ Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
   p.number_of_parts = choose_parameter(get_parameter(np, inp::number_of_parts), std::size_t(0));
   if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts", "at least 1");
   p.maximum_merge_cost = choose_parameter(get_parameter(np, inp::maximum_merge_cost), defaults::maximum_merge_cost);
-  check_parameter(p.maximum_merge_cost >= 0. && p.maximum_merge_cost < std::numeric_limits<double>::infinity(),
-                  "maximum_merge_cost", "finite and non-negative");
+  check_non_negative(p.maximum_merge_cost, "maximum_merge_cost");
   return p;
 }
 
