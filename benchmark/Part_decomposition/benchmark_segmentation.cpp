@@ -418,6 +418,8 @@ struct Row
   double cd = NaN;          // cut discrepancy, mean over the ground truths where it is defined
   // true primitives found (NAME.parts.tsv); -1: not applicable (no parts file, no primitives)
   long found = -1, true_primitives = -1, thin_found = -1, thin_total = -1;
+  // of those, found by the true labels with each true part's faces boxed: what the surface shows
+  long findable = -1, thin_findable = -1;
   double end_to_end() const { return t_read + t_method; }
 };
 
@@ -444,7 +446,7 @@ void write_tsv_header(std::ostream& out)
   out << "dataset\tshape\tcategory\tfaces\tmethod\tstatus\tmIoU\tRI\tVoI\tSC\tparts\tgt_parts\tn_gt"
          "\tt_read\tt_prior\tt_tsdf\tt_fitting\tt_overseg\tt_assign\tt_sdf_values\tt_sdf_segmentation"
          "\tt_method\tt_end_to_end\tpeak_mb\trss_before_mb\tsame_labels\terror\tnote\tk\tleaves\tt_hierarchy"
-         "\tCD\tfound\ttrue_primitives\tthin_found\tthin_total\n";
+         "\tCD\tfound\ttrue_primitives\tthin_found\tthin_total\tfindable\tthin_findable\n";
 }
 
 void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
@@ -458,7 +460,8 @@ void write_tsv_row(std::ostream& out, const std::string& dataset, const Row& r)
       << num(r.peak_mb, 1) << '\t' << num(r.rss_before_mb, 1) << '\t' << r.same_labels << '\t'
       << clean(r.error) << '\t' << clean(r.note) << '\t' << r.k << '\t' << r.leaves << '\t' << num(r.t_hierarchy)
       << '\t' << num(r.cd) << '\t' << count(r.found) << '\t' << count(r.true_primitives) << '\t'
-      << count(r.thin_found) << '\t' << count(r.thin_total) << '\n';
+      << count(r.thin_found) << '\t' << count(r.thin_total) << '\t' << count(r.findable) << '\t'
+      << count(r.thin_findable) << '\n';
   out.flush();
 }
 
@@ -595,7 +598,34 @@ struct Shape_truth
 {
   std::vector<pd_benchmark::True_primitive> primitives;
   std::vector<double> face_area; // in mesh face order
+  long findable = -1, thin_findable = -1;
 };
+
+// The true primitives that the surface shows: found (score_primitives()) by the true labels, each
+// true part carrying the principal-axis box of its own faces, the superquadric `decompose()` gives a
+// part without a fitted one. A part whose centre lies inside its neighbours (a fin or a leg
+// sunk into a body) is missed even so: no segmentation of the surface can find it.
+void count_findable(const Mesh& mesh, const std::vector<long>& gt, Shape_truth& t)
+{
+  std::map<long, std::size_t> index; // true label -> box
+  std::vector<std::vector<std::array<double, 3> > > corners;
+  std::vector<std::size_t> labels;
+  for(Face f : faces(mesh))
+  {
+    const long g = gt[std::size_t(f)];
+    const auto it = index.emplace(g, corners.size()).first;
+    if(it->second == corners.size()) corners.emplace_back();
+    labels.push_back(it->second);
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      corners[it->second].push_back({{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}});
+  }
+  std::vector<PD::Superquadric<K> > boxes;
+  for(const auto& c : corners) boxes.push_back(PD::internal::bounding_superquadric<K>(c));
+  Row r;
+  score_primitives(t.primitives, boxes, labels, gt, t.face_area, r);
+  t.findable = r.found;
+  t.thin_findable = r.thin_found;
+}
 
 Shape_truth read_truth(const Shape_entry& e, const Mesh& mesh, const std::vector<std::vector<long> >& gt_faces,
                        std::string& note)
@@ -616,6 +646,7 @@ Shape_truth read_truth(const Shape_entry& e, const Mesh& mesh, const std::vector
     t.face_area.push_back(std::sqrt(CGAL::squared_area(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
                                                        mesh.point(target(next(h, mesh), mesh)))));
   }
+  count_findable(mesh, gt_faces.front(), t);
   return t;
 }
 
@@ -657,6 +688,7 @@ struct Aggregate
   std::size_t cd_shapes = 0;
   // true primitives found, summed over the shapes with primitives; found < 0: not applicable
   long found = -1, true_primitives = 0, thin_found = -1, thin_total = 0;
+  long findable = 0, thin_findable = 0;
 };
 
 // "mean (shapes where defined)"
@@ -699,6 +731,8 @@ Aggregate aggregate(const std::vector<Row>& rows, const std::string& method, con
       a.thin_found = (std::max)(a.thin_found, 0L) + r->thin_found;
       a.true_primitives += r->true_primitives;
       a.thin_total += r->thin_total;
+      a.findable += r->findable;
+      a.thin_findable += r->thin_findable;
     }
   return a;
 }
@@ -816,6 +850,20 @@ void write_protocol(std::ostream& out, const Options& o, const std::string& data
       << "leaves it undefined.\n\n";
 }
 
+// What the true labels themselves reach, each true part boxed (count_findable()).
+std::string findable_sentence(const Summary_columns& c, const std::vector<Row>& rows)
+{
+  for(const std::string& m : c.methods)
+  {
+    const Aggregate a = aggregate(rows, m);
+    if(a.found < 0) continue;
+    return "The true labels, each true part with the principal-axis box of its faces, find " +
+           percent(a.findable, a.true_primitives) + " %, thin " + percent(a.thin_findable, a.thin_total) +
+           " %: the others have their centre sunk in a neighbouring part, where the surface does not show it.";
+  }
+  return "";
+}
+
 void write_quality_tables(std::ostream& out, const Summary_columns& c, const std::vector<Row>& rows,
                           const std::vector<std::string>& categories)
 {
@@ -823,7 +871,8 @@ void write_quality_tables(std::ostream& out, const Summary_columns& c, const std
     out << "Primitives (NAME.parts.tsv): a true primitive is found if some predicted part has its "
         << "superquadric's centre within the primitive's smallest semi-axis of its centre and more than half "
         << "of its area labelled with it in NAME.seg; thin: smallest semi-axis at most 1/8 of the largest. "
-        << "Percentages pool the primitives of the shapes; n/a for methods without primitives (SDF).\n\n";
+        << "Percentages pool the primitives of the shapes; n/a for methods without primitives (SDF). "
+        << findable_sentence(c, rows) << "\n\n";
   out << "## Overall\n\n"
       << "| Method | shapes ok | mIoU ↑ | RI ↑ | VoI ↓ | CD ↓ | SC ↑ |" << c.found_head() << " parts | GT parts | median s | mean s "
          "| median end-to-end s | median peak MB |\n"
@@ -1529,6 +1578,8 @@ void score_run(const Shape_run& run, const Shape_truth& truth, const std::vector
   score(labels, run.s.samples, run.s.gt_samples, r);
   r.cd = mean_cut_discrepancy(run.s.mesh, labels, run.s.gt_faces);
   if(truth.primitives.empty()) return;
+  r.findable = truth.findable;
+  r.thin_findable = truth.thin_findable;
   if(r.method.compare(0, 3, "sdf") != 0)
   {
     score_primitives(truth.primitives, primitives, labels, run.s.gt_faces.front(), truth.face_area, r);
