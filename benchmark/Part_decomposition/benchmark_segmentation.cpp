@@ -857,9 +857,12 @@ std::string findable_sentence(const Summary_columns& c, const std::vector<Row>& 
   {
     const Aggregate a = aggregate(rows, m);
     if(a.found < 0) continue;
+    auto share = [](long k, long n) {
+      return num(100. * double(k) / double((std::max)(n, 1L)), 1) + "% (" + std::to_string(k) + " of " + std::to_string(n) + ")";
+    };
     return "The true labels, each true part with the principal-axis box of its faces, find " +
-           percent(a.findable, a.true_primitives) + " %, thin " + percent(a.thin_findable, a.thin_total) +
-           " %: the others have their centre sunk in a neighbouring part, where the surface does not show it.";
+           share(a.findable, a.true_primitives) + ", thin " + share(a.thin_findable, a.thin_total) +
+           ": the others have their centre sunk in a neighbouring part, where the surface does not show it.";
   }
   return "";
 }
