@@ -369,7 +369,7 @@ public:
     if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
     else make_part_primitives();
     mark_residual_parts();
-    for(auto f : faces(m_tm)) put(face_part_map, f, m_parts[std::size_t(get(m_fim, f))]);
+    internal::put_face_values(m_tm, m_fim, m_parts, face_part_map);
     return m_part_to_primitive.size();
   }
 
@@ -456,8 +456,7 @@ public:
       throw std::logic_error("Part_decomposer::parts_at_level() needs the hierarchy");
     internal::check_parameter(k >= 1, "number_of_parts", "at least 1");
     k = (std::min)(k, m_hierarchy.number_of_leaves());
-    const std::vector<std::size_t> labels = m_hierarchy.labels(k);
-    for(auto f : faces(m_tm)) put(face_part_map, f, labels[std::size_t(get(m_fim, f))]);
+    internal::put_face_values(m_tm, m_fim, m_hierarchy.labels(k), face_part_map);
     for(std::size_t n : m_hierarchy.level(k)) *primitives++ = m_hierarchy.nodes[n].primitive;
     return k;
   }
@@ -1066,8 +1065,7 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   }
   if(K == assigned && !hp.has_number_of_parts)
   {
-    const std::vector<std::size_t>& parts = decomposer.parts();
-    for(auto f : faces(tm)) put(face_part_map, f, parts[std::size_t(get(decomposer.face_index_map(), f))]);
+    internal::put_face_values(tm, decomposer.face_index_map(), decomposer.parts(), face_part_map);
     for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
   }
   else

@@ -516,7 +516,7 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
                                           : internal::Face_adjacency();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
       tm, fim, vpm, std::move(patch), claimed_labels, normalization, p, adj, part);
-  for(auto f : faces(tm)) put(face_part_map, f, part[std::size_t(get(fim, f))]);
+  internal::put_face_values(tm, fim, part, face_part_map);
   return primitives;
 }
 

@@ -138,7 +138,7 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, FacePartMap face_part
   for(auto f : faces(tm)) part[std::size_t(get(fim, f))] = std::size_t(get(face_part_map, f));
   const std::size_t K = internal::merge_thin_sheets_on_faces<ConcurrencyTag>(tm, vpm, fim, adj, tsdf.values,
                                                                              fitting, part, part_to_primitive);
-  for(auto f : faces(tm)) put(face_part_map, f, part[std::size_t(get(fim, f))]);
+  internal::put_face_values(tm, fim, part, face_part_map);
   return K;
 }
 

@@ -164,6 +164,15 @@ inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Writes `values` (indexed by `fim`) to a caller's face property map: the one conversion from the
+// stages' face-indexed vectors back to the caller's map.
+template <typename FaceListGraph, typename FaceIndexMap, typename FaceMap>
+void put_face_values(const FaceListGraph& g, const FaceIndexMap& fim, const std::vector<std::size_t>& values,
+                     FaceMap face_map)
+{
+  for(auto f : faces(g)) put(face_map, f, values[std::size_t(get(fim, f))]);
+}
+
 // The indices i in [0, n) with keep(i), grouped by key(i) in [0, number_of_keys) and increasing
 // inside a group (a counting sort): group g is order[start[g] .. start[g + 1]). Sums over a group
 // then run in a fixed order whatever the number of threads.
