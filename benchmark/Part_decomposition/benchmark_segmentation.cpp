@@ -372,6 +372,8 @@ std::vector<Variant> all_variants()
   field_only->prior_resolution_cap = 64;
   // the parts of the assignment, without the hierarchy's merges below maximum_merge_cost
   add("no_cost_merge")->maximum_merge_cost = 0.;
+  // the threshold of the hierarchy's merges, in thousandths of the bounding box volume
+  for(int t : {1, 2, 5, 8, 12}) add("merge_cost_" + std::to_string(t))->maximum_merge_cost = t / 1000.;
   Variant* r128_no_cost = add("r128_fit32_prior64_no_cost_merge");
   r128_no_cost->voxel_resolutions = {32, 64, 128};
   r128_no_cost->fitting_resolution_cap = 32;
