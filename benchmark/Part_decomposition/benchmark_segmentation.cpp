@@ -293,6 +293,14 @@ void make_paper_literal(Variant& v)
   v.patch_split_size = 1.;
 }
 
+// The 128 grid for the distance field, the zones and the claims only: fits at 32, score at 32 and 64.
+void make_fine_field_only(Variant& v)
+{
+  v.voxel_resolutions = {32, 64, 128};
+  v.fitting_resolution_cap = 32;
+  v.prior_resolution_cap = 64;
+}
+
 std::vector<Variant> all_variants()
 {
   std::vector<Variant> v;
@@ -366,18 +374,13 @@ std::vector<Variant> all_variants()
   lengths->boundary_smoothness *= 2.;
   lengths->residual_tolerance *= 2.;
   // r128_fit32 with the topology score at 32 and 64 only: the 128 grid refines the field, not the prior
-  Variant* field_only = add("r128_fit32_prior64");
-  field_only->voxel_resolutions = {32, 64, 128};
-  field_only->fitting_resolution_cap = 32;
-  field_only->prior_resolution_cap = 64;
+  make_fine_field_only(*add("r128_fit32_prior64"));
   // the parts of the assignment, without the hierarchy's merges below maximum_merge_cost
   add("no_cost_merge")->maximum_merge_cost = 0.;
   // the threshold of the hierarchy's merges, in thousandths of the bounding box volume
   for(int t : {1, 2, 5, 8, 12}) add("merge_cost_" + std::to_string(t))->maximum_merge_cost = t / 1000.;
   Variant* r128_no_cost = add("r128_fit32_prior64_no_cost_merge");
-  r128_no_cost->voxel_resolutions = {32, 64, 128};
-  r128_no_cost->fitting_resolution_cap = 32;
-  r128_no_cost->prior_resolution_cap = 64;
+  make_fine_field_only(*r128_no_cost);
   r128_no_cost->maximum_merge_cost = 0.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
