@@ -159,6 +159,7 @@ const std::map<std::string, Keyword>& keywords()
     {"number_of_parts", field(&Parameters::number_of_parts, "None or a positive int")},
     {"keep_residual_patches", field(&Parameters::keep_residual_patches, "a bool")},
     {"residual_tolerance", field(&Parameters::residual_tolerance, "a float")},
+    {"thin_part_resolution", field(&Parameters::thin_part_resolution, "an int")},
     {"threads", field(&Parameters::threads, "None or a positive int")},
     {"verbose", field(&Parameters::verbose, "a bool")}};
   return table;
@@ -258,6 +259,8 @@ py::dict timings_dict(const Result& r)
   d["fitting_zones"] = r.timings.fitting_zones;
   d["over_segmentation"] = r.timings.over_segmentation;
   d["assignment"] = r.timings.assignment;
+  d["hierarchy"] = r.timings.hierarchy;
+  d["thin_parts"] = r.timings.thin_parts;
   d["total"] = r.timings.total;
   d["overlapping"] = r.timings.overlapping;
   return d;

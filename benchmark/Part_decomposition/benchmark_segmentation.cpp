@@ -375,6 +375,8 @@ std::vector<Variant> all_variants()
   lengths->residual_tolerance *= 2.;
   // r128_fit32 with the topology score at 32 and 64 only: the 128 grid refines the field, not the prior
   make_fine_field_only(*add("r128_fit32_prior64"));
+  // the thin parts of that finer pass on the parts of the defaults
+  add("thin_parts_128")->thin_part_resolution = 128;
   // the parts of the assignment, without the hierarchy's merges below maximum_merge_cost
   add("no_cost_merge")->maximum_merge_cost = 0.;
   // the threshold of the hierarchy's merges, in thousandths of the bounding box volume

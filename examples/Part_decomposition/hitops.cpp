@@ -124,7 +124,8 @@ const char* const usage_text =
   "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
   "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
   "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n"
-  "  --max-merge-cost C       the parts go on merging in the hierarchy while a merge costs less (0.003; 0: none)\n";
+  "  --max-merge-cost C       the parts go on merging in the hierarchy while a merge costs less (0.003; 0: none)\n"
+  "  --thin-part-resolution R a finer pass at R (128 or 256) whose thin parts replace the default ones (0: none)\n";
 
 double to_number(const std::string& option, const std::string& text)
 {
@@ -235,6 +236,7 @@ Options parse(int argc, char** argv)
     else if(a == "--crease-angle") o.decomposition.crease_angle = to_number(a, value());
     else if(a == "--min-part-area") o.decomposition.minimum_part_area = to_number(a, value());
     else if(a == "--max-merge-cost") o.decomposition.maximum_merge_cost = to_number(a, value());
+    else if(a == "--thin-part-resolution") o.decomposition.thin_part_resolution = int(to_count(a, value()));
     else if(a == "--no-density") o.decomposition.use_density = false;
     else if(a == "--prior-cap") o.decomposition.prior_resolution_cap = int(to_count(a, value()));
     else if(a == "--fitting-resolution-cap") o.decomposition.fitting_resolution_cap = int(to_count(a, value()));
@@ -437,7 +439,8 @@ void print_timings(const std::string& name, const Mesh& mesh, const Result& r, d
   std::cerr << std::fixed << std::setprecision(3) << name << ": " << num_faces(mesh) << " faces, "
             << r.parts << " parts; seconds: read " << read_seconds << ", prior " << t.prior << ", tsdf "
             << t.tsdf << ", fitting " << t.fitting << ", over-segmentation " << t.over_segmentation
-            << ", assignment " << t.assignment << ", hierarchy " << t.hierarchy << ", total " << t.total << std::endl;
+            << ", assignment " << t.assignment << ", hierarchy " << t.hierarchy << ", thin parts " << t.thin_parts
+            << ", total " << t.total << std::endl;
 }
 
 int single(const Options& o)

@@ -62,7 +62,8 @@ def test_every_named_parameter_is_a_keyword_with_its_default():
         "use_seed_exclusion", "maximum_solver_evaluations", "maximum_rejections_in_a_row",
         "dihedral_percentile", "smoothing_iterations", "minimum_patch_size", "patch_split_size",
         "vote_temperature", "boundary_smoothness", "merge_primitives", "minimum_merge_iou", "merge_thin_sheets", "use_pieces", "crease_angle", "minimum_part_area",
-        "maximum_merge_cost", "number_of_parts", "keep_residual_patches", "residual_tolerance", "threads", "verbose"}
+        "maximum_merge_cost", "number_of_parts", "keep_residual_patches", "residual_tolerance", "thin_part_resolution",
+        "threads", "verbose"}
     assert set(pd.DEFAULTS) == names
     d = pd.DEFAULTS
     assert d["voxel_resolutions"] == [16, 32, 64]

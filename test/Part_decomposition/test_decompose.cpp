@@ -850,3 +850,74 @@ TEST_CASE("residual patches are parts of their own, without a fitted primitive",
   CHECK(error_of([&] { d.assign_parts(CGAL::make_property_map(plain), PDP::residual_tolerance(-1.)); }) ==
         PD::Input_error::INVALID_PARAMETER);
 }
+
+TEST_CASE("thin_part_resolution: the finer pass's thin parts, with their superquadrics, on the default parts",
+          "[decompose][thin_parts][data]")
+{
+  for(const std::string name : {"animal", "table"})
+  {
+    CAPTURE(name);
+    Mesh m;
+    test_shapes::read_shipped_shape(name, m);
+    const std::size_t nf = num_faces(m);
+    std::vector<std::size_t> coarse(nf), finer(nf), part(nf), part_sequential(nf);
+    std::vector<PD::Superquadric<K> > finer_primitives, primitives;
+    PD::decompose(m, CGAL::make_property_map(coarse));
+    PD::decompose(m, CGAL::make_property_map(finer),
+                  PDP::combine(PDP::voxel_resolutions(std::vector<int>{32, 64, 128}), PDP::fitting_resolution_cap(32),
+                               PDP::prior_resolution_cap(64),
+                               PDP::primitive_output_iterator(std::back_inserter(finer_primitives))));
+    const std::size_t K_parts = PD::decompose(
+      m, CGAL::make_property_map(part),
+      PDP::combine(PDP::thin_part_resolution(128), PDP::primitive_output_iterator(std::back_inserter(primitives))));
+    REQUIRE(primitives.size() == K_parts);
+    CHECK(PD::decompose<CGAL::Sequential_tag>(m, CGAL::make_property_map(part_sequential),
+                                              PDP::thin_part_resolution(128)) == K_parts);
+    CHECK(part_sequential == part);
+
+    // a face of a thin part of the finer pass has that part and its superquadric; the others the
+    // default parts
+    const double scale = PD::compute_normalization(m).scale();
+    std::vector<std::size_t> thin_faces, thin_finer, other_faces, other_coarse;
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      const std::array<double, 3> a = finer_primitives[finer[i]].scales();
+      if((std::min)({a[0], a[1], a[2]}) * scale < 5. / 64.)
+      {
+        thin_faces.push_back(part[i]);
+        thin_finer.push_back(finer[i]);
+        CHECK(primitives[part[i]].center() == finer_primitives[finer[i]].center());
+      }
+      else
+      {
+        other_faces.push_back(part[i]);
+        other_coarse.push_back(coarse[i]);
+      }
+    }
+    CHECK((refines(thin_faces, thin_finer) && refines(thin_finer, thin_faces)));
+    CHECK((refines(other_faces, other_coarse) && refines(other_coarse, other_faces)));
+    // the animal's legs are thin at 128 (the test means something); the table's legs are already
+    // the default parts: its parts are the default ones, its true parts
+    if(name == "animal") CHECK(!thin_faces.empty());
+    if(name == "table") CHECK((refines(part, coarse) && refines(coarse, part)));
+  }
+}
+
+TEST_CASE("thin_part_resolution: out-of-range values and a hierarchy are refused", "[decompose][thin_parts]")
+{
+  const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 2);
+  std::vector<std::size_t> part(num_faces(m));
+  const auto map = CGAL::make_property_map(part);
+  for(int r : {-1, 3, 64, 96, 512})
+  {
+    CAPTURE(r);
+    CHECK(error_of([&] { PD::decompose(m, map, PDP::thin_part_resolution(r)); }) == PD::Input_error::INVALID_PARAMETER);
+  }
+  CHECK(error_of([&] { PD::decompose(m, map, PDP::combine(PDP::thin_part_resolution(128), PDP::number_of_parts(2))); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+  PD::Part_hierarchy<K> h;
+  CHECK(error_of([&] { PD::decompose(m, map, PDP::combine(PDP::thin_part_resolution(128), PDP::part_hierarchy(&h))); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+  CHECK(PD::decompose(m, map, PDP::combine(PDP::voxel_resolutions(std::vector<int>{8, 16, 32}),
+                                           PDP::thin_part_resolution(64))) >= 1);
+}

@@ -70,6 +70,7 @@ struct Decomposition_settings
   double maximum_merge_cost = PD::defaults::maximum_merge_cost;
   bool keep_residual_patches = PD::defaults::keep_residual_patches;
   double residual_tolerance = PD::defaults::residual_tolerance;
+  int thin_part_resolution = PD::defaults::thin_part_resolution;
   bool verbose = false;
 };
 
@@ -102,7 +103,8 @@ inline auto named_parameters(const Decomposition_settings& s)
     PDP::minimum_merge_iou(s.minimum_merge_iou), PDP::merge_thin_sheets(s.merge_thin_sheets),
     PDP::use_pieces(s.use_pieces), PDP::crease_angle(s.crease_angle), PDP::minimum_part_area(s.minimum_part_area),
     PDP::maximum_merge_cost(s.maximum_merge_cost),
-    PDP::keep_residual_patches(s.keep_residual_patches), PDP::residual_tolerance(s.residual_tolerance));
+    PDP::keep_residual_patches(s.keep_residual_patches), PDP::residual_tolerance(s.residual_tolerance),
+    PDP::thin_part_resolution(s.thin_part_resolution));
 }
 
 } // namespace Part_decomposition_tools

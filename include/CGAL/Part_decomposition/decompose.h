@@ -37,6 +37,8 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -58,6 +60,7 @@ struct Stage_timings
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
   double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
+  double thin_parts = 0.;        ///< the finer pass of `thin_part_resolution` and its thin parts (0 without it)
   double total = 0.;             ///< the whole call, input checks included
   /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
   /// overlap and their sum exceeds `total`.
@@ -647,6 +650,171 @@ private:
        m_has_parts = false;
 };
 
+namespace internal {
+
+// The parts of one decomposition: per face index its part, per part its superquadric.
+template <typename GeomTraits>
+struct Decomposition_pass
+{
+  std::vector<std::size_t> parts;
+  std::vector<Superquadric<GeomTraits> > primitives;
+  std::size_t number_of_parts = 0;
+  double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
+};
+
+// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposition_pass<GT>& out,
+                    Stage_timings& timings)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
+  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
+  Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
+
+  internal::check_stage_parameters(np);
+  timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
+  out.parts.assign(num_faces(tm), 0);
+  {
+    const auto t = std::chrono::steady_clock::now();
+    if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
+    timings.pieces = internal::seconds_since(t);
+  }
+  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
+  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
+  // distance field next to each other before it.
+  if(decomposer.needs_volumetric_stages(np))
+  internal::run_side_by_side<ConcurrencyTag>(
+    [&] {
+      internal::run_side_by_side<ConcurrencyTag>(
+        [&] {
+          const auto t = std::chrono::steady_clock::now();
+          decomposer.template compute_prior<ConcurrencyTag>(np);
+          timings.prior = internal::seconds_since(t);
+          // the zones need the prior only: they are computed while the distance field is
+          const auto tz = std::chrono::steady_clock::now();
+          decomposer.template compute_fitting_zones<ConcurrencyTag>(np);
+          timings.fitting_zones = internal::seconds_since(tz);
+        },
+        [&] {
+          const auto t = std::chrono::steady_clock::now();
+          decomposer.template compute_distance_field<ConcurrencyTag>(np);
+          timings.tsdf = internal::seconds_since(t);
+        });
+      const auto t = std::chrono::steady_clock::now();
+      decomposer.template fit_primitives<ConcurrencyTag>(np);
+      timings.fitting = timings.fitting_zones + internal::seconds_since(t);
+    },
+    [&] {
+      const auto t = std::chrono::steady_clock::now();
+      decomposer.template over_segment<ConcurrencyTag>(np);
+      timings.over_segmentation = internal::seconds_since(t);
+    });
+
+  // the assignment (with the thin-sheet merge unless merge_thin_sheets(false)), then the hierarchy
+  // when it is asked for or its cheap merges may go on, and the level of the hierarchy if it is
+  // not the assignment's
+  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
+  Part_hierarchy<GT>* hierarchy_out =
+    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
+  const auto t = std::chrono::steady_clock::now();
+  const std::size_t assigned = decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
+  timings.assignment = internal::seconds_since(t);
+  std::size_t K = assigned;
+  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
+  {
+    const auto th = std::chrono::steady_clock::now();
+    decomposer.build_hierarchy();
+    const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
+    K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
+    if(hierarchy_out != nullptr)
+    {
+      *hierarchy_out = decomposer.hierarchy();
+      hierarchy_out->default_number_of_parts = default_parts;
+    }
+    timings.hierarchy = internal::seconds_since(th);
+  }
+  out.primitives.clear();
+  if(K == assigned && !hp.has_number_of_parts)
+  {
+    out.parts = decomposer.parts();
+    out.primitives = decomposer.part_primitives();
+  }
+  else
+    K = decomposer.parts_at_level(K, boost::make_iterator_property_map(out.parts.begin(), decomposer.face_index_map()),
+                                  std::back_inserter(out.primitives));
+  out.number_of_parts = K;
+  out.scale = decomposer.normalization().scale();
+}
+
+
+// A part of the finer pass is thin if its superquadric's smallest semi-axis is below this length
+// of the normalized cube (5 voxels of the default 64^3 grid; tuned on half A of the development
+// shapes, see the user manual).
+constexpr double thin_part_semi_axis = 5. / 64.;
+
+// The thin parts of `finer` replace, face by face, the parts of `pass`, each with its superquadric:
+// the parts of `pass` keep their order (those left without faces are dropped), the thin parts
+// follow in the order of `finer`.
+template <typename GT>
+void carve_thin_parts(Decomposition_pass<GT>& pass, const Decomposition_pass<GT>& finer)
+{
+  const std::size_t K = pass.number_of_parts, nf = pass.parts.size();
+  std::vector<std::size_t> thin(finer.number_of_parts, 0); // 1 + rank among the thin parts, or 0
+  std::size_t number_of_thin = 0;
+  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
+  {
+    const std::array<double, 3> a = finer.primitives[k].scales();
+    if((std::min)({a[0], a[1], a[2]}) * finer.scale < thin_part_semi_axis) thin[k] = ++number_of_thin;
+  }
+  if(number_of_thin == 0) return;
+  std::vector<std::size_t> part(nf);
+  std::vector<std::uint8_t> used(K, 0);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    const std::size_t t = thin[finer.parts[i]];
+    part[i] = t > 0 ? K + t - 1 : pass.parts[i];
+    if(t == 0) used[pass.parts[i]] = 1;
+  }
+  std::vector<std::size_t> new_id(K + number_of_thin);
+  std::vector<Superquadric<GT> > primitives;
+  for(std::size_t k = 0; k < K; ++k)
+    if(used[k]) { new_id[k] = primitives.size(); primitives.push_back(pass.primitives[k]); }
+  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
+    if(thin[k] > 0) { new_id[K + thin[k] - 1] = primitives.size(); primitives.push_back(finer.primitives[k]); }
+  for(std::size_t i = 0; i < nf; ++i) pass.parts[i] = new_id[part[i]];
+  pass.primitives.swap(primitives);
+  pass.number_of_parts = pass.primitives.size();
+}
+
+// The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
+// the finest of `voxel_resolutions`, and not with `number_of_parts` nor `part_hierarchy`, whose
+// hierarchy is that of one pass.
+template <typename TriangleMesh, typename NamedParameters>
+int read_thin_part_resolution(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const int r = choose_parameter(get_parameter(np, internal_np::thin_part_resolution), defaults::thin_part_resolution);
+  if(r == 0) return 0;
+  check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * read_voxel_resolutions(np).back(),
+                  "thin_part_resolution", "0, or a power of two up to 256 at least twice the finest voxel resolution");
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  check_parameter(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::number_of_parts_t>::value &&
+                    choose_parameter(get_parameter(np, internal_np::part_hierarchy),
+                                     static_cast<Part_hierarchy<GT>*>(nullptr)) == nullptr,
+                  "thin_part_resolution", "0 when number_of_parts or a part_hierarchy is given");
+  return r;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgPartDecompositionRef
 decomposes the triangle mesh `tm` into parts with the Hi-TOPS method (paper Algorithm A.1) and
@@ -959,6 +1127,21 @@ are chained with `parameters::combine()`)
     \cgalParamType{`Part_hierarchy<GeomTraits>*`}
     \cgalParamDefault{`nullptr`}
   \cgalParamNEnd
+  \cgalParamNBegin{thin_part_resolution}
+    \cgalParamDescription{if not 0, the resolution \f$r_t\f$ of a second, finer pass: the whole
+                          decomposition runs again with `voxel_resolutions` \f$\{r_t/4, r_t/2, r_t\}\f$,
+                          `fitting_resolution_cap(`\f$r_t/4\f$`)` and `prior_resolution_cap(`\f$r_t/2\f$`)`,
+                          and each of its parts whose superquadric has a smallest semi-axis below
+                          5/64 of the normalized cube (5 voxels of the default \f$64^3\f$ grid) replaces
+                          the parts of the first pass on its faces, with its superquadric. The parts
+                          of the first pass keep theirs. Thin parts (wings, fins, legs, plates) that the
+                          default grid cannot resolve are separated; the bodies keep the parts of
+                          the default grid, which the finer grid tends to tile. Costs a second,
+                          finer decomposition (about three times the first one at 128)}
+    \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
+                   `voxel_resolutions`; not with `number_of_parts` nor `part_hierarchy`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
   \cgalParamNBegin{stage_timings}
     \cgalParamDescription{receives the wall-clock time of each stage}
     \cgalParamType{`Stage_timings*`}
@@ -988,94 +1171,34 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
   const auto t0 = std::chrono::steady_clock::now();
-
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
-  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
-  Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
-
-  internal::check_stage_parameters(np);
+  const int fine = internal::read_thin_part_resolution<TriangleMesh>(np);
   Stage_timings timings;
-  timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
+  internal::Decomposition_pass<GT> pass;
+  internal::decompose_once<ConcurrencyTag>(tm, np, pass, timings);
+  if(fine > 0)
   {
     const auto t = std::chrono::steady_clock::now();
-    if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
-    timings.pieces = internal::seconds_since(t);
+    internal::Decomposition_pass<GT> finer;
+    Stage_timings finer_timings;
+    internal::decompose_once<ConcurrencyTag>(
+      tm, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
+                              parameters::fitting_resolution_cap(fine / 4), parameters::prior_resolution_cap(fine / 2)),
+      finer, finer_timings);
+    internal::carve_thin_parts(pass, finer);
+    timings.thin_parts = internal::seconds_since(t);
   }
-  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
-  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
-  // distance field next to each other before it.
-  if(decomposer.needs_volumetric_stages(np))
-  internal::run_side_by_side<ConcurrencyTag>(
-    [&] {
-      internal::run_side_by_side<ConcurrencyTag>(
-        [&] {
-          const auto t = std::chrono::steady_clock::now();
-          decomposer.template compute_prior<ConcurrencyTag>(np);
-          timings.prior = internal::seconds_since(t);
-          // the zones need the prior only: they are computed while the distance field is
-          const auto tz = std::chrono::steady_clock::now();
-          decomposer.template compute_fitting_zones<ConcurrencyTag>(np);
-          timings.fitting_zones = internal::seconds_since(tz);
-        },
-        [&] {
-          const auto t = std::chrono::steady_clock::now();
-          decomposer.template compute_distance_field<ConcurrencyTag>(np);
-          timings.tsdf = internal::seconds_since(t);
-        });
-      const auto t = std::chrono::steady_clock::now();
-      decomposer.template fit_primitives<ConcurrencyTag>(np);
-      timings.fitting = timings.fitting_zones + internal::seconds_since(t);
-    },
-    [&] {
-      const auto t = std::chrono::steady_clock::now();
-      decomposer.template over_segment<ConcurrencyTag>(np);
-      timings.over_segmentation = internal::seconds_since(t);
-    });
-
-  // the assignment (with the thin-sheet merge unless merge_thin_sheets(false)), then the hierarchy
-  // when it is asked for or its cheap merges may go on, and the level of the hierarchy if it is
-  // not the assignment's
-  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
-  auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator),
-                              CGAL::Emptyset_iterator());
-  Part_hierarchy<GT>* hierarchy_out =
-    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  const auto t = std::chrono::steady_clock::now();
-  const std::size_t assigned = decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
-  timings.assignment = internal::seconds_since(t);
-  std::size_t K = assigned;
-  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
-  {
-    const auto th = std::chrono::steady_clock::now();
-    decomposer.build_hierarchy();
-    const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
-    K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
-    if(hierarchy_out != nullptr)
-    {
-      *hierarchy_out = decomposer.hierarchy();
-      hierarchy_out->default_number_of_parts = default_parts;
-    }
-    timings.hierarchy = internal::seconds_since(th);
-  }
-  if(K == assigned && !hp.has_number_of_parts)
-  {
-    internal::put_face_values(tm, decomposer.face_index_map(), decomposer.parts(), face_part_map);
-    for(const Superquadric<GT>& sq : decomposer.part_primitives()) *out++ = sq;
-  }
-  else
-    K = decomposer.parts_at_level(K, face_part_map, out);
-
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
+  internal::put_face_values(tm, fim, pass.parts, face_part_map);
+  auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
+  for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;
   timings.total = internal::seconds_since(t0);
   if(Stage_timings* st = choose_parameter(get_parameter(np, internal_np::stage_timings),
                                           static_cast<Stage_timings*>(nullptr)))
     *st = timings;
-  return K;
+  return pass.number_of_parts;
 }
 
 } // namespace Part_decomposition

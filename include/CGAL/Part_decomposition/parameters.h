@@ -80,6 +80,7 @@ namespace Part_decomposition {
   X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
   X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
   X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
+  X(thin_part_resolution_t, thin_part_resolution, thin_part_resolution)              \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -234,6 +235,8 @@ constexpr double crease_angle = 60.;
 constexpr double minimum_part_area = 0.005;
 /// the merge cost of the part hierarchy below which the default parts go on merging
 constexpr double maximum_merge_cost = 0.003;
+/// the finest resolution of the finer pass whose thin parts replace those of the default grid (0: none)
+constexpr int thin_part_resolution = 0;
 /// whether Freeze-dominant patches that no primitive explains are kept as residual parts
 constexpr bool keep_residual_patches = false;
 /// the distance, in voxels of the finest grid, from which a patch is not explained by its primitive
@@ -312,6 +315,7 @@ package's parameters are:
 | `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()` |
 | `maximum_merge_cost()` | `double` | 0.003 | `decompose()` |
 | `part_hierarchy()` | `Part_hierarchy<GeomTraits>*` | `nullptr` | `decompose()` |
+| `thin_part_resolution()` | `int` | 0 (no finer pass) | `decompose()` |
 | `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
