@@ -662,19 +662,18 @@ struct Decomposition_pass
   double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
 };
 
-// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposition_pass<GT>& out,
+// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`;
+// `out.parts` is indexed by `fim`, the face index map of both passes and of the final write.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename FIM, typename NamedParameters>
+void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameters& np, Decomposition_pass<GT>& out,
                     Stage_timings& timings)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
-  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
   Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
 
@@ -1137,7 +1136,7 @@ are chained with `parameters::combine()`)
                           of the first pass keep theirs. Thin parts (wings, fins, legs, plates) that the
                           default grid cannot resolve are separated; the bodies keep the parts of
                           the default grid, which the finer grid tends to tile. Costs a second,
-                          finer decomposition (about three times the first one at 128)}
+                          finer decomposition (see the user manual for its time and memory)}
     \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
                    `voxel_resolutions`; not with `number_of_parts` nor `part_hierarchy`}
     \cgalParamDefault{`0`}
@@ -1175,22 +1174,22 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
   const auto t0 = std::chrono::steady_clock::now();
   const int fine = internal::read_thin_part_resolution<TriangleMesh>(np);
+  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   Stage_timings timings;
   internal::Decomposition_pass<GT> pass;
-  internal::decompose_once<ConcurrencyTag>(tm, np, pass, timings);
+  internal::decompose_once<ConcurrencyTag>(tm, fim, np, pass, timings);
   if(fine > 0)
   {
     const auto t = std::chrono::steady_clock::now();
     internal::Decomposition_pass<GT> finer;
     Stage_timings finer_timings;
     internal::decompose_once<ConcurrencyTag>(
-      tm, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
+      tm, fim, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
                               parameters::fitting_resolution_cap(fine / 4), parameters::prior_resolution_cap(fine / 2)),
       finer, finer_timings);
     internal::carve_thin_parts(pass, finer);
     timings.thin_parts = internal::seconds_since(t);
   }
-  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;
