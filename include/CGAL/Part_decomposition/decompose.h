@@ -680,11 +680,10 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
   internal::check_stage_parameters(np);
   timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
   out.parts.assign(num_faces(tm), 0);
-  {
-    const auto t = std::chrono::steady_clock::now();
+  // the stage times start at 0: each is added once
+  internal::add_seconds(timings.pieces, [&] {
     if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
-    timings.pieces = internal::seconds_since(t);
-  }
+  });
   // The fitting's own loops are short (one primitive at a time), so its sequential part is the
   // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
   // distance field next to each other before it.
@@ -693,27 +692,19 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
     [&] {
       internal::run_side_by_side<ConcurrencyTag>(
         [&] {
-          const auto t = std::chrono::steady_clock::now();
-          decomposer.template compute_prior<ConcurrencyTag>(np);
-          timings.prior = internal::seconds_since(t);
+          internal::add_seconds(timings.prior, [&] { decomposer.template compute_prior<ConcurrencyTag>(np); });
           // the zones need the prior only: they are computed while the distance field is
-          const auto tz = std::chrono::steady_clock::now();
-          decomposer.template compute_fitting_zones<ConcurrencyTag>(np);
-          timings.fitting_zones = internal::seconds_since(tz);
+          internal::add_seconds(timings.fitting_zones,
+                                [&] { decomposer.template compute_fitting_zones<ConcurrencyTag>(np); });
         },
         [&] {
-          const auto t = std::chrono::steady_clock::now();
-          decomposer.template compute_distance_field<ConcurrencyTag>(np);
-          timings.tsdf = internal::seconds_since(t);
+          internal::add_seconds(timings.tsdf, [&] { decomposer.template compute_distance_field<ConcurrencyTag>(np); });
         });
-      const auto t = std::chrono::steady_clock::now();
-      decomposer.template fit_primitives<ConcurrencyTag>(np);
-      timings.fitting = timings.fitting_zones + internal::seconds_since(t);
+      internal::add_seconds(timings.fitting, [&] { decomposer.template fit_primitives<ConcurrencyTag>(np); });
+      timings.fitting += timings.fitting_zones;
     },
     [&] {
-      const auto t = std::chrono::steady_clock::now();
-      decomposer.template over_segment<ConcurrencyTag>(np);
-      timings.over_segmentation = internal::seconds_since(t);
+      internal::add_seconds(timings.over_segmentation, [&] { decomposer.template over_segment<ConcurrencyTag>(np); });
     });
 
   // the assignment (with the thin-sheet merge unless merge_thin_sheets(false)), then the hierarchy
@@ -722,23 +713,21 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
   const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
   Part_hierarchy<GT>* hierarchy_out =
     choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  const auto t = std::chrono::steady_clock::now();
-  const std::size_t assigned = decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
-  timings.assignment = internal::seconds_since(t);
+  const std::size_t assigned = internal::add_seconds(timings.assignment, [&] {
+    return decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
+  });
   std::size_t K = assigned;
   if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
-  {
-    const auto th = std::chrono::steady_clock::now();
-    decomposer.build_hierarchy();
-    const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
-    K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
-    if(hierarchy_out != nullptr)
-    {
-      *hierarchy_out = decomposer.hierarchy();
-      hierarchy_out->default_number_of_parts = default_parts;
-    }
-    timings.hierarchy = internal::seconds_since(th);
-  }
+    internal::add_seconds(timings.hierarchy, [&] {
+      decomposer.build_hierarchy();
+      const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
+      K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
+      if(hierarchy_out != nullptr)
+      {
+        *hierarchy_out = decomposer.hierarchy();
+        hierarchy_out->default_number_of_parts = default_parts;
+      }
+    });
   out.primitives.clear();
   if(K == assigned && !hp.has_number_of_parts)
   {
@@ -1179,17 +1168,15 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   internal::Decomposition_pass<GT> pass;
   internal::decompose_once<ConcurrencyTag>(tm, fim, np, pass, timings);
   if(fine > 0)
-  {
-    const auto t = std::chrono::steady_clock::now();
-    internal::Decomposition_pass<GT> finer;
-    Stage_timings finer_timings;
-    internal::decompose_once<ConcurrencyTag>(
-      tm, fim, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
-                              parameters::fitting_resolution_cap(fine / 4), parameters::prior_resolution_cap(fine / 2)),
-      finer, finer_timings);
-    internal::carve_thin_parts(pass, finer);
-    timings.thin_parts = internal::seconds_since(t);
-  }
+    internal::add_seconds(timings.thin_parts, [&] {
+      internal::Decomposition_pass<GT> finer;
+      Stage_timings finer_timings;
+      internal::decompose_once<ConcurrencyTag>(
+        tm, fim, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
+                                parameters::fitting_resolution_cap(fine / 4), parameters::prior_resolution_cap(fine / 2)),
+        finer, finer_timings);
+      internal::carve_thin_parts(pass, finer);
+    });
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;

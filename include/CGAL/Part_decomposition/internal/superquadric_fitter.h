@@ -95,19 +95,12 @@ public:
   template <typename F>
   decltype(auto) time(Step step, const F& f)
   {
-    const Timed timed{m_seconds[step], std::chrono::steady_clock::now()};
-    return f();
+    return add_seconds(m_seconds[step], f);
   }
 
   double milliseconds(Step step) const { return 1e3 * m_seconds[step]; }
 
 private:
-  struct Timed
-  {
-    double& total;
-    std::chrono::steady_clock::time_point start;
-    ~Timed() { total += seconds_since(start); }
-  };
   std::array<double, NUMBER_OF_STEPS> m_seconds{};
 };
 

@@ -164,6 +164,20 @@ inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Runs f() and adds its wall-clock seconds to `total`, also when f() throws; returns what f() returns.
+template <typename F>
+decltype(auto) add_seconds(double& total, const F& f)
+{
+  struct Timed
+  {
+    double& total;
+    std::chrono::steady_clock::time_point start;
+    ~Timed() { total += seconds_since(start); }
+  };
+  const Timed timed{total, std::chrono::steady_clock::now()};
+  return f();
+}
+
 // Writes `values` (indexed by `fim`) to a caller's face property map: the one conversion from the
 // stages' face-indexed vectors back to the caller's map.
 template <typename FaceListGraph, typename FaceIndexMap, typename FaceMap>
