@@ -41,6 +41,7 @@ struct Parameters : Part_decomposition_tools::Decomposition_settings
 {
   std::optional<std::size_t> number_of_parts; // none: the default granularity
   int threads = 0;                            // 0: all cores
+  double weld_tolerance = PD::defaults::weld_tolerance; // of the reader
 };
 
 // Enumerations as strings: the enumerator in lower case, or the short name of hitops.
@@ -161,6 +162,7 @@ const std::map<std::string, Keyword>& keywords()
     {"residual_tolerance", field(&Parameters::residual_tolerance, "a float")},
     {"thin_part_resolution", field(&Parameters::thin_part_resolution, "an int")},
     {"threads", field(&Parameters::threads, "None or a positive int")},
+    {"weld_tolerance", field(&Parameters::weld_tolerance, "a float")},
     {"verbose", field(&Parameters::verbose, "a bool")}};
   return table;
 }
@@ -323,7 +325,8 @@ Result decompose_arrays(py::handle vertices, py::handle faces, const py::kwargs&
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
   // the reader's own construction: welded, oriented, one label per row of `faces`
-  const PD::IO::Mesh_file_info info = PD::IO::triangle_mesh_from_polygon_soup(points, triangles, mesh);
+  const PD::IO::Mesh_file_info info =
+    PD::IO::triangle_mesh_from_polygon_soup(points, triangles, mesh, PD::parameters::weld_tolerance(p.weld_tolerance));
   r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
   return r;
@@ -337,7 +340,7 @@ Result decompose_path(py::object path_like, const py::kwargs& kwargs)
   py::gil_scoped_release release;
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
-  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, mesh);
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(p.weld_tolerance));
   r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
   return r;
@@ -394,11 +397,13 @@ PYBIND11_MODULE(part_decomposition, m)
   static const std::string decompose_doc = std::string("decompose(vertices, faces, **parameters) -> Decomposition\n\n"
          "Decomposes the triangle mesh given by vertices, an (n, 3) float array, and faces, an (m, 3)\n"
          "integer array of vertex indices. The mesh is built as the package's reader builds it from a\n"
-         "file (equal vertices welded, the soup oriented, closed pieces outward); labels has one part\n"
+         "file (equal vertices merged, border vertices within weld_tolerance of the bounding box\n"
+         "diagonal welded, the soup oriented, closed pieces outward); labels has one part\n"
          "per row of faces. Runs with the GIL released, on `threads` threads (default: all cores;\n"
          "the labels do not depend on it). Raises ValueError (InvalidInput for the library's checks)\n"
          "for a bad array or a parameter out of its range, TypeError for an unknown keyword.\n\n"
-         "Keywords (the named parameters of CGAL::Part_decomposition::decompose()), with defaults:\n") +
+         "Keywords (the named parameters of CGAL::Part_decomposition::decompose(), and of the reader\n"
+         "for weld_tolerance), with defaults:\n") +
     keyword_documentation();
   m.def("decompose", &decompose_arrays, py::arg("vertices"), py::arg("faces"), decompose_doc.c_str());
   m.def("decompose_file", &decompose_path, py::arg("path"),

@@ -62,6 +62,7 @@ struct Options
   std::size_t shard = 0, shards = 1;
   int threads = 0;
   bool timings = false;
+  double weld_tolerance = PD::defaults::weld_tolerance; // the named parameter of the reader
   Part_decomposition_tools::Decomposition_settings decomposition; // the named parameters of decompose()
 };
 
@@ -93,6 +94,8 @@ const char* const usage_text =
   "                           DIR/summary[.I-of-N].tsv; meshes whose outputs exist are skipped\n"
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
   "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
+  "  --weld-tolerance 5e-6    border vertices closer than this fraction of the bounding box diagonal are\n"
+  "                           welded when the mesh is read (seams left open by round-off); 0: none\n"
   "  --resolutions 16,32,64   voxel resolutions of the prior, coarse to fine\n"
   "  --prior-cap R            finest resolution of the topology score (0: all); finer ones only refine the grid\n"
   "  --samples-per-face 36    barycentric samples per face (a perfect square)\n"
@@ -177,6 +180,7 @@ Options parse(int argc, char** argv)
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
     else if(a == "--verbose") o.decomposition.verbose = true;
+    else if(a == "--weld-tolerance") o.weld_tolerance = to_number(a, value());
     else if(a == "--batch") o.batch = value();
     else if(a == "--out") o.out_dir = value();
     else if(a == "--shard")
@@ -443,11 +447,25 @@ void print_timings(const std::string& name, const Mesh& mesh, const Result& r, d
             << ", total " << t.total << std::endl;
 }
 
+// What the reader did to the file, for --verbose.
+void print_reading(const PD::IO::Mesh_file_info& info)
+{
+  std::cerr << "read " << info.number_of_input_faces << " faces and " << info.number_of_input_vertices
+            << " vertices: " << info.number_of_merged_vertices << " vertices merged (equal), "
+            << info.number_of_welded_vertices << " welded (within the weld tolerance), "
+            << info.number_of_duplicated_vertices << " duplicated (non-manifold), "
+            << info.number_of_triangulated_faces << " polygons triangulated, " << info.dropped_faces.size()
+            << " faces without area left out, " << info.number_of_reversed_components
+            << " closed components turned outward\n";
+}
+
 int single(const Options& o)
 {
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
-  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(o.input, mesh);
+  const PD::IO::Mesh_file_info info =
+    PD::IO::read_triangle_mesh(o.input, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+  if(o.decomposition.verbose) print_reading(info);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Result r = run(mesh, o);
 
@@ -522,7 +540,9 @@ int batch(const Options& o)
     try
     {
       Mesh mesh;
-      const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(paths[i], mesh);
+      const PD::IO::Mesh_file_info info =
+        PD::IO::read_triangle_mesh(paths[i], mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+      if(o.decomposition.verbose) print_reading(info);
       const Result r = run(mesh, o);
       Atomic_outputs outputs;
       write_labels(outputs.open(seg), info, r);

@@ -63,7 +63,7 @@ def test_every_named_parameter_is_a_keyword_with_its_default():
         "dihedral_percentile", "smoothing_iterations", "minimum_patch_size", "patch_split_size",
         "vote_temperature", "boundary_smoothness", "merge_primitives", "minimum_merge_iou", "merge_thin_sheets", "use_pieces", "crease_angle", "minimum_part_area",
         "maximum_merge_cost", "number_of_parts", "keep_residual_patches", "residual_tolerance", "thin_part_resolution",
-        "threads", "verbose"}
+        "threads", "verbose", "weld_tolerance"}
     assert set(pd.DEFAULTS) == names
     d = pd.DEFAULTS
     assert d["voxel_resolutions"] == [16, 32, 64]
@@ -150,6 +150,8 @@ def test_parameters_reach_the_library(dumbbell):
     coarse = pd.decompose(vertices, faces, voxel_resolutions=[16, 32], number_of_points_per_face=9,
                           minimum_part_area=0.4)
     assert coarse.number_of_parts < one.number_of_parts
+    with pytest.raises(pd.InvalidInput, match="weld_tolerance"):
+        pd.decompose(vertices, faces, weld_tolerance=0.5)
     for method in ("inside", "winding_number", "flood_fill", "automatic"):
         r = pd.decompose(vertices, faces, tsdf_sign_method=method, **FAST)
         assert r.labels.shape == (len(faces),)

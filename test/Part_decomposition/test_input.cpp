@@ -6,6 +6,7 @@
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include "test_shapes.h"
 
@@ -18,6 +19,8 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -456,4 +459,124 @@ TEST_CASE("glTF: broken and hostile files are refused with UNREADABLE_FILE", "[i
   CHECK(read_error(write_temp("base64.gltf", "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":3,\"uri\":\"data:,abc\"}]}")) ==
         PD::Input_error::UNREADABLE_FILE);
   CHECK(read_error(write_temp("nothing.gltf", "{\"asset\":{\"version\":\"2.0\"}}")) == PD::Input_error::NO_FACES);
+}
+
+TEST_CASE("the reader welds a seam left open by float32 round-off, in glTF and OFF", "[io][gltf][weld]")
+{
+  // A sphere cut by the plane x = 0.1 into two meshes; the second stored in the frame of its node,
+  // (x, y, z) -> 3 R_z(0.7) (x, y, z) + (10, -4, 7), in float32, as exporters write glTF.
+  const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  test_shapes::mesh_soup(sphere, points, triangles);
+  const float a = float(3. * std::cos(0.7)), b = float(3. * std::sin(0.7)), s = 3.f;
+  const std::array<float, 3> t = {{10.f, -4.f, 7.f}};
+  std::vector<Float3> world_points, local_points;
+  std::vector<Tri> world_tris, local_tris;
+  std::vector<std::uint32_t> world_id(points.size(), ~0u), local_id(points.size(), ~0u);
+  for(const auto& tri : triangles)
+  {
+    double x = 0.;
+    for(std::size_t v : tri) x += points[v][0] / 3.;
+    const bool local = x >= 0.1;
+    Tri out;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t v = tri[std::size_t(k)];
+      std::vector<std::uint32_t>& id = local ? local_id : world_id;
+      if(id[v] == ~0u)
+      {
+        const std::array<double, 3>& p = points[v];
+        if(local)
+        {
+          // the inverse of the node transform, in double, stored as float
+          const double qx = p[0] - t[0], qy = p[1] - t[1], qz = p[2] - t[2], d = double(a) * a + double(b) * b;
+          local_points.push_back({{float((a * qx + b * qy) / d), float((-b * qx + a * qy) / d), float(qz / s)}});
+        }
+        else
+          world_points.push_back({{float(p[0]), float(p[1]), float(p[2])}});
+        id[v] = std::uint32_t((local ? local_points : world_points).size() - 1);
+      }
+      out[std::size_t(k)] = id[v];
+    }
+    (local ? local_tris : world_tris).push_back(out);
+  }
+  Gltf_builder g;
+  const std::size_t wp = g.positions(world_points), wi = g.indices<std::uint32_t>(world_tris);
+  const std::size_t lp = g.positions(local_points), li = g.indices<std::uint32_t>(local_tris);
+  g.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", wp}}}, {"indices", wi}}}}});
+  g.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", lp}}}, {"indices", li}}}}});
+  g.j["nodes"].push_back({{"mesh", 0}});
+  g.j["nodes"].push_back({{"mesh", 1}, {"matrix", {a, b, 0.f, 0.f, -b, a, 0.f, 0.f, 0.f, 0.f, s, 0.f, t[0], t[1], t[2], 1.f}}});
+  g.j["scenes"] = {{{"nodes", {0, 1}}}};
+  g.j["scene"] = 0;
+  // the same two meshes in one OFF file, the second brought to the world frame in double
+  std::ostringstream off;
+  off.precision(17);
+  off << "OFF\n" << world_points.size() + local_points.size() << ' ' << world_tris.size() + local_tris.size() << " 0\n";
+  for(const Float3& p : world_points) off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for(const Float3& p : local_points)
+    off << double(a) * p[0] - double(b) * p[1] + t[0] << ' ' << double(b) * p[0] + double(a) * p[1] + t[1] << ' '
+        << double(s) * p[2] + t[2] << '\n';
+  for(const Tri& tr : world_tris) off << "3 " << tr[0] << ' ' << tr[1] << ' ' << tr[2] << '\n';
+  for(const Tri& tr : local_tris)
+    off << "3 " << tr[0] + world_points.size() << ' ' << tr[1] + world_points.size() << ' ' << tr[2] + world_points.size() << '\n';
+
+  std::size_t seam = 0;
+  for(std::size_t v = 0; v < points.size(); ++v) seam += (world_id[v] != ~0u && local_id[v] != ~0u) ? 1 : 0;
+  REQUIRE(seam > 10);
+  for(const std::string& path : {write_temp("split.glb", g.glb()), write_temp("split.off", off.str())})
+  {
+    INFO(path);
+    Mesh welded, apart;
+    const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, welded);
+    const PD::IO::Mesh_file_info info_apart = PD::IO::read_triangle_mesh(path, apart, PD::parameters::weld_tolerance(0.));
+    // every seam vertex is welded: one closed surface, as the unsplit sphere
+    CHECK(info.number_of_welded_vertices + info.number_of_merged_vertices == seam);
+    CHECK(info_apart.number_of_welded_vertices == 0);
+    CHECK(CGAL::is_closed(welded));
+    CHECK(!CGAL::is_closed(apart));
+    CHECK(num_vertices(welded) == num_vertices(sphere));
+    CHECK(num_faces(welded) == num_faces(sphere));
+    CHECK(CGAL::Polygon_mesh_processing::volume(welded) == Approx(CGAL::Polygon_mesh_processing::volume(sphere)).epsilon(1e-5));
+  }
+  auto refused = [&](double tolerance) {
+    Mesh m;
+    try { PD::IO::read_triangle_mesh(write_temp("split.off", off.str()), m, PD::parameters::weld_tolerance(tolerance)); }
+    catch(const PD::Invalid_input& e) { return e.error() == PD::Input_error::INVALID_PARAMETER; }
+    return false;
+  };
+  CHECK(refused(-1.));
+  CHECK(refused(0.5));
+  CHECK(refused(std::numeric_limits<double>::quiet_NaN()));
+}
+
+TEST_CASE("welding never merges two vertices of one triangle, nor vertices inside a surface", "[io][weld]")
+{
+  // A strip of two triangles whose shared border has a sliver triangle (an edge of 1e-9) at its
+  // end, next to a second strip whose border vertices lie 1e-8 away: the strips are welded, the
+  // sliver keeps its three vertices. A vertex inside the first strip lies 1e-8 from a vertex of a
+  // third, crossing sheet: inner vertices are not welded.
+  const std::vector<std::array<double, 3> > points = {
+    {{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{1, 1, 0}},           // strip A: 0-3
+    {{0, 0, 1e-8}}, {{1, 0, 1e-8}}, {{0, -1, 0}}, {{1, -1, 0}},    // strip B: 4-7, its top edge on A's bottom edge
+    {{1 + 1e-9, 0, 0}},                                             // 8: the sliver's third corner
+    {{0.5, 0.5, 0}}, {{0.5 + 1e-8, 0.5, 1e-8}}, {{0.5, 0.5, 1}}, {{0.5, 0.6, -1}}}; // A's centre 9; sheet C: 10-12
+  const std::vector<std::array<std::size_t, 3> > triangles = {
+    {{0, 1, 9}}, {{1, 3, 9}}, {{3, 2, 9}}, {{2, 0, 9}},  // strip A, a fan around 9
+    {{4, 6, 7}}, {{4, 7, 5}},                          // strip B
+    {{1, 8, 3}},                                       // the sliver: 1 and 8 are 1e-9 apart
+    {{10, 11, 12}}};                                   // sheet C through A's centre
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::triangle_mesh_from_polygon_soup(points, triangles, m);
+  CHECK(num_faces(m) == triangles.size());
+  CHECK(info.number_of_welded_vertices == 2); // 4 to 0, 5 to 1
+  for(auto f : faces(m))
+  {
+    std::set<Point> corners;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) corners.insert(m.point(v));
+    CHECK(corners.size() == 3);
+  }
+  // 13 points, 2 welded; 8 stays apart from 1, 10 from 9
+  CHECK(num_vertices(m) == 11);
 }

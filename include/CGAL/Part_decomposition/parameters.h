@@ -81,6 +81,8 @@ namespace Part_decomposition {
   X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
   X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
   X(thin_part_resolution_t, thin_part_resolution, thin_part_resolution)              \
+  /* reading a mesh */                                                                \
+  X(weld_tolerance_t, weld_tolerance, weld_tolerance)                                \
   /* the one-call decomposition */                                                   \
   X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
   X(stage_timings_t, stage_timings, stage_timings)
@@ -241,6 +243,9 @@ constexpr int thin_part_resolution = 0;
 constexpr bool keep_residual_patches = false;
 /// the distance, in voxels of the finest grid, from which a patch is not explained by its primitive
 constexpr double residual_tolerance = 2.;
+/// the distance, as a fraction of the bounding box diagonal, within which the reader welds border
+/// vertices: above the float32 round-off of a seam, below the gaps between distinct vertices
+constexpr double weld_tolerance = 5e-6;
 } // namespace defaults
 
 /// \cond SKIP_IN_MANUAL
@@ -318,6 +323,7 @@ package's parameters are:
 | `thin_part_resolution()` | `int` | 0 (no finer pass) | `decompose()` |
 | `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
 | `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
+| `weld_tolerance()` | `double` | \f$5 \cdot 10^{-6}\f$ | `IO::read_triangle_mesh()`, `IO::triangle_mesh_from_polygon_soup()` |
 | `primitive_output_iterator()` | an output iterator | none | `decompose()` |
 | `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
 

@@ -235,6 +235,67 @@ inline Mesh make_l_bracket(double la, double lb, double t, double w, double h, s
   return m;
 }
 
+// The triangles of `m` as a soup: its points and three point indices per face, in the order of
+// faces(m).
+inline void mesh_soup(const Mesh& m, std::vector<std::array<double, 3> >& points,
+                      std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  for(auto v : vertices(m)) points.push_back({{m.point(v).x(), m.point(v).y(), m.point(v).z()}});
+  for(auto f : faces(m))
+  {
+    std::array<std::size_t, 3> t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) t[k++] = std::size_t(v);
+    triangles.push_back(t);
+  }
+}
+
+// The faces of `m` (indices in the order of faces(m)) left after cutting `holes` holes, as
+// ../shared/data/open_meshes/make_open.py does: each hole grows breadth-first over edge-adjacent
+// faces from a face at a fixed stride until it covers `area_fraction` of the area of the mesh.
+inline std::vector<std::size_t> faces_outside_holes(const Mesh& m, int holes, double area_fraction)
+{
+  const std::size_t n = num_faces(m);
+  std::vector<double> area(n);
+  double total = 0.;
+  for(auto f : faces(m))
+  {
+    auto h = halfedge(f, m);
+    area[std::size_t(f)] = std::sqrt(CGAL::squared_area(m.point(source(h, m)), m.point(target(h, m)),
+                                                        m.point(target(next(h, m), m))));
+    total += area[std::size_t(f)];
+  }
+  std::vector<char> removed(n, 0);
+  for(int hole = 0; hole < holes; ++hole)
+  {
+    std::size_t seed = (std::size_t(hole) * n) / std::size_t(holes) + n / (2 * std::size_t(holes));
+    while(removed[seed]) seed = (seed + 1) % n;
+    std::vector<std::size_t> queue(1, seed);
+    std::vector<char> queued(n, 0);
+    queued[seed] = 1;
+    double covered = 0.;
+    for(std::size_t head = 0; head < queue.size() && covered < area_fraction * total; ++head)
+    {
+      const Mesh::Face_index f(static_cast<Mesh::size_type>(queue[head]));
+      removed[queue[head]] = 1;
+      covered += area[queue[head]];
+      for(auto h : halfedges_around_face(halfedge(f, m), m))
+      {
+        const auto g = face(opposite(h, m), m);
+        if(g != Mesh::null_face() && !queued[std::size_t(g)] && !removed[std::size_t(g)])
+        {
+          queued[std::size_t(g)] = 1;
+          queue.push_back(std::size_t(g));
+        }
+      }
+    }
+  }
+  std::vector<std::size_t> kept;
+  for(std::size_t i = 0; i < n; ++i)
+    if(!removed[i]) kept.push_back(i);
+  return kept;
+}
+
 } // namespace test_shapes
 
 #endif // PART_DECOMPOSITION_TEST_SHAPES_H

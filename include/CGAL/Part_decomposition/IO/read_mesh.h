@@ -9,6 +9,8 @@
 #define CGAL_PART_DECOMPOSITION_IO_READ_MESH_H
 
 #include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
 #include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
@@ -17,6 +19,7 @@
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/internal/oriented_soup_to_mesh.h>
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
+#include <CGAL/Part_decomposition/internal/weld_border_points.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -73,6 +76,8 @@ struct Mesh_file_info
   std::size_t number_of_triangulated_faces = 0;
   /// the number of file vertices merged into another one with the same coordinates.
   std::size_t number_of_merged_vertices = 0;
+  /// the number of vertices welded to another one within `weld_tolerance` (see `read_triangle_mesh()`).
+  std::size_t number_of_welded_vertices = 0;
   /// the number of vertices duplicated to make the surface manifold and orientable.
   std::size_t number_of_duplicated_vertices = 0;
   /// the number of closed connected components whose orientation was reversed to point outward.
@@ -316,6 +321,39 @@ inline std::size_t triangulate_polygons(File_soup& soup)
   return triangulated;
 }
 
+// The weld tolerance of `np`, checked: a fraction of the bounding box diagonal.
+template <typename NamedParameters>
+double read_weld_tolerance(const NamedParameters& np)
+{
+  const double t = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::weld_tolerance), defaults::weld_tolerance);
+  check_parameter(t >= 0. && t <= 0.01, "weld_tolerance", "in [0, 0.01]");
+  return t;
+}
+
+// Welds the border points of the triangles within `relative_tolerance` of the diagonal of their
+// bounding box (`weld_border_points()`); the file points follow their points. Returns the number
+// of points welded.
+inline std::size_t weld_soup_points(File_soup& soup, double relative_tolerance)
+{
+  std::array<double, 3> lo = soup.points[soup.triangles.front()[0]], hi = lo;
+  for(const std::array<std::size_t, 3>& t : soup.triangles)
+    for(std::size_t id : t)
+      for(int a = 0; a < 3; ++a)
+      {
+        lo[a] = (std::min)(lo[a], soup.points[id][a]);
+        hi[a] = (std::max)(hi[a], soup.points[id][a]);
+      }
+  const double diagonal =
+    std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  // below this the cells of the search would not fit in 64-bit integers; no double is that close
+  if(!(relative_tolerance > 1e-15) || !(diagonal > 0.) || !std::isfinite(diagonal)) return 0;
+  std::size_t welded = 0;
+  const std::vector<std::size_t> target = weld_border_points(soup.points, soup.triangles, relative_tolerance * diagonal, welded);
+  for(std::size_t& m : soup.merged) m = target[m];
+  return welded;
+}
+
 // Adds the points the triangles use to `tm`, in the order the triangles reach them; returns the
 // vertex of each point (null if unused).
 template <typename TriangleMesh, typename Point>
@@ -548,7 +586,8 @@ std::size_t soup_index(Integer id)
 // Builds `tm` from the parsed soup: the common part of every reader. `name` is the file name in
 // quotes, or what the soup is, for the messages.
 template <typename TriangleMesh>
-IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name, TriangleMesh& tm)
+IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name, double weld_tolerance,
+                                       TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type VPM;
@@ -563,6 +602,7 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   info.number_of_triangulated_faces = triangulate_polygons(soup);
   if(soup.triangles.empty())
     throw Invalid_input(Input_error::NO_FACES, name + " has no face with three distinct vertices");
+  info.number_of_welded_vertices = weld_soup_points(soup, weld_tolerance);
 
   // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
   std::vector<std::size_t> triangle_of_point(soup.points.size(), std::size_t(-1));
@@ -613,10 +653,24 @@ namespace IO {
 reads the file `filename` (OFF, OBJ, PLY, STL, glTF 2.0 as `.gltf` or `.glb`; chosen by extension)
 into the triangle mesh `tm`,
 whatever the file holds: polygons are triangulated, vertices with equal coordinates are merged,
-the soup is oriented consistently (vertices are duplicated where the surface is non-manifold or
-not orientable), and every closed connected component is oriented outward. Open, non-manifold,
-self-intersecting meshes and meshes made of many pieces are all accepted. Faces with fewer than
-three distinct vertices are left out of `tm` and reported in the returned information.
+vertices on a border that differ only by round-off are welded, the soup is oriented consistently
+(vertices are duplicated where the surface is non-manifold or not orientable), and every closed
+connected component is oriented outward. Open, non-manifold, self-intersecting meshes and meshes
+made of many pieces are all accepted. Faces with fewer than three distinct vertices are left out
+of `tm` and reported in the returned information.
+
+<b>Welding.</b> An exporter that writes one surface as several meshes (by material, or one of them
+under a node transform in glTF) leaves the two copies of each seam vertex a few float32 units of
+round-off apart: the seam would be a crack, and the surface two pieces. After the merging of equal
+vertices, every vertex on a border edge (an edge of one triangle) is welded to the border vertices
+within `weld_tolerance` of the bounding box diagonal, closest pairs first, keeping the coordinates
+of the vertex that comes first in the file. Two vertices of one triangle are never welded, also
+through a third vertex, so that no triangle degenerates; vertices inside a surface are never moved.
+The default, \f$5 \cdot 10^{-6}\f$, lies between the round-off measured on seams (at most
+\f$6.4 \cdot 10^{-7}\f$ of the diagonal for float32 positions and node transforms, objects up to two
+sizes from the origin) and the smallest gap between distinct border vertices in the test data
+(\f$4 \cdot 10^{-5}\f$); see the user manual. A mesh stored in float32 far from the origin (more
+than about ten times its size) has a larger round-off and needs a larger tolerance.
 
 The file is read into memory at once and parsed in place (OFF, PLY and STL by the package's own
 parsers, OBJ by \cgal's). An STL file stores the corners of each triangle apart: its vertices are
@@ -624,30 +678,45 @@ the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts 
 `Mesh_file_info::number_of_merged_vertices` is 0.
 
 \tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
+\tparam NamedParameters a sequence of named parameters
 
 \param filename the file
 \param tm an empty mesh that receives the triangles
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{weld_tolerance}
+    \cgalParamDescription{the distance, as a fraction of the diagonal of the bounding box of the
+                          triangles, within which vertices on a border are welded; 0 welds nothing}
+    \cgalParamType{`double`, in `[0, 0.01]`}
+    \cgalParamDefault{`5e-6`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the correspondence between the faces of `tm` and those of the file.
 
 \par Complexity
-\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices, a sort), plus the ear
+\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices, a sort, and the
+search of the border vertices to weld), plus the ear
 clipping of the polygons, quadratic in the number of vertices of each polygon, and the orientation
 of the soup by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the
 triangles already form a consistently oriented manifold (checked in linear time).
 
 \throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
 (`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
-(`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`).
+(`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`), and if
+`weld_tolerance` is out of its range (`INVALID_PARAMETER`).
 */
-template <typename TriangleMesh>
-Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm,
+                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
+  const double weld_tolerance = internal::read_weld_tolerance(np);
   internal::File_soup soup;
   if(!internal::parse_polygon_soup(filename, soup.file))
     throw Invalid_input(Input_error::UNREADABLE_FILE,
                         "cannot parse '" + filename + "' as an OFF, OBJ, PLY, STL or glTF mesh");
-  Mesh_file_info info = internal::build_triangle_mesh(soup, "'" + filename + "'", tm);
+  Mesh_file_info info = internal::build_triangle_mesh(soup, "'" + filename + "'", weld_tolerance, tm);
   if(CGAL::IO::internal::get_file_extension(filename) == "stl")
   {
     // the distinct corners are the file's vertices
@@ -660,8 +729,9 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
 /*!
 \ingroup PkgPartDecompositionIO
 builds the triangle mesh `tm` from a polygon soup exactly as `read_triangle_mesh()` builds it from
-the points and faces of a file (triangulation, merging of equal points, orientation, faces with
-fewer than three distinct vertices left out), so that one label per polygon is obtained with
+the points and faces of a file (triangulation, merging of equal points, welding of border points
+within `weld_tolerance`, its only named parameter, orientation, faces with fewer than three
+distinct vertices left out), so that one label per polygon is obtained with
 `labels_in_file_order()`, polygon `i` being the `i`-th face of the "file".
 
 \tparam PointRange a model of `RandomAccessRange` whose value type `p` gives its coordinates as
@@ -669,21 +739,27 @@ fewer than three distinct vertices left out), so that one label per polygon is o
 \tparam PolygonRange a model of `RandomAccessRange` whose value type is a range of integer vertex
 indices, e.g.\ `std::vector<std::array<std::size_t, 3> >`
 \tparam TriangleMesh a model of `MutableFaceGraph` whose point type is a \cgal point
+\tparam NamedParameters a sequence of named parameters
 
 \param points the points
 \param polygons the polygons, each as indices into `points`
 \param tm an empty mesh that receives the triangles
+\param np an optional sequence of named parameters: `weld_tolerance` (see `read_triangle_mesh()`)
 
 \returns the correspondence between the faces of `tm` and the polygons.
 
 \throws Invalid_input if there is no polygon (`NO_FACES`), a polygon with fewer than three
 vertices or an index out of `[0, points.size())` (`INVALID_FACE`), a non-finite coordinate
-(`NON_FINITE_COORDINATES`), or no polygon with three distinct points (`NO_FACES`).
+(`NON_FINITE_COORDINATES`), no polygon with three distinct points (`NO_FACES`), or a
+`weld_tolerance` out of its range (`INVALID_PARAMETER`).
 */
-template <typename PointRange, typename PolygonRange, typename TriangleMesh>
+template <typename PointRange, typename PolygonRange, typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mesh_file_info triangle_mesh_from_polygon_soup(const PointRange& points, const PolygonRange& polygons,
-                                               TriangleMesh& tm)
+                                               TriangleMesh& tm,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
 {
+  const double weld_tolerance = internal::read_weld_tolerance(np);
   internal::File_soup soup;
   soup.file.points.reserve(points.size());
   for(const auto& p : points) soup.file.add_point(double(p[0]), double(p[1]), double(p[2]));
@@ -694,7 +770,7 @@ Mesh_file_info triangle_mesh_from_polygon_soup(const PointRange& points, const P
       soup.file.add_vertex_index(internal::soup_index(id));
     soup.file.end_polygon();
   }
-  return internal::build_triangle_mesh(soup, "the polygon soup", tm);
+  return internal::build_triangle_mesh(soup, "the polygon soup", weld_tolerance, tm);
 }
 
 /*!
