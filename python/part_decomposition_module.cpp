@@ -49,7 +49,8 @@ const std::map<std::string, PD::Tsdf_sign_method> sign_methods = {
   {"automatic", PD::Tsdf_sign_method::AUTOMATIC},     {"auto", PD::Tsdf_sign_method::AUTOMATIC},
   {"inside_test", PD::Tsdf_sign_method::INSIDE_TEST}, {"inside", PD::Tsdf_sign_method::INSIDE_TEST},
   {"winding_number", PD::Tsdf_sign_method::WINDING_NUMBER}, {"winding", PD::Tsdf_sign_method::WINDING_NUMBER},
-  {"flood_fill", PD::Tsdf_sign_method::FLOOD_FILL},   {"flood", PD::Tsdf_sign_method::FLOOD_FILL}};
+  {"flood_fill", PD::Tsdf_sign_method::FLOOD_FILL},   {"flood", PD::Tsdf_sign_method::FLOOD_FILL},
+  {"ray_votes", PD::Tsdf_sign_method::RAY_VOTES},     {"votes", PD::Tsdf_sign_method::RAY_VOTES}};
 const std::map<std::string, PD::Interior_weight_mode> weight_modes = {
   {"one_shot", PD::Interior_weight_mode::ONE_SHOT}, {"one-shot", PD::Interior_weight_mode::ONE_SHOT},
   {"mps_reestimated", PD::Interior_weight_mode::MPS_REESTIMATED}, {"mps", PD::Interior_weight_mode::MPS_REESTIMATED}};

@@ -314,6 +314,9 @@ std::vector<Variant> all_variants()
   add("no_normal")->cue_weights = {{1., 1., 1., 0.}};
   add("no_density")->use_density = false;
   add("no_tsdf")->use_tsdf_guidance = false;
+  // the inside of every volume stage: the paper's exterior flood fill, the hierarchical winding number
+  add("sign_flood")->tsdf_sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
+  add("sign_winding")->tsdf_sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
   for(int r : {16, 32, 64})
   {
     const std::string s = std::to_string(r);

@@ -68,6 +68,7 @@ static const char* name(PD::Tsdf_sign_method m)
   case PD::Tsdf_sign_method::INSIDE_TEST: return "INSIDE_TEST";
   case PD::Tsdf_sign_method::WINDING_NUMBER: return "WINDING_NUMBER";
   case PD::Tsdf_sign_method::FLOOD_FILL: return "FLOOD_FILL";
+  case PD::Tsdf_sign_method::RAY_VOTES: return "RAY_VOTES";
   default: return "AUTOMATIC";
   }
 }
@@ -122,6 +123,7 @@ static Options parse_options(int argc, char** argv)
       o.method = m == "inside" ? PD::Tsdf_sign_method::INSIDE_TEST
                : m == "winding" ? PD::Tsdf_sign_method::WINDING_NUMBER
                : m == "flood" ? PD::Tsdf_sign_method::FLOOD_FILL
+               : m == "votes" ? PD::Tsdf_sign_method::RAY_VOTES
                               : PD::Tsdf_sign_method::AUTOMATIC;
     }
     else o.files.push_back(a);

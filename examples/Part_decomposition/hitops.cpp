@@ -105,7 +105,7 @@ const char* const usage_text =
   "  --freeze-ratio 0.15      fraction of frozen voxels per resolution\n"
   "  --margin 0.03125         free margin of the normalized cube\n"
   "  --truncation 8           TSDF truncation, voxels of the finest grid\n"
-  "  --sign-method M          auto, inside, winding or flood\n"
+  "  --sign-method M          auto, votes, inside, winding or flood\n"
   "  --flow-tolerance 2       Flow-zone dilation, voxels of the fitting resolution\n"
   "  --trust-region-scales 1,0.5,0.25\n"
   "  --body-seed-threshold 1.5\n"
@@ -216,7 +216,8 @@ Options parse(int argc, char** argv)
       else if(m == "inside") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::INSIDE_TEST;
       else if(m == "winding") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
       else if(m == "flood") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
-      else throw Usage_error("--sign-method expects auto, inside, winding or flood");
+      else if(m == "votes") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::RAY_VOTES;
+      else throw Usage_error("--sign-method expects auto, votes, inside, winding or flood");
     }
     else if(a == "--flow-tolerance") o.decomposition.flow_zone_tolerance = to_number(a, value());
     else if(a == "--trust-region-scales") o.decomposition.trust_region_scales = to_numbers(a, value());

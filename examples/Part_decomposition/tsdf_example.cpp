@@ -65,6 +65,7 @@ static const char* name(PD::Tsdf_sign_method m)
   case PD::Tsdf_sign_method::INSIDE_TEST: return "INSIDE_TEST (ray parity)";
   case PD::Tsdf_sign_method::WINDING_NUMBER: return "WINDING_NUMBER";
   case PD::Tsdf_sign_method::FLOOD_FILL: return "FLOOD_FILL";
+  case PD::Tsdf_sign_method::RAY_VOTES: return "RAY_VOTES";
   default: return "AUTOMATIC";
   }
 }

@@ -152,7 +152,7 @@ def test_parameters_reach_the_library(dumbbell):
     assert coarse.number_of_parts < one.number_of_parts
     with pytest.raises(pd.InvalidInput, match="weld_tolerance"):
         pd.decompose(vertices, faces, weld_tolerance=0.5)
-    for method in ("inside", "winding_number", "flood_fill", "automatic"):
+    for method in ("inside", "winding_number", "flood_fill", "ray_votes", "automatic"):
         r = pd.decompose(vertices, faces, tsdf_sign_method=method, **FAST)
         assert r.labels.shape == (len(faces),)
     pd.decompose(vertices, faces, interior_weight_mode="mps", cue_weights=(1, 1, 0.5, 1), **FAST)

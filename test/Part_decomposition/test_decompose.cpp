@@ -921,3 +921,168 @@ TEST_CASE("thin_part_resolution: out-of-range values and a hierarchy are refused
   CHECK(PD::decompose(m, map, PDP::combine(PDP::voxel_resolutions(std::vector<int>{8, 16, 32}),
                                            PDP::thin_part_resolution(64))) >= 1);
 }
+
+// ------------------------------------------------------------------------------------------
+// Open and split meshes
+
+namespace {
+
+// A shipped shape's faces `kept` (indices in the order of faces(m)) as a mesh built by the reader,
+// with their true parts in the order of its faces.
+Mesh open_shape(const Mesh& closed, const std::vector<std::size_t>& truth, const std::vector<std::size_t>& kept,
+                std::vector<std::size_t>& open_truth)
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles, kept_triangles;
+  test_shapes::mesh_soup(closed, points, triangles);
+  for(std::size_t i : kept) kept_triangles.push_back(triangles[i]);
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::triangle_mesh_from_polygon_soup(points, kept_triangles, m);
+  open_truth.clear();
+  for(std::size_t i : info.face_to_input) open_truth.push_back(truth[kept[i]]);
+  return m;
+}
+
+struct Scored_parts
+{
+  std::size_t parts = 0;
+  double miou = 0.;
+};
+
+Scored_parts decompose_and_score(const Mesh& m, const std::vector<std::size_t>& truth)
+{
+  std::vector<std::size_t> part(num_faces(m));
+  Scored_parts s;
+  s.parts = PD::decompose(m, CGAL::make_property_map(part));
+  s.miou = PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part)).mean_iou;
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("a shape with holes punched in it gets the parts of the closed shape", "[decompose][open][data]")
+{
+  // The dumbbell (two balls and a bar) and the animal (body, head, legs, tail), with 3 holes of 1%
+  // and 6 holes of 0.8% of their area: the flood fill of the paper would enter through the holes and
+  // leave one part; the winding number keeps the inside.
+  for(const std::string name : {"dumbbell", "animal"})
+  {
+    Mesh closed;
+    const std::vector<std::size_t> truth = test_shapes::read_shipped_shape(name, closed);
+    const Scored_parts whole = decompose_and_score(closed, truth);
+    for(const std::pair<int, double>& holes : {std::make_pair(3, 0.01), std::make_pair(6, 0.008)})
+    {
+      INFO(name << " with " << holes.first << " holes of " << holes.second << " of the area");
+      std::vector<std::size_t> open_truth;
+      const Mesh open = open_shape(closed, truth, test_shapes::faces_outside_holes(closed, holes.first, holes.second), open_truth);
+      REQUIRE(!CGAL::is_closed(open));
+      const Scored_parts s = decompose_and_score(open, open_truth);
+      INFO("closed: " << whole.parts << " parts, mIoU " << whole.miou << "; open: " << s.parts << " parts, mIoU " << s.miou);
+      CHECK(s.parts + 1 >= whole.parts);
+      CHECK(s.parts <= whole.parts + 1);
+      CHECK(s.miou >= whole.miou - 0.05);
+    }
+  }
+}
+
+TEST_CASE("a surface split into two meshes whose seam differs by float32 round-off is welded", "[decompose][open][io][data]")
+{
+  // The dumbbell cut by the plane x = 0.1 into two meshes; the second one stored in float32 in the
+  // frame of a node transform (rotation, scale 3, translation) and brought back in double, as a
+  // glTF reader does: the two copies of each seam vertex differ in their last bits.
+  Mesh whole;
+  const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", whole);
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  test_shapes::mesh_soup(whole, points, triangles);
+  const double c = std::cos(0.7), s = std::sin(0.7), scale = 3.;
+  const std::array<double, 3> shift = {{10., -4., 7.}};
+  auto to_float = [](double x) { return double(float(x)); };
+  auto round_trip = [&](const std::array<double, 3>& p) { // world -> float32 local -> world
+    const std::array<double, 3> q = {{p[0] - shift[0], p[1] - shift[1], p[2] - shift[2]}};
+    const std::array<double, 3> local = {{to_float((c * q[0] + s * q[1]) / scale), to_float((-s * q[0] + c * q[1]) / scale),
+                                          to_float(q[2] / scale)}};
+    const double a = to_float(scale * c), b = to_float(scale * s), z = to_float(scale);
+    return std::array<double, 3>{{a * local[0] - b * local[1] + to_float(shift[0]),
+                                  b * local[0] + a * local[1] + to_float(shift[1]), z * local[2] + to_float(shift[2])}};
+  };
+  std::vector<std::array<double, 3> > split_points;
+  std::vector<std::array<std::size_t, 3> > split_triangles;
+  std::vector<std::size_t> split_truth;
+  for(int side = 0; side < 2; ++side)
+  {
+    std::vector<std::size_t> id(points.size(), std::size_t(-1));
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      double x = 0.;
+      for(std::size_t v : triangles[t]) x += points[v][0] / 3.;
+      if((x < 0.1) != (side == 0)) continue;
+      std::array<std::size_t, 3> tri;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t v = triangles[t][std::size_t(k)];
+        if(id[v] == std::size_t(-1))
+        {
+          id[v] = split_points.size();
+          split_points.push_back(side == 0 ? std::array<double, 3>{{to_float(points[v][0]), to_float(points[v][1]), to_float(points[v][2])}}
+                                           : round_trip(points[v]));
+        }
+        tri[std::size_t(k)] = id[v];
+      }
+      split_triangles.push_back(tri);
+      split_truth.push_back(truth[t]);
+    }
+  }
+  Mesh welded, apart;
+  const PD::IO::Mesh_file_info info = PD::IO::triangle_mesh_from_polygon_soup(split_points, split_triangles, welded);
+  const PD::IO::Mesh_file_info info_apart =
+    PD::IO::triangle_mesh_from_polygon_soup(split_points, split_triangles, apart, PDP::weld_tolerance(0.));
+  CHECK(info.number_of_welded_vertices > 10);
+  CHECK(info_apart.number_of_welded_vertices == 0);
+  CHECK(PD::segment_pieces(welded).number_of_pieces == 1);
+  CHECK(PD::segment_pieces(apart).number_of_pieces == 2);
+
+  std::vector<std::size_t> welded_truth;
+  for(std::size_t i : info.face_to_input) welded_truth.push_back(split_truth[i]);
+  const Scored_parts unsplit = decompose_and_score(whole, truth), split = decompose_and_score(welded, welded_truth);
+  INFO("unsplit: " << unsplit.parts << " parts, mIoU " << unsplit.miou << "; split and welded: " << split.parts
+                   << " parts, mIoU " << split.miou);
+  CHECK(split.parts == unsplit.parts);
+  CHECK(split.miou >= unsplit.miou - 0.02);
+}
+
+TEST_CASE("whether a piece bounds a volume is decided by the distance field, not by closedness", "[decompose][open]")
+{
+  // A corrugated open sheet is not convex, so it may need the volumetric stages, until the distance
+  // field shows that it bounds no volume (its dips hold a few voxels, the rest has the outside on
+  // both sides); a dumbbell with holes bounds one.
+  test_shapes::Soup sheet;
+  const int n = 24;
+  auto P = [&](int i, int j) {
+    const double x = -1. + 2. * i / n, y = -1. + 2. * j / n;
+    return Point(x, y, 0.15 * std::sin(3. * x) * std::sin(3. * y));
+  };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      sheet.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+      sheet.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+    }
+  const Mesh wavy = sheet.mesh();
+  PD::Part_decomposer<Mesh> sheet_decomposer(wavy);
+  sheet_decomposer.segment_pieces();
+  CHECK(sheet_decomposer.needs_volumetric_stages());
+  sheet_decomposer.compute_distance_field();
+  CHECK_FALSE(sheet_decomposer.needs_volumetric_stages());
+
+  // the shipped dumbbell with three holes of 2% of its area: it still bounds its volume
+  Mesh closed;
+  const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", closed);
+  std::vector<std::size_t> open_truth;
+  const Mesh open = open_shape(closed, truth, test_shapes::faces_outside_holes(closed, 3, 0.02), open_truth);
+  PD::Part_decomposer<Mesh> open_decomposer(open);
+  REQUIRE_FALSE(open_decomposer.segment_pieces().closed[0]);
+  CHECK(open_decomposer.needs_volumetric_stages());
+  open_decomposer.compute_distance_field();
+  CHECK(open_decomposer.needs_volumetric_stages());
+}

@@ -627,7 +627,10 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   pd.compute_prior(PDP::voxel_resolutions(std::vector<int>{16, 32}));
   pd.compute_distance_field();
   CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER); // 32^3 prior, 64^3 field
+  CHECK(error_of([&] { pd.compute_fitting_zones(); }) == E::INVALID_PARAMETER);
+  pd.compute_distance_field(PDP::voxel_resolutions(std::vector<int>{16, 32}));
   CHECK(pd.compute_fitting_zones().flow_zone.count(16) == 1); // r_fit of {16, 32}: 16 only
+  pd.compute_distance_field();
   CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER);
 
   // the free functions on results that do not match
@@ -639,7 +642,9 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
         E::INVALID_PARAMETER);
   CHECK(error_of([&] { PD::compute_tsdf(Mesh()); }) == E::NO_FACES);
   CHECK(error_of([&] { PD::compute_flow_freeze_prior(Mesh()); }) == E::NO_FACES);
-  CHECK(error_of([&] { PD::compute_fitting_zones(prior.classes, std::vector<int>{0}); }) == E::INVALID_PARAMETER);
+  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m);
+  CHECK(error_of([&] { PD::compute_fitting_zones(prior.classes, tsdf, std::vector<int>{0}); }) == E::INVALID_PARAMETER);
+  CHECK(error_of([&] { PD::compute_fitting_zones(prior.classes, tsdf32, std::vector<int>{16}); }) == E::INVALID_PARAMETER);
 
   // a normalization that is not a map into the cube
   for(double s : {0., -1., k_nan, k_inf})

@@ -582,9 +582,11 @@ PD::Hierarchical_prior synthetic_prior(const PD::Voxel_grid<double>& tsdf, const
   return prior;
 }
 
-PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior)
+PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d)
 {
-  return PD::compute_fitting_zones(prior.classes, {16, 32});
+  PD::Truncated_signed_distance_field tsdf;
+  tsdf.values = d;
+  return PD::compute_fitting_zones(prior.classes, tsdf, {16, 32});
 }
 
 PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d,
@@ -594,7 +596,7 @@ PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prio
   PD::Truncated_signed_distance_field tsdf;
   tsdf.values = d;
   tsdf.truncation = tau;
-  const PD::Fitting_zones zones = synthetic_zones(prior);
+  const PD::Fitting_zones zones = synthetic_zones(prior, d);
   namespace P = PD::parameters;
   return PD::fit_superquadrics<CGAL::Sequential_tag, K>(
     prior, tsdf, zones, P::combine(P::coverage_target(0.95), P::interior_weight_mode(mode), CGAL::parameters::verbose(verbose)));
@@ -663,7 +665,7 @@ TEST_CASE("SDFSQFit: one primitive per lobe, none across a Freeze wall", "[sdfsq
       }
       CHECK(big == lobe_shapes.size());
       // labels never sit on Freeze or exterior voxels
-      const PD::Fitting_zones zones = synthetic_zones(prior);
+      const PD::Fitting_zones zones = synthetic_zones(prior, d);
       for(std::size_t v = 0; v < res.labels.size(); ++v)
         if(res.labels[v] >= 0) CHECK(zones.freeze_zone[v] == 0);
       CHECK(res.number_of_solves > 0);
@@ -731,13 +733,13 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
   REQUIRE(PD::fitting_resolutions(prior.resolutions) == std::vector<int>{16, 32});
   CHECK(PD::fitting_resolutions({8}) == std::vector<int>{4});
   CHECK(PD::fitting_resolutions({16, 64}) == std::vector<int>{16});
-  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, {16, 32});
+  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, tsdf, {16, 32});
   // zones computed beforehand give the same fit; zones that miss a resolution are refused
   const auto with_zones = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, zones);
   CHECK(with_zones.labels == seq.labels);
   CHECK(with_zones.primitives.size() == seq.primitives.size());
   CHECK(with_zones.number_of_evaluations == seq.number_of_evaluations);
-  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, PD::compute_fitting_zones(prior.classes, {16})),
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, PD::compute_fitting_zones(prior.classes, tsdf, {16})),
                   PD::Invalid_input);
   for(const auto* res : {&no_body, &no_tsdf, &no_freeze})
     for(std::size_t v = 0; v < res->labels.size(); ++v)
@@ -848,8 +850,8 @@ TEST_CASE("fit_superquadrics and compute_fitting_zones: default named parameters
   const auto explicit_zone_parameters = P::combine(P::flow_zone_tolerance(D::flow_zone_tolerance),
                                                    P::use_freeze_zone(D::use_freeze_zone));
   const std::vector<int> fit_res = PD::fitting_resolutions(c.prior.resolutions);
-  const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior.classes, fit_res);
-  const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior.classes, fit_res, explicit_zone_parameters);
+  const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior.classes, c.tsdf, fit_res);
+  const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior.classes, c.tsdf, fit_res, explicit_zone_parameters);
   CHECK(z1.occupied == z2.occupied);
   CHECK(z1.exterior == z2.exterior);
   CHECK(z1.freeze_zone == z2.freeze_zone);
@@ -932,7 +934,7 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
     const Fit without = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(false));
     REQUIRE(with_band.number_of_seeds == 1);
     REQUIRE(without.number_of_seeds == 1);
-    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, PD::fitting_resolutions({32}));
+    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, c.tsdf, PD::fitting_resolutions({32}));
     std::size_t band = 0;
     for(std::size_t v = 0; v < zones.exterior.size(); ++v)
       if(zones.exterior[v] && c.tsdf.values[v] < 1.5 / 32) ++band;
@@ -958,9 +960,9 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
     CHECK(PD::fitting_resolutions({8, 16}, 32) == std::vector<int>{8, 16});
     CHECK(PD::fitting_resolutions({8, 16}) == std::vector<int>{8});
     const Box_case b = box_case(true);
-    const PD::Fitting_zones default_zones = PD::compute_fitting_zones(b.prior.classes, PD::fitting_resolutions(b.prior.resolutions));
+    const PD::Fitting_zones default_zones = PD::compute_fitting_zones(b.prior.classes, b.tsdf, PD::fitting_resolutions(b.prior.resolutions));
     const PD::Fitting_zones capped_zones =
-      PD::compute_fitting_zones(b.prior.classes, PD::fitting_resolutions(b.prior.resolutions, 32));
+      PD::compute_fitting_zones(b.prior.classes, b.tsdf, PD::fitting_resolutions(b.prior.resolutions, 32));
     // zones without r_fit = 32 are refused, zones with it give the fit that computes its own
     CHECK_THROWS_AS(PD::fit_superquadrics(b.prior, b.tsdf, default_zones, P::fitting_resolution_cap(32)),
                     PD::Invalid_input);

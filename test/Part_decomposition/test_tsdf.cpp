@@ -526,7 +526,7 @@ TEST_CASE("TSDF of a sphere: within half a voxel of the exact signed distance, c
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(sphere, PD::parameters::tsdf_sign_method(method));
     REQUIRE(tsdf.values.resolution() == 64);
     CHECK(tsdf.truncation == Approx(8. / 64.));
-    CHECK(tsdf.sign_method == (method == PD::Tsdf_sign_method::AUTOMATIC ? PD::Tsdf_sign_method::WINDING_NUMBER : method));
+    CHECK(tsdf.sign_method == (method == PD::Tsdf_sign_method::AUTOMATIC ? PD::Tsdf_sign_method::RAY_VOTES : method));
     const std::array<double, 3> c = unit(tsdf.normalization, 0.3, -0.2, 0.1);
     const double R = 1.0 * tsdf.normalization.scale();
     auto sd = [&](const std::array<double, 3>& p) { return sd_sphere(p, c, R); };
@@ -569,7 +569,7 @@ TEST_CASE("TSDF sign of a closed sphere with one small hole", "[tsdf][sign]")
       for(int a = 0; a < 3; ++a) hole[a] += CGAL::to_double(sphere.point(v)[a]) / 3.;
   }
   const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(holed);
-  CHECK(tsdf.sign_method == PD::Tsdf_sign_method::WINDING_NUMBER);
+  CHECK(tsdf.sign_method == PD::Tsdf_sign_method::RAY_VOTES);
   const std::array<double, 3> c = unit(tsdf.normalization, 0, 0, 0), h = unit(tsdf.normalization, hole[0], hole[1], hole[2]);
   const double R = tsdf.normalization.scale();
   auto sd = [&](const std::array<double, 3>& p) { return sd_sphere(p, c, R); };
@@ -609,7 +609,7 @@ TEST_CASE("TSDF sign of two separate closed pieces", "[tsdf][sign]")
   for(const Mesh& mesh : {m, unshared_copy(m)}) // closed, then the same triangles with no shared vertex
   {
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(mesh);
-    CHECK(tsdf.sign_method == PD::Tsdf_sign_method::WINDING_NUMBER);
+    CHECK(tsdf.sign_method == PD::Tsdf_sign_method::RAY_VOTES);
     const PD::Normalization& N = tsdf.normalization;
     const std::array<double, 3> c = unit(N, -0.5, 0, 0), lo = unit(N, 0.2, -0.3, -0.3), hi = unit(N, 0.8, 0.3, 0.3);
     const double R = 0.4 * N.scale();
@@ -623,8 +623,9 @@ TEST_CASE("TSDF sign of a mesh with an inward-oriented component", "[tsdf][sign]
 {
   Mesh m = test_shapes::make_sphere(Point(-0.5, 0, 0), 0.4, 3);
   test_shapes::append(m, reversed(test_shapes::make_box(Point(0.2, -0.3, -0.3), Point(0.8, 0.3, 0.3), 2)));
-  for(const Mesh& mesh : {m, unshared_copy(m)}) // exact winding numbers, then the hierarchical ones
-    for(PD::Tsdf_sign_method method : {PD::Tsdf_sign_method::AUTOMATIC, PD::Tsdf_sign_method::FLOOD_FILL})
+  for(const Mesh& mesh : {m, unshared_copy(m)}) // exact winding numbers, then ray votes or hierarchical ones
+    for(PD::Tsdf_sign_method method : {PD::Tsdf_sign_method::AUTOMATIC, PD::Tsdf_sign_method::WINDING_NUMBER,
+                                       PD::Tsdf_sign_method::FLOOD_FILL})
     {
       const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(mesh, PD::parameters::tsdf_sign_method(method));
       const PD::Normalization& N = tsdf.normalization;
@@ -672,7 +673,8 @@ TEST_CASE("TSDF is deterministic, reads the vertex point map and the normalizati
   test_shapes::append(m, test_shapes::make_cylinder(Point(0.3, 0, 0), 0.2, 0.9, 24, 6));
   const Mesh open = without_first_face(m);
   for(const Mesh* mesh : std::vector<const Mesh*>{&m, &open})
-    for(PD::Tsdf_sign_method method : {PD::Tsdf_sign_method::AUTOMATIC, PD::Tsdf_sign_method::FLOOD_FILL})
+    for(PD::Tsdf_sign_method method : {PD::Tsdf_sign_method::AUTOMATIC, PD::Tsdf_sign_method::WINDING_NUMBER,
+                                       PD::Tsdf_sign_method::FLOOD_FILL})
     {
       const auto np = PD::parameters::tsdf_sign_method(method);
       const PD::Truncated_signed_distance_field seq = PD::compute_tsdf<CGAL::Sequential_tag>(*mesh, np);
@@ -806,15 +808,23 @@ TEST_CASE("voxel_resolutions: one rule and one message for the prior, the TSDF a
 
 TEST_CASE("Fitting zones of a hand-made prior", "[tsdf][zones]")
 {
-  // A closed shell of Flow voxels [4,11]^3 in a 16^3 grid, its z = 4 face Freeze.
+  // A shell of Flow voxels [4,11]^3 in a 16^3 grid, its z = 4 face Freeze, with a hole of 2 x 2
+  // voxels in its z = 11 face; the distance field puts the cube inside, the rest outside.
   const int r = 16;
   PD::Voxel_grid<PD::Voxel_class> classes(r, PD::Voxel_class::EMPTY);
+  PD::Truncated_signed_distance_field tsdf;
+  tsdf.values = PD::Voxel_grid<double>(r, 1.);
+  tsdf.truncation = 1.;
   for(int k = 4; k <= 11; ++k)
     for(int j = 4; j <= 11; ++j)
       for(int i = 4; i <= 11; ++i)
-        if(i == 4 || i == 11 || j == 4 || j == 11 || k == 4 || k == 11)
+      {
+        tsdf.values(i, j, k) = -1.;
+        const bool hole = k == 11 && (i == 7 || i == 8) && (j == 7 || j == 8);
+        if((i == 4 || i == 11 || j == 4 || j == 11 || k == 4 || k == 11) && !hole)
           classes(i, j, k) = k == 4 ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
-  const PD::Fitting_zones z = PD::compute_fitting_zones(classes, std::vector<int>{8, 4, 8});
+      }
+  const PD::Fitting_zones z = PD::compute_fitting_zones(classes, tsdf, std::vector<int>{8, 4, 8});
   CHECK(z.flow_zone.size() == 2);
   CHECK(z.flow_zone_distance.size() == 2);
   Mask hull(r, 0);
@@ -823,9 +833,11 @@ TEST_CASE("Fitting zones of a hand-made prior", "[tsdf][zones]")
       for(int i = 0; i < r; ++i)
       {
         const bool in_cube = i >= 4 && i <= 11 && j >= 4 && j <= 11 && k >= 4 && k <= 11;
-        const bool shell = in_cube && (i == 4 || i == 11 || j == 4 || j == 11 || k == 4 || k == 11);
+        const bool hole = k == 11 && (i == 7 || i == 8) && (j == 7 || j == 8);
+        const bool shell = in_cube && !hole && (i == 4 || i == 11 || j == 4 || j == 11 || k == 4 || k == 11);
         hull(i, j, k) = in_cube ? 1 : 0;
         CHECK(z.occupied(i, j, k) == (shell ? 1 : 0));
+        // the hole does not let the outside in: the exterior is the field's
         CHECK(z.exterior(i, j, k) == (in_cube ? 0 : 1));
         CHECK(z.freeze_zone(i, j, k) == ((!in_cube || (shell && k == 4)) ? 1 : 0));
       }
@@ -849,12 +861,81 @@ TEST_CASE("Fitting zones of a hand-made prior", "[tsdf][zones]")
   CHECK(z.flow_zone_distance.at(8)(8, 8, 8) == Approx(8. / 16.));
 
   const PD::Fitting_zones no_freeze =
-    PD::compute_fitting_zones(classes, std::vector<int>{8}, PD::parameters::use_freeze_zone(false));
+    PD::compute_fitting_zones(classes, tsdf, std::vector<int>{8}, PD::parameters::use_freeze_zone(false));
   CHECK(no_freeze.freeze_zone == no_freeze.exterior);
-  const PD::Fitting_zones tight =
-    PD::compute_fitting_zones<CGAL::Parallel_if_available_tag>(classes, std::vector<int>{8}, PD::parameters::flow_zone_tolerance(0.));
+  const PD::Fitting_zones tight = PD::compute_fitting_zones<CGAL::Parallel_if_available_tag>(
+    classes, tsdf, std::vector<int>{8}, PD::parameters::flow_zone_tolerance(0.));
   CHECK(tight.flow_zone.at(8) == hull);
-  CHECK_THROWS_AS(PD::compute_fitting_zones(classes, std::vector<int>{0}), PD::Invalid_input);
-  CHECK_THROWS_AS(PD::compute_fitting_zones(classes, std::vector<int>{8}, PD::parameters::flow_zone_tolerance(-1.)),
+  CHECK_THROWS_AS(PD::compute_fitting_zones(classes, tsdf, std::vector<int>{0}), PD::Invalid_input);
+  CHECK_THROWS_AS(PD::compute_fitting_zones(classes, tsdf, std::vector<int>{8}, PD::parameters::flow_zone_tolerance(-1.)),
                   PD::Invalid_input);
+  PD::Truncated_signed_distance_field coarse;
+  coarse.values = PD::Voxel_grid<double>(8, 1.);
+  CHECK_THROWS_AS(PD::compute_fitting_zones(classes, coarse, std::vector<int>{8}), PD::Invalid_input);
+}
+
+TEST_CASE("an open sheet has no inside, a sphere with a hole of a tenth of its area keeps its inside", "[tsdf][zones][open]")
+{
+  // A flat square: the winding number is below 1/2 on both sides. A gently wavy sheet: above 1/2
+  // only in a layer of at most one voxel on the concave side of its dips, where the sheet covers
+  // a little more than half of the directions; it holds no volume.
+  for(double amplitude : {0., 0.05})
+  {
+    test_shapes::Soup sheet;
+    const int n = 20;
+    auto P = [&](int i, int j) {
+      const double x = -1. + 2. * i / n, y = -1. + 2. * j / n;
+      return Point(x, y, amplitude * std::sin(3. * x) * std::sin(3. * y));
+    };
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+      {
+        sheet.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+        sheet.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+      }
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(sheet.mesh());
+    const double deepest = *std::min_element(tsdf.values.values().begin(), tsdf.values.values().end());
+    if(amplitude == 0.) CHECK(deepest >= 0.);
+    CHECK(deepest > -1. / 64.);
+  }
+
+  // the unit sphere without its cap z > 0.8 (a tenth of its area): a hole 0.6 wide
+  const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
+  test_shapes::Soup open_soup;
+  for(auto f : faces(sphere))
+  {
+    std::array<Point, 3> c;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, sphere), sphere)) c[std::size_t(k++)] = sphere.point(v);
+    if((c[0].z() + c[1].z() + c[2].z()) / 3. <= 0.8) open_soup.triangle(c[0], c[1], c[2]);
+  }
+  const Mesh open = open_soup.mesh();
+  REQUIRE(!CGAL::is_closed(open));
+  // the same normalization for both, so that their voxels match
+  const PD::Normalization frame = PD::compute_normalization(sphere);
+  auto inside = [](const PD::Truncated_signed_distance_field& t) {
+    return std::count_if(t.values.values().begin(), t.values.values().end(), [](double d) { return d < 0.; });
+  };
+  const PD::Truncated_signed_distance_field closed_field = PD::compute_tsdf(sphere, PD::parameters::normalization(frame));
+  const PD::Truncated_signed_distance_field open_field = PD::compute_tsdf(open, PD::parameters::normalization(frame));
+  const PD::Truncated_signed_distance_field filled = PD::compute_tsdf(
+    open, PD::parameters::combine(PD::parameters::normalization(frame), PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::FLOOD_FILL)));
+  INFO("inside voxels: closed " << inside(closed_field) << ", open " << inside(open_field) << ", open by flood fill "
+                                << inside(filled));
+  // the segment of the ball under the missing cap (2.8% of its volume) may go either way
+  CHECK(inside(open_field) >= 0.96 * double(inside(closed_field)));
+  CHECK(inside(open_field) <= inside(closed_field));
+  CHECK(inside(filled) < 0.05 * double(inside(closed_field))); // the paper's fill leaks through the hole
+
+  // the zones take their exterior from the field: the ball stays open to the fitter
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(open, PD::parameters::normalization(frame));
+  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, open_field, PD::fitting_resolutions(prior.resolutions));
+  std::size_t exterior_in_ball = 0;
+  for(std::size_t v = 0; v < zones.exterior.size(); ++v)
+  {
+    const std::array<double, 3> c = zones.exterior.center(v);
+    const double radius = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / frame.scale();
+    if(radius < 0.7 && zones.exterior[v]) ++exterior_in_ball;
+  }
+  CHECK(exterior_in_ball == 0);
 }

@@ -282,7 +282,7 @@ int write_slices(const Figure_options& o, const PD::Hierarchical_prior& prior,
   for(int res : prior.resolutions)
     fitting_resolutions.push_back(
       std::min(res, prior.resolutions.size() > 1 ? prior.resolutions[prior.resolutions.size() - 2] : res));
-  const PD::Fitting_zones zones = PD::compute_fitting_zones<Concurrency>(prior.classes, fitting_resolutions);
+  const PD::Fitting_zones zones = PD::compute_fitting_zones<Concurrency>(prior.classes, tsdf, fitting_resolutions);
   const int rfit = *std::max_element(fitting_resolutions.begin(), fitting_resolutions.end());
   const PD::Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(rfit);
   const int index = o.slice_fraction >= 0. ? std::min(r - 1, int(o.slice_fraction * r)) : fullest_slice(zones, r, o.axis);

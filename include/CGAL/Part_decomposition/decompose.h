@@ -21,6 +21,7 @@
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
+#include <CGAL/Part_decomposition/internal/bounded_volume.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/residual_patches.h>
@@ -56,7 +57,7 @@ struct Stage_timings
   double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
   double tsdf = 0.;              ///< truncated signed distance field
   double fitting = 0.;           ///< fitting zones and superquadric fitting
-  double fitting_zones = 0.;     ///< of which the fitting zones (run next to the distance field when stages overlap)
+  double fitting_zones = 0.;     ///< of which the fitting zones
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
   double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
@@ -68,6 +69,17 @@ struct Stage_timings
 };
 
 namespace internal {
+
+// A piece bounds a volume of the distance field if at least this fraction of its area separates
+// the field's inside from its outside, probed at this depth, in voxels of the field, on both sides
+// of each face: an open sheet has the outside on both sides, a piece thinner than a voxel too.
+constexpr double bounding_probe_depth = 1.;
+constexpr double minimum_bounding_fraction = 0.5;
+// A piece whose non-manifold junctions (edges of three faces or more) make up at least this
+// fraction of the length of its edges is an assembly of sheets (walls and shelves glued along
+// lines), whose parts are its sheets; a scan's few non-manifold edges make up far less. The CAD-style
+// set gives the same parts from 0.0003 to 0.01 (see the user manual).
+constexpr double maximum_junction_fraction = 0.001;
 
 // The box-like superquadric of the principal-axis bounding box of a surface given as triangles
 // (`points` holds three corners per triangle): what a part gets when no primitive was fitted to
@@ -131,8 +143,8 @@ The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorit
 and the composition with the pieces), in this order, each keeping its result for inspection.
 `decompose()` runs them all in one call. The volumetric stages (prior to over-segmentation) may be
 left out when `needs_volumetric_stages()` is `false`.
-`compute_fitting_zones()`, between the prior and the fit, is optional: it lets the zones of the
-fitter be computed next to the distance field.
+`compute_fitting_zones()`, between the distance field and the fit, is optional: it lets the
+zones of the fitter be inspected.
 
 Every stage function takes its own named parameters (those of the function it calls, listed in
 its documentation); the mesh, vertex point map, face index map and normalization of the
@@ -232,18 +244,32 @@ public:
     m_piece_adjacency = internal::piece_adjacency<ConcurrencyTag>(m_tm, m_fim, m_vpm, with_mesh(np));
     const internal::Piece_parameters p = internal::read_piece_parameters(np);
     m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, p);
-    m_volumetric_piece = internal::volumetric_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.closed,
+    m_crease_angle = p.crease_angle;
+    m_splittable_piece = internal::splittable_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.number_of_pieces,
                                                      p.minimum_part_area * m_pieces.area,
                                                      internal::convexity_tolerance);
     m_has_pieces = true;
+    mark_volumetric_pieces();
     return m_pieces;
   }
 
   /// whether `assign_parts()` with the named parameters `np` needs the volumetric stages (prior,
   /// distance field, fit, over-segmentation): with `use_pieces(false)`, or if a piece can hold
-  /// several parts of which its surface does not show the boundaries: a closed piece (it bounds
-  /// a volume) that is not convex (an edge is concave by at least one degree) and of at least
-  /// twice `minimum_part_area`. Their parts are used in such pieces only.
+  /// several parts of which its surface does not show the boundaries. Such a piece is not convex
+  /// (an edge is concave by at least one degree as the mesh is oriented), has at
+  /// least twice `minimum_part_area`, and, once `compute_distance_field()` was called, bounds a
+  /// volume of the distance field, closed or not:
+  /// - at least half of its area separates the field's inside from its outside, probed one voxel
+  ///   away on both sides of each face (an open sheet has the outside on both sides, a piece
+  ///   thinner than a voxel too, a wall inside a volume the inside on both); this holds for a scan
+  ///   with holes and for each piece of a group that encloses space together;
+  /// - it is not an assembly of sheets: its non-manifold junctions (edges of three faces or more)
+  ///   make up less than 0.1% of the length of its edges, so that a few defective edges do not
+  ///   count but the walls and shelves of a cabinet do; the parts of an assembly of sheets are its
+  ///   regions.
+  ///
+  /// The volumetric parts are used in such pieces only. Before the distance field is known, this
+  /// function tells whether it is worth computing.
   /// \pre `segment_pieces()` was called, or `use_pieces(false)` is given.
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values()) const
@@ -265,22 +291,23 @@ public:
     return m_prior;
   }
 
-  /// computes the zones of the fitter from the prior with `compute_fitting_zones()` at the
-  /// `fitting_resolutions()` of the prior with the `fitting_resolution_cap` of `np`;
-  /// `fit_primitives()` uses them (it computes them itself if this function was not called after
-  /// `compute_prior()`). Pass the same `flow_zone_tolerance`, `use_freeze_zone` and
-  /// `fitting_resolution_cap` as to `fit_primitives()`.
-  /// \pre `compute_prior()` was called.
+  /// computes the zones of the fitter from the prior and the distance field with
+  /// `compute_fitting_zones()` at the `fitting_resolutions()` of the prior with the
+  /// `fitting_resolution_cap` of `np`; `fit_primitives()` uses them (it computes them itself if
+  /// this function was not called after `compute_prior()` and `compute_distance_field()`). Pass the
+  /// same `flow_zone_tolerance`, `use_freeze_zone` and `fitting_resolution_cap` as to
+  /// `fit_primitives()`.
+  /// \pre `compute_prior()` and `compute_distance_field()` were called.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    CGAL_precondition(m_has_prior);
-    if(!m_has_prior)
-      throw std::logic_error("Part_decomposer::compute_fitting_zones() needs the prior");
+    CGAL_precondition(m_has_prior && m_has_tsdf);
+    if(!m_has_prior || !m_has_tsdf)
+      throw std::logic_error("Part_decomposer::compute_fitting_zones() needs the prior and the distance field");
     const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
     m_zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_prior.classes, fitting_resolutions(m_prior.resolutions, cap), np);
+      m_prior.classes, m_tsdf, fitting_resolutions(m_prior.resolutions, cap), np);
     m_has_zones = true;
     return m_zones;
   }
@@ -293,6 +320,8 @@ public:
   {
     m_tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_tsdf = true;
+    m_has_zones = false;
+    if(m_has_pieces) mark_volumetric_pieces();
     return m_tsdf;
   }
 
@@ -530,6 +559,43 @@ private:
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
+  // The pieces the volumetric stages decompose: the splittable pieces, and once the distance field
+  // is known, those of them that bound a volume of it and are not assemblies of sheets.
+  void mark_volumetric_pieces()
+  {
+    m_volumetric_piece = m_splittable_piece;
+    if(!m_has_tsdf) return;
+    std::vector<internal::Triangle_points> triangles(num_faces(m_tm));
+    for(auto f : faces(m_tm))
+    {
+      internal::Triangle_points& t = triangles[std::size_t(get(m_fim, f))];
+      int c = 0;
+      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm)) t[c++] = m_normalization.to_unit(get(m_vpm, v));
+    }
+    const double depth = internal::bounding_probe_depth / double(m_tsdf.values.resolution());
+    const internal::Bounding_fractions sides = internal::bounding_area_fractions(
+      triangles, m_pieces.piece, m_pieces.number_of_pieces, m_tsdf.values, depth);
+    const std::vector<double> junction = internal::junction_length_fractions(
+      m_piece_adjacency, internal::Face_corners(m_tm, m_fim, m_vpm), m_pieces.piece, m_pieces.number_of_pieces);
+    bool reoriented = false;
+    for(std::size_t p = 0; p < m_pieces.number_of_pieces; ++p)
+    {
+      m_volumetric_piece[p] = m_splittable_piece[p] && sides.bounding[p] >= internal::minimum_bounding_fraction &&
+                              junction[p] < internal::maximum_junction_fraction;
+      // an open piece that bounds a volume faces out of it, as the reader turns closed ones: its
+      // concave creases are those of the solid
+      const int outward = sides.outward[p] < 0. ? -1 : 1;
+      if(m_volumetric_piece[p] && !m_pieces.closed[p] && m_pieces.orientation[p] != outward)
+      {
+        m_pieces.orientation[p] = outward;
+        reoriented = true;
+      }
+    }
+    if(reoriented)
+      m_pieces.number_of_regions = internal::crease_regions(m_piece_adjacency, m_pieces.piece, m_pieces.orientation,
+                                                            m_crease_angle, m_pieces.region);
+  }
+
   // The patches no primitive explains (`internal::residual_faces()`) become parts of their own.
   void keep_residual_patches(double tolerance_in_voxels)
   {
@@ -635,6 +701,8 @@ private:
   internal::Face_adjacency m_adjacency; // of the over-segmentation, reused by the sheet merge
   internal::Face_adjacency m_piece_adjacency; // of the pieces, reused by the part composition
   Piece_segmentation m_pieces;
+  std::vector<std::uint8_t> m_splittable_piece; // per piece: non-convex, large enough to hold two parts
+  double m_crease_angle = defaults::crease_angle;  // of segment_pieces()
   std::vector<std::uint8_t> m_volumetric_piece; // per piece: decomposed by the volumetric stages
   std::vector<std::size_t> m_patches;
   std::size_t m_number_of_patches = 0;
@@ -691,15 +759,13 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
   internal::run_side_by_side<ConcurrencyTag>(
     [&] {
       internal::run_side_by_side<ConcurrencyTag>(
-        [&] {
-          internal::add_seconds(timings.prior, [&] { decomposer.template compute_prior<ConcurrencyTag>(np); });
-          // the zones need the prior only: they are computed while the distance field is
-          internal::add_seconds(timings.fitting_zones,
-                                [&] { decomposer.template compute_fitting_zones<ConcurrencyTag>(np); });
-        },
+        [&] { internal::add_seconds(timings.prior, [&] { decomposer.template compute_prior<ConcurrencyTag>(np); }); },
         [&] {
           internal::add_seconds(timings.tsdf, [&] { decomposer.template compute_distance_field<ConcurrencyTag>(np); });
         });
+      // the distance field may show that no piece bounds a volume
+      if(!decomposer.needs_volumetric_stages(np)) return;
+      internal::add_seconds(timings.fitting_zones, [&] { decomposer.template compute_fitting_zones<ConcurrencyTag>(np); });
       internal::add_seconds(timings.fitting, [&] { decomposer.template fit_primitives<ConcurrencyTag>(np); });
       timings.fitting += timings.fitting_zones;
     },
@@ -908,7 +974,7 @@ are chained with `parameters::combine()`)
   \cgalParamNBegin{tsdf_sign_method}
     \cgalParamDescription{how the inside of the shape is decided}
     \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
-    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC` (generalized winding numbers)}
+    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC` (ray votes of winding numbers)}
   \cgalParamNEnd
   \cgalParamNBegin{flow_zone_tolerance}
     \cgalParamDescription{the dilation of the Flow zone, in voxels of the fitting resolution}
@@ -1049,7 +1115,7 @@ are chained with `parameters::combine()`)
   \cgalParamNBegin{use_pieces}
     \cgalParamDescription{if `true`, the parts follow the pieces of the mesh and their concave
                           creases (`segment_pieces()`): the volumetric stages decompose only the
-                          closed, non-convex pieces, whose parts are cut by the regions of
+                          non-convex pieces that bound a volume, closed or not, whose parts are cut by the regions of
                           `segment_pieces()`; every other piece is decomposed into its regions (see
                           `Part_decomposer::needs_volumetric_stages()`). If `false`, the parts are
                           those of the volumetric stages alone, as in the paper. This step is not
@@ -1066,8 +1132,8 @@ are chained with `parameters::combine()`)
   \cgalParamNBegin{minimum_part_area}
     \cgalParamDescription{with `use_pieces`, the area, as a fraction of the mesh area, below which a
                           part is merged into the neighbour across its weakest shared edge (a
-                          separate piece without neighbour stays a part); a closed piece smaller
-                          than twice this area is not decomposed by the volumetric stages}
+                          separate piece without neighbour stays a part); a piece smaller than
+                          twice this area is not decomposed by the volumetric stages}
     \cgalParamType{`double`, in `[0, 1]`}
     \cgalParamDefault{`0.005`}
   \cgalParamNEnd

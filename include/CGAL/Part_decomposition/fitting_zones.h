@@ -65,18 +65,25 @@ Fitting_zone_parameters read_fitting_zone_parameters(const NamedParameters& np)
 
 // compute_fitting_zones() with its parameters read.
 template <typename ConcurrencyTag>
-Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes, const std::vector<int>& fitting_resolutions,
-                                    const Fitting_zone_parameters& parameters)
+Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes, const Voxel_grid<double>& field,
+                                    const std::vector<int>& fitting_resolutions, const Fitting_zone_parameters& parameters)
 {
   static_check_concurrency_tag<ConcurrencyTag>();
   for(int r_fit : fitting_resolutions) check_parameter(r_fit > 0, "fitting_resolutions", "positive");
+  check_parameter(field.resolution() == classes.resolution(), "the distance field",
+                  "of the resolution of the classes");
 
   const int r = classes.resolution();
   Fitting_zones zones;
   zones.occupied = Voxel_grid<std::uint8_t>(r, 0);
+  zones.exterior = Voxel_grid<std::uint8_t>(r, 0);
+  // The exterior is what the distance field's sign puts outside, not the flood fill of the
+  // paper's fillholes(): a hole in the surface would let the fill into the interior.
   for(std::size_t i = 0; i < classes.size(); ++i)
+  {
     zones.occupied[i] = classes[i] != Voxel_class::EMPTY ? 1 : 0;
-  zones.exterior = border_connected_complement(zones.occupied);
+    zones.exterior[i] = (zones.occupied[i] == 0 && !std::signbit(field[i])) ? 1 : 0;
+  }
   zones.freeze_zone = zones.exterior;
   if(parameters.use_freeze_zone)
     for(std::size_t i = 0; i < classes.size(); ++i)
@@ -128,11 +135,12 @@ inline std::vector<int> fitting_resolutions(const std::vector<int>& resolutions,
 /*!
 \ingroup PkgPartDecompositionRef
 builds the volumetric zones of the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2 lines 1-4)
-from the fused Flow/Freeze classes on the finest grid, of resolution `r = classes.resolution()`:
+from the fused Flow/Freeze classes on the finest grid, of resolution `r = classes.resolution()`,
+and the sign of the distance field `tsdf` on the same grid:
 
 - `occupied` = `FLOW` or `FREEZE` voxels;
-- `exterior` (`ext_void`) = the complement of `fillholes(occupied)`: the voxels joined to the grid
-  border by a 6-connected path of unoccupied voxels;
+- `exterior` (`ext_void`) = the voxels that are not occupied and whose centre the distance field
+  puts outside (a non-negative value);
 - `freeze_zone` = `FREEZE` voxels or `exterior` (`exterior` only if `use_freeze_zone` is `false`);
 - for each \f$r_{fit}\f$ of `fitting_resolutions`: `flow_zone[r_fit]` = the voxels whose centre is
   within \f$t \cdot r / r_{fit}\f$ voxels (Euclidean, between voxel centres) of a non-exterior voxel,
@@ -141,17 +149,27 @@ from the fused Flow/Freeze classes on the finest grid, of resolution `r = classe
   the centre of the nearest voxel outside it (the layer just outside the grid counts as outside),
   0 outside the zone.
 
+The paper takes the exterior as the complement of `fillholes(occupied)`, the unoccupied voxels that
+a flood fill reaches from the border of the grid. A hole in the surface wider than a voxel lets
+that fill into the interior, which then becomes Freeze and leaves the fitter nothing to grow in; the
+sign of the distance field (see `Tsdf_sign_method`) survives holes. On a closed surface the two
+differ only where an outside pocket is walled off by occupied voxels (a gap narrower than a voxel,
+such as between two fingers), which the fill takes as inside; the
+`Tsdf_sign_method::FLOOD_FILL` sign is the paper's rule. The user manual measures both.
+
 The morphology is exact (linear-time Euclidean distance transforms) and deterministic.
 
 \par Complexity
-Linear in the number of voxels \f$r^3\f$ for each distinct fitting resolution (hole filling and exact
-linear-time Euclidean distance transforms).
+Linear in the number of voxels \f$r^3\f$ for each distinct fitting resolution (exact linear-time
+Euclidean distance transforms).
 
 \tparam ConcurrencyTag enables sequential versus parallel computation (`CGAL::Sequential_tag`,
         `CGAL::Parallel_tag`, `CGAL::Parallel_if_available_tag`); the result does not depend on it.
 \tparam NamedParameters a sequence of named parameters
 
 \param classes the class of every voxel of the finest grid (the hierarchical prior projected on it)
+\param tsdf the distance field of the shape on the same grid (`compute_tsdf()`): its sign tells the
+       inside from the outside
 \param fitting_resolutions the fitting resolutions \f$r_{fit}\f$ (paper: \f$\min(r, 32)\f$ for
        \f$r \in \{16, 32, 64\}\f$, i.e.\ 16 and 32)
 \param np an optional sequence of named parameters among the ones listed below
@@ -175,15 +193,17 @@ linear-time Euclidean distance transforms).
           resolution.
 
 \throws Invalid_input with `Input_error::INVALID_PARAMETER` if a fitting resolution is not
-        positive or the tolerance is negative or not finite.
+        positive, the tolerance is negative or not finite, or the distance field has another
+        resolution than `classes`.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes,
+                                    const Truncated_signed_distance_field& tsdf,
                                     const std::vector<int>& fitting_resolutions,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::compute_fitting_zones<ConcurrencyTag>(classes, fitting_resolutions,
+  return internal::compute_fitting_zones<ConcurrencyTag>(classes, tsdf.values, fitting_resolutions,
                                                          internal::read_fitting_zone_parameters(np));
 }
 

@@ -110,16 +110,28 @@ The \em surface voxels below are the voxels whose (closed) box meets a triangle.
   outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
   centres it is joined to by a chain of at most three segments between adjacent centres that meet
   no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
-  voxel but leaks through larger ones; closed hollow shells become solid.
-- `AUTOMATIC` = `WINDING_NUMBER`: exact on every closed mesh, self-intersecting or not, with
-  no costly self-intersection test, and robust on open ones.
+  voxel but leaks through larger ones; closed hollow shells become solid. This is the paper's
+  exterior, the complement of `fillholes()` of the surface voxels.
+- `RAY_VOTES`: ray voting (Nooruddin and Turk 2003) with signed crossings. Along each of the six
+  axis rays from a voxel centre, the signed crossings of its row with the triangles give the
+  winding number that ray sees, exactly (the crossings of `WINDING_NUMBER` on a closed mesh);
+  the centre is inside if at least four of the six are non-zero. On a closed mesh the six agree
+  and this is the exact winding number, computed along one axis; on an open mesh a hole turns
+  only the rays that leave through it, and an open sheet gives at most the two rays that cross
+  it. Each voxel is decided on its own rays: nothing is propagated. Needs a consistent
+  orientation of each connected part.
+- `AUTOMATIC` = `RAY_VOTES`: exact on every closed mesh, self-intersecting or not, with no
+  costly self-intersection test, and robust on open ones: on the development shapes with holes
+  it puts two to four times fewer voxels on the wrong side than `WINDING_NUMBER` (against the
+  closed originals), at an eighth of its cost (see the user manual).
 */
 enum class Tsdf_sign_method
 {
-  AUTOMATIC,      ///< `WINDING_NUMBER`
+  AUTOMATIC,      ///< `RAY_VOTES`
   INSIDE_TEST,    ///< ray parity (closed meshes only)
   WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
-  FLOOD_FILL      ///< exterior flood fill of the grid around the surface voxels
+  FLOOD_FILL,     ///< exterior flood fill of the grid around the surface voxels (the paper's `fillholes`)
+  RAY_VOTES       ///< four of the six axis rays see a non-zero winding number
 };
 
 /*!

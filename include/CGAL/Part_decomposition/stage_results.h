@@ -122,7 +122,7 @@ struct Fitting_zones
 {
   /// the carrier: `FLOW` or `FREEZE` voxels of the prior.
   Voxel_grid<std::uint8_t> occupied;
-  /// `ext_void`: the complement of the hole-filled carrier, the exterior of the shape.
+  /// `ext_void`: the exterior of the shape, the unoccupied voxels the distance field puts outside.
   Voxel_grid<std::uint8_t> exterior;
   /// \f$\Omega_{freeze}\f$: the `FREEZE` voxels and the exterior.
   Voxel_grid<std::uint8_t> freeze_zone;
@@ -206,7 +206,7 @@ struct Piece_segmentation
   /// the region of each face, numbered `0` to `number_of_regions - 1` by smallest face index; a
   /// region lies in one piece.
   std::vector<std::size_t> region;
-  /// per piece: 1 if the piece is closed (no border edge), so that it bounds a volume.
+  /// per piece: 1 if the piece is closed (no border edge and no edge of three faces or more).
   std::vector<std::uint8_t> closed;
   /// per piece: +1, or -1 for an open piece whose orientation was reversed to tell its concave
   /// creases (see `segment_pieces()`).
@@ -215,7 +215,7 @@ struct Piece_segmentation
   std::size_t number_of_regions = 0; ///< the number of regions
   double area = 0.;                  ///< the area of the mesh
 
-  /// whether any piece is closed: the volumetric stages have something to decompose.
+  /// whether any piece is closed.
   bool has_closed_piece() const
   {
     for(std::uint8_t c : closed)

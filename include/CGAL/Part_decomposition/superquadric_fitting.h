@@ -133,7 +133,8 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
     zone_parameters.flow_zone_tolerance = parameters.flow_zone_tolerance;
     zone_parameters.use_freeze_zone = parameters.use_freeze_zone;
     own_zones = compute_fitting_zones<ConcurrencyTag>(
-      prior.classes, fitting_resolutions(prior.resolutions, parameters.fitting_resolution_cap), zone_parameters);
+      prior.classes, tsdf.values, fitting_resolutions(prior.resolutions, parameters.fitting_resolution_cap),
+      zone_parameters);
     zones = &own_zones;
   }
   else
@@ -395,9 +396,8 @@ Superquadric_fitting_result<GeomTraits> fit_superquadrics(const Hierarchical_pri
 
 /*!
 \ingroup PkgPartDecompositionRef
-the same as `fit_superquadrics(prior, tsdf, np)` with the zones computed beforehand, for instance
-next to the distance field, by
-`compute_fitting_zones(prior.classes, fitting_resolutions(prior.resolutions, c), np)` with the same
+the same as `fit_superquadrics(prior, tsdf, np)` with the zones computed beforehand by
+`compute_fitting_zones(prior.classes, tsdf, fitting_resolutions(prior.resolutions, c), np)` with the same
 `flow_zone_tolerance` and `use_freeze_zone`, \f$c\f$ being the `fitting_resolution_cap` of `np`
 (0 by default).
 \throws Invalid_input (`INVALID_PARAMETER`) as `fit_superquadrics(prior, tsdf, np)`, and if

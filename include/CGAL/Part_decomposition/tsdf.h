@@ -160,6 +160,28 @@ std::vector<std::uint8_t> inside_by_winding_number(const std::vector<Triangle_po
   return inside;
 }
 
+// Inside flags by ray votes (`ray_votes()`): inside if the six axis rays see a non-zero winding
+// number, outside if at most three do; in between (the rays that leave through a hole, or the dips
+// of a wavy sheet, which four or five rays cross) the generalized winding number at the centre
+// decides, |w| > 1/2.
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> inside_by_ray_votes(const std::vector<Triangle_points>& tris, int r)
+{
+  std::vector<std::uint8_t> inside = ray_votes<ConcurrencyTag>(tris, r);
+  std::vector<std::size_t> undecided;
+  for(std::size_t v = 0; v < inside.size(); ++v)
+    if(inside[v] == 4 || inside[v] == 5) undecided.push_back(v);
+    else inside[v] = inside[v] == 6 ? 1 : 0;
+  if(undecided.empty()) return inside;
+  const Fast_winding_number wn(tris);
+  const Voxel_grid<std::uint8_t> frame(r, 0); // voxel centres
+  for_each_range<ConcurrencyTag>(undecided.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t n = b; n < e; ++n)
+      inside[undecided[n]] = std::abs(wn(frame.center(undecided[n]))) > 0.5 ? 1 : 0;
+  });
+  return inside;
+}
+
 // Inside flags by flood fill: the non-surface voxels connected to the border are outside, the
 // other non-surface voxels inside; surface voxels take the flag of a voxel they see without
 // crossing a triangle (at most three steps away, so that a hole smaller than a voxel cannot leak
@@ -276,7 +298,7 @@ Tsdf_parameters read_tsdf_parameters(const NamedParameters& np)
   check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation",
                   "in (0, 4 * resolution]");
   p.sign_method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method), defaults::tsdf_sign_method);
-  if(p.sign_method == Tsdf_sign_method::AUTOMATIC) p.sign_method = Tsdf_sign_method::WINDING_NUMBER;
+  if(p.sign_method == Tsdf_sign_method::AUTOMATIC) p.sign_method = Tsdf_sign_method::RAY_VOTES;
   return p;
 }
 
@@ -291,6 +313,9 @@ std::vector<std::uint8_t> inside_flags(const std::vector<Triangle_points>& tris,
     return inside_from_rows(row_crossings<ConcurrencyTag>(tris, r), r, true);
   case Tsdf_sign_method::FLOOD_FILL:
     return inside_by_flood_fill<ConcurrencyTag>(tris, sv, r);
+  case Tsdf_sign_method::RAY_VOTES:
+    if(closed) return inside_from_rows(row_crossings<ConcurrencyTag>(tris, r), r, false);
+    return inside_by_ray_votes<ConcurrencyTag>(tris, r);
   default:
     if(closed) return inside_from_rows(row_crossings<ConcurrencyTag>(tris, r), r, false);
     return inside_by_winding_number<ConcurrencyTag>(tris, sv, r);
@@ -349,9 +374,9 @@ precision on the normalized coordinates: no geometric traits class is needed.
 \par Complexity
 \f$O(F \log F)\f$ to build the tree of the \f$F\f$ triangles, then one closest-triangle query (logarithmic in
 \f$F\f$ in practice) per voxel of the band of width \f$\tau\f$ around the surface, and linear time in the
-number of voxels \f$r^3\f$ for the sign, plus, on a closed mesh, the number of crossings of the rows of
-the grid by the triangles, and, on an open mesh, a hierarchical winding-number evaluation at the
-voxels next to the surface.
+number of voxels \f$r^3\f$ for the sign, plus the number of crossings of the rows of the grid by the
+triangles (rows along one axis on a closed mesh, along the three axes on an open one, with the
+default `Tsdf_sign_method::RAY_VOTES`).
 
 \tparam ConcurrencyTag enables sequential versus parallel computation. Possible values are
         `CGAL::Sequential_tag`, `CGAL::Parallel_tag`, and `CGAL::Parallel_if_available_tag`.

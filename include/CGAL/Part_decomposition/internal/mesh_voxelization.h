@@ -306,6 +306,50 @@ inline std::vector<std::uint8_t> inside_from_rows(const Row_crossings& rc, int r
   return inside;
 }
 
+// Per voxel centre, how many of its six axis rays see a non-zero winding number, counted exactly
+// from the signed crossings of the ray's row with the triangles (Nooruddin and Turk 2003, with
+// signed crossings). On a closed surface the six agree (the winding number); a hole turns only the
+// rays that leave through it, and an open sheet gives the rays that cross it. Rows are computed
+// along x, y and z on the triangles with permuted coordinates.
+template <typename ConcurrencyTag>
+std::vector<std::uint8_t> ray_votes(const std::vector<Triangle_points>& tris, int r)
+{
+  const std::size_t R = std::size_t(r);
+  std::vector<std::uint8_t> votes(R * R * R, 0);
+  std::vector<Triangle_points> permuted(tris.size());
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    // coordinate (axis, axis + 1, axis + 2) of a point becomes (x, y, z)
+    for(std::size_t t = 0; t < tris.size(); ++t)
+      for(int c = 0; c < 3; ++c)
+        for(int a = 0; a < 3; ++a) permuted[t][std::size_t(c)][std::size_t(a)] = tris[t][std::size_t(c)][std::size_t((axis + a) % 3)];
+    const Row_crossings rc = row_crossings<ConcurrencyTag>(permuted, r);
+    const double h = 1. / double(r);
+    for_each_range<ConcurrencyTag>(R * R, [&](std::size_t b, std::size_t e) {
+      for(std::size_t row = b; row < e; ++row)
+      {
+        const std::size_t first = rc.offsets[row], last = rc.offsets[row + 1];
+        int total = 0;
+        for(std::size_t c = first; c < last; ++c) total += rc.sign[c];
+        std::size_t c = last;
+        int beyond = 0; // signed crossings beyond the centre along +x: the winding number of the + ray
+        std::size_t g[3];
+        g[(axis + 1) % 3] = row % R;
+        g[(axis + 2) % 3] = row / R;
+        for(int i = r - 1; i >= 0; --i)
+        {
+          const double x = -0.5 + (i + 0.5) * h;
+          while(c > first && rc.x[c - 1] > x) beyond += rc.sign[--c];
+          g[axis] = std::size_t(i);
+          // the - ray sees the crossings before the centre, with the opposite orientation
+          votes[g[0] + R * (g[1] + R * g[2])] += std::uint8_t((beyond != 0) + (beyond - total != 0));
+        }
+      }
+    });
+  }
+  return votes;
+}
+
 } // namespace internal
 } // namespace Part_decomposition
 } // namespace CGAL

@@ -262,15 +262,15 @@ inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<s
 // the rounding of coplanar or nearly coplanar triangulations.
 constexpr double convexity_tolerance = 1.;
 
-// Per piece: 1 if the volumetric stages can split it: it is closed (it bounds a volume), not
-// convex (an edge is concave by at least `convexity_tolerance` degrees) and of area at least
-// 2 `min_area` (a smaller piece cannot hold two parts of `min_area`).
-inline std::vector<std::uint8_t> volumetric_pieces(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
-                                                   const std::vector<std::uint8_t>& closed, double min_area,
+// Per piece: 1 if the volumetric stages may split it, if it bounds a volume: it is not convex (an
+// edge is concave by at least `convexity_tolerance` degrees as the mesh is oriented) and of area
+// at least 2 `min_area` (a smaller piece cannot hold two parts of `min_area`).
+inline std::vector<std::uint8_t> splittable_pieces(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+                                                   std::size_t number_of_pieces, double min_area,
                                                    double convexity_tolerance)
 {
-  std::vector<std::uint8_t> concave(closed.size(), 0);
-  std::vector<double> area(closed.size(), 0.);
+  std::vector<std::uint8_t> concave(number_of_pieces, 0);
+  std::vector<double> area(number_of_pieces, 0.);
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
   {
     area[piece[i]] += adj.area[i];
@@ -281,10 +281,28 @@ inline std::vector<std::uint8_t> volumetric_pieces(const Face_adjacency& adj, co
         concave[piece[i]] = 1;
     }
   }
-  std::vector<std::uint8_t> volumetric(closed.size(), 0);
-  for(std::size_t p = 0; p < closed.size(); ++p)
-    volumetric[p] = closed[p] && concave[p] && area[p] >= 2. * min_area;
-  return volumetric;
+  std::vector<std::uint8_t> splittable(number_of_pieces, 0);
+  for(std::size_t p = 0; p < number_of_pieces; ++p) splittable[p] = concave[p] && area[p] >= 2. * min_area;
+  return splittable;
+}
+
+// Per piece: the fraction of the length of its face edges that lies on junctions (edges glued to
+// two faces or more, see glue_coincident_border_edges()), each side of an edge counted once.
+template <typename Corners>
+std::vector<double> junction_length_fractions(const Face_adjacency& adj, const Corners& corners,
+                                              const std::vector<std::size_t>& piece, std::size_t number_of_pieces)
+{
+  std::vector<double> junction(number_of_pieces, 0.), total(number_of_pieces, 0.);
+  if(adj.junction.empty()) return junction;
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const double length = (corners(i, k) - corners(i, (k + 2) % 3)).norm();
+      total[piece[i]] += length;
+      if(is_junction(adj, 3 * i + std::size_t(k))) junction[piece[i]] += length;
+    }
+  for(std::size_t p = 0; p < number_of_pieces; ++p) junction[p] = total[p] > 0. ? junction[p] / total[p] : 0.;
+  return junction;
 }
 
 // A volumetric part does not cross a concave crease: the faces of part v in a region other than
