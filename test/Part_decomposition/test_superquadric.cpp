@@ -908,8 +908,23 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
     const Fit never = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0)));
     const Fit four = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(4)));
     const Fit one = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(1)));
-    CHECK(never.primitives.empty());
+    // no fit accepted: one box-like superquadric of the whole volume stands for the shape, the
+    // box [-0.3, 0.3] x [-0.15, 0.15]^2, and claims every voxel that is neither exterior nor Freeze
+    REQUIRE(never.primitives.size() == 1);
     CHECK(never.number_of_rejected_seeds == never.number_of_seeds);
+    CHECK(!never.body_seeded[0]);
+    const std::array<double, 3> a = never.primitives[0].scales();
+    CHECK(std::max({a[0], a[1], a[2]}) == Approx(0.3).margin(1.5 / 32));
+    CHECK(std::min({a[0], a[1], a[2]}) == Approx(0.15).margin(1.5 / 32));
+    CHECK(never.primitives[0].center().x() == Approx(0.).margin(0.5 / 32));
+    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, c.tsdf, PD::fitting_resolutions(c.prior.resolutions));
+    std::size_t claimable = 0;
+    for(std::size_t v = 0; v < zones.freeze_zone.size(); ++v)
+    {
+      claimable += zones.freeze_zone[v] ? 0 : 1;
+      CHECK(never.labels[v] == (zones.freeze_zone[v] ? -1 : 0));
+    }
+    CHECK(never.claimed_voxels[0].size() == claimable);
     REQUIRE(never.number_of_seeds > 4);
     CHECK(four.number_of_seeds == 4);
     CHECK(one.number_of_seeds == 1);

@@ -22,8 +22,11 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>
 
+#include <array>
 #include <cstddef>
+#include <iostream>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -114,6 +117,67 @@ inline void check_fitting_zones(const Fitting_zones& zones, const Hierarchical_p
   check_parameter(match, "the fitting zones", "computed from this prior at its fitting_resolutions()");
 }
 
+// The voxels of the shape's volume that a primitive may claim: neither exterior nor Freeze, or, if
+// there are none (every voxel of a thin shape is Freeze), all the voxels that are not exterior.
+inline std::vector<std::size_t> claimable_volume(const Fitting_zones& zones)
+{
+  std::vector<std::size_t> voxels;
+  for(std::size_t v = 0; v < zones.exterior.size(); ++v)
+    if(!zones.freeze_zone[v]) voxels.push_back(v);
+  if(voxels.empty())
+    for(std::size_t v = 0; v < zones.exterior.size(); ++v)
+      if(!zones.exterior[v]) voxels.push_back(v);
+  return voxels;
+}
+
+// A fit that accepted no primitive on a shape that bounds a volume gets one: the box-like
+// superquadric of the claimable volume on its principal axes, which claims it all. The parts then
+// are those of the pieces and creases alone, each with a primitive. Returns false if there is no
+// volume to stand for.
+template <typename GeomTraits>
+bool fall_back_to_one_primitive(Superquadric_fitting_result<GeomTraits>& result, const Fitting_zones& zones,
+                                const Normalization& normalization)
+{
+  const std::vector<std::size_t> voxels = claimable_volume(zones);
+  if(voxels.empty()) return false;
+  Part_box box;
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(voxels.size());
+  for(std::size_t v : voxels)
+  {
+    const std::array<double, 3> c = zones.exterior.center(v);
+    points.push_back(Eigen::Vector3d(c[0], c[1], c[2]));
+    box.area += 1.;
+    box.first += points.back();
+    box.second += points.back() * points.back().transpose();
+    result.labels[v] = 0;
+  }
+  fit_box_to_points(box, points);
+  box.half += Eigen::Vector3d::Constant(0.5 * zones.exterior.voxel_size()); // the voxels' own extent
+  const Superquadric<GeomTraits> sq = box_superquadric<GeomTraits>(box, Eigen::Vector3d::Zero());
+  result.primitives.push_back(sq);
+  result.input_primitives.push_back(sq.in_input_coordinates(normalization));
+  result.stage_resolution.push_back(zones.exterior.resolution());
+  result.body_seeded.push_back(false);
+  result.seed_voxel.push_back(voxels[voxels.size() / 2]);
+  result.semi_axis_scale.push_back(0.);
+  result.fit_cost.push_back(0.);
+  result.claimed_voxels.assign(1, voxels);
+  return true;
+}
+
+// What `verbose` says when no superquadric was accepted.
+template <typename GeomTraits>
+void report_no_primitive(const Superquadric_fitting_result<GeomTraits>& result, bool fell_back)
+{
+  std::cerr << "no superquadric accepted: " << result.number_of_seeds << " seeds, "
+            << result.rejected_by_flow_zone << " left the Flow zone, " << result.rejected_by_volume
+            << " claimed less than V_min, " << result.rejected_degenerate << " had too few samples; "
+            << (fell_back ? "one box-like superquadric of the whole volume stands for the shape ("
+                              + std::to_string(result.claimed_voxels.front().size()) + " voxels)\n"
+                          : "the shape bounds no volume on the grid\n");
+}
+
 // fit_superquadrics(): reads the parameters, checks the inputs, checks the given zones or
 // computes them if `zones` is null, and runs the fitter.
 template <typename ConcurrencyTag, typename GeomTraits, typename NamedParameters>
@@ -141,6 +205,11 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
     check_fitting_zones(*zones, prior, fit_res);
   Superquadric_fitter<ConcurrencyTag, GeomTraits> fitter(prior, tsdf, *zones, fit_res, parameters);
   Superquadric_fitting_result<GeomTraits> result = fitter.run();
+  if(result.primitives.empty())
+  {
+    const bool fell_back = fall_back_to_one_primitive(result, *zones, prior.normalization);
+    if(parameters.verbose) report_no_primitive(result, fell_back);
+  }
   if(parameters.merge_primitives)
     merge_explained_primitives(result, prior.classes, tsdf.values, parameters.minimum_merge_iou,
                                primitive_merge_freeze_fraction);
@@ -198,6 +267,11 @@ manual, \ref PD_Deviations):
   step gains less than \f$10^{-8}\f$ of the cost (scipy's `ftol`); the first interior-weight
   variance is the mean squared clipped residual at \f$\theta_0\f$, set once (`ONE_SHOT`, the
   default) or re-estimated after each solve as MPS does (`MPS_REESTIMATED`).
+- A fit that accepts no superquadric on a shape that bounds a volume (every seed rejected) is
+  given one: the box-like superquadric (exponents 0.1) of the voxels neither exterior nor Freeze
+  (or, if every voxel is Freeze, of the voxels that are not exterior) on their principal axes,
+  which claims them all; `verbose` says so and why the seeds were rejected. The paper leaves the
+  shape without a primitive.
 - Without TSDF guidance, \f$d_\mathcal{M}\f$ is replaced by \f$-\tau\f$ inside the hull and
   \f$+\tau\f$ in the exterior.
 - Small residual regions: unclaimed non-Freeze components smaller than the surface \f$V_{min}\f$
