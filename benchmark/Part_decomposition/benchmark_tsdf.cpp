@@ -1,9 +1,12 @@
 // Times compute_tsdf() (finest grid 64^3, tau = 8 voxels) on the given meshes: median of several
 // runs with 1 and 2 threads, the process CPU time, and the time of each internal step.
 //
-// usage: benchmark_tsdf [-runs N] [-method auto|inside|winding|flood] [-open K] [-check] [-aabb]
-//                       mesh [mesh ...]
-//   -open K  removes K faces spread over the mesh first (an open mesh: hierarchical winding numbers)
+// usage: benchmark_tsdf [-runs N] [-method auto|votes|inside|winding|flood] [-open K] [-check] [-aabb]
+//                       [-closed DIR] mesh [mesh ...]
+//   -open K  removes K faces spread over the mesh first (an open mesh)
+//   -closed DIR  for an open mesh with holes (../shared/data/open_meshes/make_open.py), the closed
+//            original of the same file name in DIR: the voxels whose sign differs from the
+//            original's (exact winding numbers) in the same frame, and the original's inside voxels
 //   -check   compares 4000 voxels with CGAL: AABB-tree distance, and Side_of_triangle_mesh sign of
 //            the closed input (with -open: of the mesh before its faces were removed, at the
 //            voxels farther than one voxel from the surface)
@@ -103,6 +106,7 @@ struct Options
 {
   int runs = 5, open_faces = 0;
   bool check = false, aabb = false;
+  std::string closed_dir;
   PD::Tsdf_sign_method method = PD::Tsdf_sign_method::AUTOMATIC;
   std::vector<std::string> files;
 };
@@ -117,6 +121,7 @@ static Options parse_options(int argc, char** argv)
     else if(a == "-open" && i + 1 < argc) o.open_faces = std::max(0, std::atoi(argv[++i]));
     else if(a == "-check") o.check = true;
     else if(a == "-aabb") o.aabb = true;
+    else if(a == "-closed" && i + 1 < argc) o.closed_dir = argv[++i];
     else if(a == "-method" && i + 1 < argc)
     {
       const std::string m = argv[++i];
@@ -186,6 +191,23 @@ static PD::Truncated_signed_distance_field time_tsdf(const Mesh& mesh, const Opt
   return tsdf;
 }
 
+// Prints the number of voxels whose sign differs from that of the closed original `file` (its exact
+// winding numbers, in the frame of `tsdf`), of its inside voxels.
+static void compare_with_closed(const std::string& file, const PD::Truncated_signed_distance_field& tsdf)
+{
+  Mesh closed;
+  PD::IO::read_triangle_mesh(file, closed);
+  const PD::Truncated_signed_distance_field reference =
+    PD::compute_tsdf<Tag>(closed, PD::parameters::normalization(tsdf.normalization));
+  std::size_t inside = 0, wrong = 0;
+  for(std::size_t i = 0; i < reference.values.size(); ++i)
+  {
+    inside += std::signbit(reference.values[i]) ? 1 : 0;
+    wrong += std::signbit(reference.values[i]) != std::signbit(tsdf.values[i]) ? 1 : 0;
+  }
+  std::printf(" | closed original: %zu inside, %zu of the open mesh's signs differ", inside, wrong);
+}
+
 // Prints the largest distance error and the number of wrong signs of 4000 voxels, against CGAL's
 // AABB tree on `mesh` and Side_of_triangle_mesh on `input` (the mesh before faces were removed).
 static void check_against_cgal(const Mesh& mesh, const Mesh& input, const PD::Truncated_signed_distance_field& tsdf,
@@ -221,7 +243,8 @@ int main(int argc, char** argv)
   if(o.files.empty())
   {
     std::cerr << "usage: " << argv[0]
-              << " [-runs N] [-method auto|inside|winding|flood] [-open K] [-check] [-aabb] mesh [mesh ...]\n";
+              << " [-runs N] [-method auto|votes|inside|winding|flood] [-open K] [-check] [-aabb] [-closed DIR]"
+                 " mesh [mesh ...]\n";
     return EXIT_FAILURE;
   }
 #ifndef CGAL_LINKED_WITH_TBB
@@ -252,6 +275,7 @@ int main(int argc, char** argv)
     const std::string shown = file.substr(file.find_last_of('/') == std::string::npos ? 0 : file.find_last_of('/') + 1);
     const PD::Truncated_signed_distance_field tsdf = time_tsdf(mesh, o, shown);
     if(o.check) check_against_cgal(mesh, input, tsdf, o.open_faces);
+    if(!o.closed_dir.empty()) compare_with_closed(o.closed_dir + "/" + shown, tsdf);
     std::printf("\n");
   }
   return EXIT_SUCCESS;
