@@ -135,18 +135,28 @@ inline std::vector<std::size_t> weld_border_points(const std::vector<std::array<
     if(neighbors.on_border(v)) candidates.push_back(v);
   if(candidates.size() < 2) return target;
 
-  // groups by union-find; the root of a group is its smallest point, whose candidate rank lists
-  // the group's members
-  std::vector<std::vector<std::size_t> > members(candidates.size());
-  for(std::size_t c = 0; c < candidates.size(); ++c) members[c].push_back(candidates[c]);
+  const std::vector<std::pair<std::size_t, std::size_t> > pairs = close_pairs(points, candidates, tolerance);
+  if(pairs.empty()) return target; // the common case: no seam left open
+  // groups by union-find; the root of a group is its smallest point, at whose rank among the
+  // points of the pairs the group's members are listed
+  std::vector<std::size_t> paired;
+  for(const auto& p : pairs)
+  {
+    paired.push_back(p.first);
+    paired.push_back(p.second);
+  }
+  std::sort(paired.begin(), paired.end());
+  paired.erase(std::unique(paired.begin(), paired.end()), paired.end());
+  std::vector<std::vector<std::size_t> > members(paired.size());
+  for(std::size_t c = 0; c < paired.size(); ++c) members[c].push_back(paired[c]);
   auto rank = [&](std::size_t v) {
-    return std::size_t(std::lower_bound(candidates.begin(), candidates.end(), v) - candidates.begin());
+    return std::size_t(std::lower_bound(paired.begin(), paired.end(), v) - paired.begin());
   };
   auto root = [&](std::size_t v) {
     while(target[v] != v) v = target[v] = target[target[v]];
     return v;
   };
-  for(const auto& p : close_pairs(points, candidates, tolerance))
+  for(const auto& p : pairs)
   {
     std::size_t a = root(p.first), b = root(p.second);
     if(a == b) continue;
