@@ -497,7 +497,9 @@ public:
   /// \name Results
   /// @{
 
-  /// the pieces and their regions. \pre `segment_pieces()` was called.
+  /// the pieces and their regions; once `compute_distance_field()` was called, an open piece that
+  /// bounds a volume faces out of it, and its regions are those of that orientation.
+  /// \pre `segment_pieces()` was called.
   const Piece_segmentation& pieces() const { return m_pieces; }
   /// the normalization of the mesh into the cube of the grids.
   const Normalization& normalization() const { return m_normalization; }

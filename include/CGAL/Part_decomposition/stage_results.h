@@ -209,7 +209,8 @@ struct Piece_segmentation
   /// per piece: 1 if the piece is closed (no border edge and no edge of three faces or more).
   std::vector<std::uint8_t> closed;
   /// per piece: +1, or -1 for an open piece whose orientation was reversed to tell its concave
-  /// creases (see `segment_pieces()`).
+  /// creases (see `segment_pieces()`; `Part_decomposer` turns an open piece that bounds a volume
+  /// to face out of it).
   std::vector<int> orientation;
   std::size_t number_of_pieces = 0;  ///< the number of pieces
   std::size_t number_of_regions = 0; ///< the number of regions
