@@ -1056,19 +1056,7 @@ TEST_CASE("whether a piece bounds a volume is decided by the distance field, not
   // A corrugated open sheet is not convex, so it may need the volumetric stages, until the distance
   // field shows that it bounds no volume (its dips hold a few voxels, the rest has the outside on
   // both sides); a dumbbell with holes bounds one.
-  test_shapes::Soup sheet;
-  const int n = 24;
-  auto P = [&](int i, int j) {
-    const double x = -1. + 2. * i / n, y = -1. + 2. * j / n;
-    return Point(x, y, 0.15 * std::sin(3. * x) * std::sin(3. * y));
-  };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-    {
-      sheet.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
-      sheet.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
-    }
-  const Mesh wavy = sheet.mesh();
+  const Mesh wavy = test_shapes::make_wavy_sheet(24, 0.15);
   PD::Part_decomposer<Mesh> sheet_decomposer(wavy);
   sheet_decomposer.segment_pieces();
   CHECK(sheet_decomposer.needs_volumetric_stages());

@@ -881,19 +881,7 @@ TEST_CASE("an open sheet has no inside, a sphere with a hole of a tenth of its a
   // a little more than half of the directions; it holds no volume.
   for(double amplitude : {0., 0.05})
   {
-    test_shapes::Soup sheet;
-    const int n = 20;
-    auto P = [&](int i, int j) {
-      const double x = -1. + 2. * i / n, y = -1. + 2. * j / n;
-      return Point(x, y, amplitude * std::sin(3. * x) * std::sin(3. * y));
-    };
-    for(int i = 0; i < n; ++i)
-      for(int j = 0; j < n; ++j)
-      {
-        sheet.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
-        sheet.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
-      }
-    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(sheet.mesh());
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(test_shapes::make_wavy_sheet(20, amplitude));
     const double deepest = *std::min_element(tsdf.values.values().begin(), tsdf.values.values().end());
     if(amplitude == 0.) CHECK(deepest >= 0.);
     CHECK(deepest > -1. / 64.);

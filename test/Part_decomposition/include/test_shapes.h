@@ -235,6 +235,24 @@ inline Mesh make_l_bracket(double la, double lb, double t, double w, double h, s
   return m;
 }
 
+// An open square sheet [-1,1]^2 of 2 n^2 triangles, z = amplitude sin(3x) sin(3y): flat for
+// amplitude 0, corrugated (not convex, bounding no volume) otherwise.
+inline Mesh make_wavy_sheet(int n, double amplitude)
+{
+  Soup sheet;
+  auto P = [&](int i, int j) {
+    const double x = -1. + 2. * i / n, y = -1. + 2. * j / n;
+    return Point(x, y, amplitude * std::sin(3. * x) * std::sin(3. * y));
+  };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      sheet.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+      sheet.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+    }
+  return sheet.mesh();
+}
+
 // The triangles of `m` as a soup: its points and three point indices per face, in the order of
 // faces(m).
 inline void mesh_soup(const Mesh& m, std::vector<std::array<double, 3> >& points,
