@@ -567,18 +567,17 @@ private:
   {
     m_volumetric_piece = m_splittable_piece;
     if(!m_has_tsdf) return;
+    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
+    // the triangles by face index, in the unit frame of the field
     std::vector<internal::Triangle_points> triangles(num_faces(m_tm));
-    for(auto f : faces(m_tm))
-    {
-      internal::Triangle_points& t = triangles[std::size_t(get(m_fim, f))];
-      int c = 0;
-      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm)) t[c++] = m_normalization.to_unit(get(m_vpm, v));
-    }
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      for(int c = 0; c < 3; ++c)
+        triangles[i][std::size_t(c)] = m_normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
     const double depth = internal::bounding_probe_depth / double(m_tsdf.values.resolution());
     const internal::Bounding_fractions sides = internal::bounding_area_fractions(
       triangles, m_pieces.piece, m_pieces.number_of_pieces, m_tsdf.values, depth);
-    const std::vector<double> junction = internal::junction_length_fractions(
-      m_piece_adjacency, internal::Face_corners(m_tm, m_fim, m_vpm), m_pieces.piece, m_pieces.number_of_pieces);
+    const std::vector<double> junction =
+      internal::junction_length_fractions(m_piece_adjacency, corners, m_pieces.piece, m_pieces.number_of_pieces);
     bool reoriented = false;
     for(std::size_t p = 0; p < m_pieces.number_of_pieces; ++p)
     {
