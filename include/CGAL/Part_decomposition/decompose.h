@@ -78,7 +78,7 @@ constexpr double minimum_bounding_fraction = 0.5;
 // A piece whose non-manifold junctions (edges of three faces or more) make up at least this
 // fraction of the length of its edges is an assembly of sheets (walls and shelves glued along
 // lines), whose parts are its sheets; a scan's few non-manifold edges make up far less. The CAD-style
-// set gives the same parts from 0.0003 to 0.01 (see the user manual).
+// set gives the same parts from 0.0003 to 0.01 (benchmark/Part_decomposition/RESULTS.md).
 constexpr double maximum_junction_fraction = 0.001;
 
 // The box-like superquadric of the principal-axis bounding box of a surface given as triangles
@@ -811,7 +811,7 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
 
 // A part of the finer pass is thin if its superquadric's smallest semi-axis is below this length
 // of the normalized cube (5 voxels of the default 64^3 grid; tuned on half A of the development
-// shapes, see the user manual).
+// shapes, see benchmark/Part_decomposition/RESULTS.md).
 constexpr double thin_part_semi_axis = 5. / 64.;
 
 // The thin parts of `finer` replace, face by face, the parts of `pass`, each with its superquadric:
@@ -1192,7 +1192,7 @@ are chained with `parameters::combine()`)
                           of the first pass keep theirs. Thin parts (wings, fins, legs, plates) that the
                           default grid cannot resolve are separated; the bodies keep the parts of
                           the default grid, which the finer grid tends to tile. Costs a second,
-                          finer decomposition (see the user manual for its time and memory)}
+                          finer decomposition (its time and memory: `benchmark/Part_decomposition/RESULTS.md`)}
     \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
                    `voxel_resolutions`; not with `number_of_parts` nor `part_hierarchy`}
     \cgalParamDefault{`0`}

@@ -155,7 +155,7 @@ that fill into the interior, which then becomes Freeze and leaves the fitter not
 sign of the distance field (see `Tsdf_sign_method`) survives holes. On a closed surface the two
 differ only where an outside pocket is walled off by occupied voxels (a gap narrower than a voxel,
 such as between two fingers), which the fill takes as inside; the
-`Tsdf_sign_method::FLOOD_FILL` sign is the paper's rule. The user manual measures both.
+`Tsdf_sign_method::FLOOD_FILL` sign is the paper's rule; `benchmark/Part_decomposition/RESULTS.md` measures both.
 
 The morphology is exact (linear-time Euclidean distance transforms) and deterministic.
 

@@ -123,7 +123,7 @@ The \em surface voxels below are the voxels whose (closed) box meets a triangle.
 - `AUTOMATIC` = `RAY_VOTES`: exact on every closed mesh, self-intersecting or not, with no
   costly self-intersection test, and robust on open ones: on the development shapes with holes
   it puts 1.5 to 3.7 times fewer voxels on the wrong side than `WINDING_NUMBER` (against the
-  closed originals), in half its time (see the user manual).
+  closed originals), in half its time (`benchmark/Part_decomposition/RESULTS.md`).
 */
 enum class Tsdf_sign_method
 {
@@ -195,7 +195,7 @@ constexpr double minimum_surface_volume = 3.;
 /// \f$\mu_{ext}\f$, the exterior intrusion penalty
 constexpr double exterior_penalty = 5.;
 /// the coverage of the valid volume that ends a fitting stage (the paper's 0.95 leaves thin
-/// limbs without a primitive: see the user manual)
+/// limbs without a primitive: see `benchmark/Part_decomposition/RESULTS.md`)
 constexpr double coverage_target = 0.999;
 /// the radius of the region of interest of a seed, in voxels of the fitting resolution
 constexpr double roi_radius = 8.;

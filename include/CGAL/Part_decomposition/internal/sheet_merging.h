@@ -35,7 +35,7 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// Thresholds of the sheet merge, measured on the development meshes (see the user manual).
+// Thresholds of the sheet merge, measured on the development meshes (benchmark/Part_decomposition/RESULTS.md).
 struct Sheet_merging_thresholds
 {
   // a primitive is flat when its smallest semi-axis times this is below its middle one
