@@ -8,6 +8,11 @@ set -eu
 
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 python=${1:-/usr/bin/python3}
+if [ -n "${PD_HITOPS:-}" ]; then
+  # absolute: the tests run from the scratch directory
+  PD_HITOPS=$(cd "$(dirname "$PD_HITOPS")" && pwd)/$(basename "$PD_HITOPS")
+  export PD_HITOPS
+fi
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
