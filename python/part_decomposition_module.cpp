@@ -1,5 +1,6 @@
-// The Python module part_decomposition: decompose() on numpy arrays and decompose_file() on a mesh
-// file, with every named parameter of CGAL::Part_decomposition::decompose() as a keyword.
+// The compiled core part_decomposition._core of the Python package part_decomposition: decompose()
+// on numpy arrays and decompose_file() on a mesh file, with every named parameter of
+// CGAL::Part_decomposition::decompose() as a keyword, and the parts at every level of the hierarchy.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -210,6 +211,10 @@ struct Result
   std::vector<Primitive> primitives;
   PD::Stage_timings timings;
   double read_seconds = 0.;
+  // the levels of labels_at(): none with thin parts, whose finer pass is outside the tree
+  bool has_hierarchy = false;
+  PD::Part_hierarchy<K> hierarchy;
+  PD::IO::Mesh_file_info info; // mesh faces to input faces
 };
 
 template <typename NamedParameters>
@@ -228,7 +233,8 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
   std::vector<Superquadric> primitives;
   auto np = PDP::combine(Part_decomposition_tools::named_parameters(p),
                          PDP::primitive_output_iterator(std::back_inserter(primitives)),
-                         PDP::stage_timings(&r.timings));
+                         PDP::stage_timings(&r.timings),
+                         PDP::part_hierarchy(p.thin_part_resolution == 0 ? &r.hierarchy : nullptr));
 #ifdef CGAL_LINKED_WITH_TBB
   // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
   tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);
@@ -241,6 +247,7 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
     const K::Point_3 c = q.center();
     r.primitives.push_back(Primitive{{{c.x(), c.y(), c.z()}}, q.scales(), q.rotation(), {{q.epsilon1(), q.epsilon2()}}});
   }
+  r.has_hierarchy = p.thin_part_resolution == 0;
   return part;
 }
 
@@ -249,6 +256,47 @@ py::array_t<double> vector_array(const double* data, std::vector<py::ssize_t> sh
   py::array_t<double> a(shape);
   std::copy(data, data + a.size(), a.mutable_data());
   return a;
+}
+
+py::array_t<std::int64_t> index_array(const std::vector<std::size_t>& v)
+{
+  py::array_t<std::int64_t> a(py::ssize_t(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// The input faces of each part, in increasing order.
+py::list parts_list(const Result& r)
+{
+  std::vector<std::vector<std::size_t> > faces(r.number_of_parts);
+  for(std::size_t i = 0; i < r.labels.size(); ++i) faces[r.labels[i]].push_back(i);
+  py::list out;
+  for(const auto& f : faces) out.append(index_array(f));
+  return out;
+}
+
+py::array_t<std::int64_t> part_faces(const Result& r, py::ssize_t k)
+{
+  if(k < 0 || std::size_t(k) >= r.number_of_parts)
+    throw py::index_error("part " + std::to_string(k) + " out of range: there are " + std::to_string(r.number_of_parts) +
+                          " parts");
+  std::vector<std::size_t> faces;
+  for(std::size_t i = 0; i < r.labels.size(); ++i)
+    if(r.labels[i] == std::size_t(k)) faces.push_back(i);
+  return index_array(faces);
+}
+
+std::size_t number_of_levels(const Result& r) { return r.has_hierarchy ? r.hierarchy.number_of_leaves() : 0; }
+
+// The labels of level k of the hierarchy, numbered as decompose(number_of_parts=k) numbers them.
+py::array_t<std::int64_t> labels_at(const Result& r, py::ssize_t k)
+{
+  if(!r.has_hierarchy)
+    throw py::value_error("no part hierarchy: a decomposition with thin_part_resolution has only its own parts");
+  const std::size_t levels = number_of_levels(r);
+  if(k < 1 || std::size_t(k) > levels)
+    throw py::value_error("labels_at(" + std::to_string(k) + "): the levels are 1 to " + std::to_string(levels));
+  return index_array(PD::IO::labels_in_file_order(r.info, r.hierarchy.labels(std::size_t(k))));
 }
 
 py::dict timings_dict(const Result& r)
@@ -330,6 +378,7 @@ Result decompose_arrays(py::handle vertices, py::handle faces, const py::kwargs&
     PD::IO::triangle_mesh_from_polygon_soup(points, triangles, mesh, PD::parameters::weld_tolerance(p.weld_tolerance));
   r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
+  r.info = info;
   return r;
 }
 
@@ -344,6 +393,7 @@ Result decompose_path(py::object path_like, const py::kwargs& kwargs)
   const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(p.weld_tolerance));
   r.read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.labels = PD::IO::labels_in_file_order(info, run(mesh, p, r));
+  r.info = info;
   return r;
 }
 
@@ -358,9 +408,10 @@ std::string keyword_documentation()
 
 } // namespace
 
-PYBIND11_MODULE(part_decomposition, m)
+PYBIND11_MODULE(_core, m)
 {
-  m.doc() = "Hi-TOPS part decomposition of triangle meshes (the CGAL package Part_decomposition).";
+  m.doc() = "The compiled core of part_decomposition: import part_decomposition instead.";
+  m.attr("__version__") = PART_DECOMPOSITION_VERSION;
 
   // a ValueError, so that `except ValueError` catches every refused input
   py::register_exception<PD::Invalid_input>(m, "InvalidInput", PyExc_ValueError);
@@ -381,15 +432,19 @@ PYBIND11_MODULE(part_decomposition, m)
     });
 
   py::class_<Result>(m, "Decomposition", "The parts of a mesh.")
-    .def_property_readonly("labels", [](const Result& r) {
-        py::array_t<std::int64_t> a(py::ssize_t(r.labels.size()));
-        std::copy(r.labels.begin(), r.labels.end(), a.mutable_data());
-        return a;
-      }, "(m,) int64: the part of each input face, in [0, number_of_parts)")
+    .def_property_readonly("labels", [](const Result& r) { return index_array(r.labels); },
+                           "(m,) int64: the part of each input face, in [0, number_of_parts)")
     .def_readonly("number_of_parts", &Result::number_of_parts, "the number of parts")
     .def_readonly("primitives", &Result::primitives, "one Primitive per part, part k explained by primitives[k]")
     .def_property_readonly("timings", &timings_dict,
                            "wall-clock seconds: read (the mesh from the file or arrays) and each stage of decompose()")
+    .def("parts", &parts_list, "one int64 array per part: the input faces of part k, increasing")
+    .def("part_faces", &part_faces, py::arg("k"), "(n_k,) int64: the input faces of part k, increasing")
+    .def_property_readonly("levels", [](const Result& r) {
+        return py::module_::import("builtins").attr("range")(1, number_of_levels(r) + 1);
+      }, "the numbers of parts labels_at() accepts: range(1, leaves + 1), empty with thin_part_resolution")
+    .def("labels_at", &labels_at, py::arg("k"),
+         "(m,) int64: the part of each input face at level k of the part hierarchy (k parts)")
     .def("__repr__", [](const Result& r) {
       return "Decomposition(" + std::to_string(r.labels.size()) + " faces, " + std::to_string(r.number_of_parts) + " parts)";
     });

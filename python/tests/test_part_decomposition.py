@@ -1,6 +1,7 @@
-"""Tests of the Python module part_decomposition: arrays in, labels out, parameters, errors, and the
-same labels as the hitops tool. Run by ctest (test python_pytest), which sets PYTHONPATH to the
-module, PD_EXAMPLE_DATA_DIR to the shipped meshes and PD_HITOPS to the hitops tool."""
+"""Tests of the Python package part_decomposition: arrays and mesh objects in, labels out, parts and
+the hierarchy, parameters, errors, and the same labels as the hitops tool. Run by ctest (test
+python_pytest), which sets PYTHONPATH to the package in the build tree, PD_EXAMPLE_DATA_DIR to the
+shipped meshes and PD_HITOPS to the hitops tool, and by install_and_test.sh on the installed package."""
 
 import json
 import os

@@ -1,0 +1,244 @@
+"""Tests of what the package adds around decompose(): the parts and the hierarchy of a
+Decomposition, mesh objects as input, decompose_bytes(), and the type stubs."""
+
+import ast
+import io
+import os
+import re
+import struct
+import tempfile
+
+import numpy as np
+import pytest
+
+import part_decomposition as pd
+from test_part_decomposition import DATA, FAST, read_off, write_glb, write_off
+
+
+@pytest.fixture(scope="module")
+def dumbbell():
+    return read_off(os.path.join(DATA, "dumbbell.off"))
+
+
+@pytest.fixture(scope="module")
+def animal():
+    return pd.decompose_file(os.path.join(DATA, "animal.off"), **FAST)
+
+
+def test_parts_and_part_faces_follow_the_labels(animal):
+    r = animal
+    parts = r.parts()
+    assert len(parts) == r.number_of_parts
+    for k, faces in enumerate(parts):
+        assert faces.dtype == np.int64 and len(faces) > 0
+        assert (np.diff(faces) > 0).all()
+        assert (r.labels[faces] == k).all()
+        assert np.array_equal(r.part_faces(k), faces)
+    # together, every face once
+    assert np.array_equal(np.sort(np.concatenate(parts)), np.arange(len(r.labels)))
+    for k in (-1, r.number_of_parts):
+        with pytest.raises(IndexError, match="out of range"):
+            r.part_faces(k)
+
+
+def coarser_part_of(fine, coarse):
+    """The part of `coarse` holding each part of `fine`; AssertionError if one straddles two."""
+    base = coarse.max() + 1
+    pairs = np.unique(fine * base + coarse)  # one per (fine, coarse) pair, by fine part
+    assert len(pairs) == fine.max() + 1, "a finer part lies in several coarser parts"
+    return pairs % base
+
+
+def test_the_levels_nest_down_to_the_leaves(animal):
+    r = animal
+    levels = r.levels
+    assert isinstance(levels, range) and levels.start == 1 and levels.step == 1
+    assert r.number_of_parts in levels and len(levels) > r.number_of_parts  # finer levels exist
+    previous = None
+    for k in levels:
+        labels = r.labels_at(k)
+        assert labels.dtype == np.int64 and labels.shape == r.labels.shape
+        assert np.array_equal(np.unique(labels), np.arange(k))
+        if previous is not None:
+            # one merge from level k to level k - 1: one part is made of two, the others stay
+            counts = np.bincount(coarser_part_of(labels, previous), minlength=k - 1)
+            assert sorted(counts) == [1] * (k - 2) + [2]
+        previous = labels
+    for k in (0, len(levels) + 1):
+        with pytest.raises(ValueError, match="levels are 1 to"):
+            r.labels_at(k)
+
+
+def test_the_default_parts_are_a_level(animal):
+    r = animal
+    # the same parts, numbered alike (by their first face)
+    assert np.array_equal(r.labels_at(r.number_of_parts), r.labels)
+    # coarser levels merge default parts, finer levels split them
+    coarse = r.labels_at(max(1, r.number_of_parts - 2))
+    coarser_part_of(r.labels, coarse)
+    coarser_part_of(r.labels_at(len(r.levels)), r.labels)
+
+
+def test_labels_at_is_decompose_with_that_number_of_parts(dumbbell):
+    vertices, faces = dumbbell
+    r = pd.decompose(vertices, faces, **FAST)
+    for k in sorted({1, 2, r.number_of_parts + 1, len(r.levels)}):
+        fixed = pd.decompose(vertices, faces, number_of_parts=k, **FAST)
+        assert fixed.number_of_parts == k
+        assert np.array_equal(r.labels_at(k), fixed.labels)
+        assert np.array_equal(fixed.labels_at(k), fixed.labels)
+
+
+def test_thin_parts_have_no_hierarchy(dumbbell):
+    vertices, faces = dumbbell
+    r = pd.decompose(vertices, faces, thin_part_resolution=64, **FAST)
+    assert len(r.levels) == 0
+    with pytest.raises(ValueError, match="thin_part_resolution"):
+        r.labels_at(r.number_of_parts)
+    assert len(r.parts()) == r.number_of_parts
+
+
+class TrackedArray(np.ndarray):
+    """Stands for trimesh's ndarray subclass."""
+
+
+class TrimeshLike:
+    """The attributes of trimesh.Trimesh that matter: .triangles are corner coordinates there."""
+
+    def __init__(self, vertices, faces):
+        self.vertices = vertices.view(TrackedArray)
+        self.faces = faces.view(TrackedArray)
+        self.triangles = vertices[faces]
+
+
+class Vector:
+    """Stands for Open3D's Vector3dVector and Vector3iVector: no ndarray, but numpy.asarray works."""
+
+    def __init__(self, values):
+        self._values = [tuple(v) for v in values.tolist()]
+        self._dtype = values.dtype
+
+    def __len__(self):
+        return len(self._values)
+
+    def __array__(self, dtype=None):
+        return np.array(self._values, dtype=dtype or self._dtype)
+
+
+class Open3DLike:
+    def __init__(self, vertices, faces):
+        self.vertices = Vector(vertices)
+        self.triangles = Vector(faces.astype(np.int32))
+
+
+def test_mesh_objects_give_the_labels_of_their_arrays(dumbbell):
+    vertices, faces = dumbbell
+    expected = pd.decompose(vertices, faces, **FAST).labels
+    assert np.array_equal(pd.decompose(TrimeshLike(vertices, faces), **FAST).labels, expected)
+    assert np.array_equal(pd.decompose(Open3DLike(vertices, faces), **FAST).labels, expected)
+    with pytest.raises(TypeError, match="triangles"):
+        pd.decompose(object())
+    half = TrimeshLike(vertices, faces)
+    del half.faces, half.triangles
+    with pytest.raises(TypeError, match="TrimeshLike"):
+        pd.decompose(half)
+
+
+def write_obj(path, vertices, faces):
+    with open(path, "w") as f:
+        f.writelines("v %r %r %r\n" % tuple(v) for v in vertices.tolist())
+        f.writelines("f %d %d %d\n" % tuple(t) for t in (faces + 1).tolist())
+
+
+def write_ply(path, vertices, faces):
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
+                "property double z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                % (len(vertices), len(faces)))
+        f.writelines("%r %r %r\n" % tuple(v) for v in vertices.tolist())
+        f.writelines("3 %d %d %d\n" % tuple(t) for t in faces.tolist())
+
+
+def write_stl(path, vertices, faces):
+    """Binary STL: float32 corners, no shared vertices."""
+    with open(path, "wb") as f:
+        f.write(b"\0" * 80 + struct.pack("<I", len(faces)))
+        for t in faces:
+            f.write(struct.pack("<12fH", 0, 0, 0, *vertices[t].ravel(), 0))
+
+
+def test_decompose_bytes_gives_the_labels_of_decompose_file(dumbbell):
+    vertices, faces = dumbbell
+    expected = pd.decompose(vertices, faces, **FAST).labels
+    writers = {"off": write_off, "obj": write_obj, "ply": write_ply, "stl": write_stl,
+               "glb": lambda p, v, f: write_glb(p, [(v.astype(np.float32), f.astype(np.uint32))], [{"mesh": 0}], [0])}
+    assert set(writers) == set(pd.FORMATS)
+    with tempfile.TemporaryDirectory() as d:
+        for kind, write in writers.items():
+            path = os.path.join(d, "dumbbell." + kind)
+            write(path, vertices, faces)
+            with open(path, "rb") as f:
+                data = f.read()
+            from_bytes = pd.decompose_bytes(data, kind, **FAST)
+            assert np.array_equal(from_bytes.labels, pd.decompose_file(path, **FAST).labels), kind
+            if kind in ("off", "obj", "ply"):  # the same doubles as the arrays
+                assert np.array_equal(from_bytes.labels, expected), kind
+    # any bytes-like object or binary file, any spelling of the format
+    data = open(os.path.join(DATA, "dumbbell.off"), "rb").read()
+    for contents, kind in ((bytearray(data), "OFF"), (memoryview(data), ".off"), (io.BytesIO(data), "off")):
+        assert np.array_equal(pd.decompose_bytes(contents, kind, **FAST).labels, expected)
+
+
+def test_decompose_bytes_refuses_what_it_cannot_read():
+    data = open(os.path.join(DATA, "dumbbell.off"), "rb").read()
+    for kind in ("gltf", "xyz", ""):
+        with pytest.raises(ValueError, match="format must be one of 'glb', 'obj', 'off', 'ply', 'stl'"):
+            pd.decompose_bytes(data, kind)
+    with pytest.raises(TypeError, match="encode"):
+        pd.decompose_bytes(data.decode(), "off")
+    with pytest.raises(TypeError):
+        pd.decompose_bytes(12, "off")
+    with pytest.raises(ValueError, match="cannot parse <off data>") as e:
+        pd.decompose_bytes(b"OFF\nthis is not a mesh\n", "off")
+    assert tempfile.gettempdir() not in str(e.value)
+    with pytest.raises(TypeError, match="freeze_ration"):
+        pd.decompose_bytes(data, "off", freeze_ration=0.2)
+
+
+def stub_definitions(tree):
+    """The names a stub body defines, each with its node and whether a docstring follows it."""
+    body = tree.body
+    found = {}
+    for i, node in enumerate(body):
+        if isinstance(node, (ast.ClassDef, ast.FunctionDef)):
+            found[node.name] = ast.get_docstring(node) is not None
+        elif isinstance(node, ast.AnnAssign):
+            nxt = body[i + 1] if i + 1 < len(body) else None
+            found[node.target.id] = (isinstance(nxt, ast.Expr) and isinstance(nxt.value, ast.Constant)
+                                     and isinstance(nxt.value.value, str))
+    return found
+
+
+def test_the_stubs_document_the_public_api():
+    package = os.path.dirname(pd.__file__)
+    assert os.path.isfile(os.path.join(package, "py.typed"))
+    with open(os.path.join(package, "__init__.pyi")) as f:
+        tree = ast.parse(f.read())
+    top = stub_definitions(tree)
+    public = {name for name in top if not name.startswith("_") or name == "__version__"}
+    assert public == set(pd.__all__)
+    assert all(hasattr(pd, name) for name in pd.__all__)
+    assert all(top[name] for name in public), [name for name in public if not top[name]]
+    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
+    for cls in (pd.Decomposition, pd.Primitive):
+        members = stub_definitions(classes[cls.__name__])
+        assert set(members) == {n for n in dir(cls) if not n.startswith("_")}, cls.__name__
+        assert all(members.values()), cls.__name__
+    assert pd.Decomposition.__module__ == "part_decomposition"
+
+
+def test_the_version_is_the_projects():
+    cmake = os.path.join(os.path.dirname(__file__), "..", "..", "CMakeLists.txt")
+    with open(cmake) as f:
+        version = re.search(r"project\(Part_decomposition\s+VERSION\s+([0-9.]+)", f.read()).group(1)
+    assert pd.__version__ == version
