@@ -8,6 +8,9 @@
 // `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
 // status 1; output files are written to a temporary name and renamed once complete, so a failed
 // run never leaves a partial file.
+//
+// On a glTF input, --parts-glb keeps the input's materials, textures, UVs, normals and vertex
+// colours in each part.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -84,6 +87,8 @@ const char* const usage_text =
   "                           superquadric; the leaf of each face of INPUT, in its order\n"
   "  --parts-glb FILE         the parts as binary glTF: one mesh and node part_K per part, its colour as\n"
   "                           material, to pick parts one by one in Blender or any glTF viewer\n"
+  "                           (a glTF INPUT: each part keeps the input's materials, textures, UVs, normals,\n"
+  "                           tangents and vertex colours, in the frame of the scene)\n"
   "  --parts-glb-primitives   with --parts-glb: also the superquadrics, nodes primitive_K (half transparent)\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --verbose                print what each stage does on stderr\n"
@@ -476,9 +481,12 @@ int single(const Options& o)
   if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
   if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
   if(!o.hierarchy.empty()) write_hierarchy(outputs.open(o.hierarchy), info, r);
-  if(!o.parts_glb.empty())
-    PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts,
-                            o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>());
+  const std::vector<Superquadric> glb_primitives = o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>();
+  if(!o.parts_glb.empty() && PD::internal::is_gltf_file(o.input))
+    PD::IO::write_gltf_parts_glb(outputs.open(o.parts_glb), o.input, PD::IO::labels_in_file_order(info, r.face_part),
+                                 r.parts, glb_primitives);
+  else if(!o.parts_glb.empty())
+    PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts, glb_primitives);
   outputs.commit();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);
