@@ -2,16 +2,21 @@
 //
 //   hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]
 //                [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]
-//                [--threads N] [parameter options]
+//                [--labels-glb OUT.glb] [--threads N] [parameter options]
 //   hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]
 //
 // `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
 // status 1; output files are written to a temporary name and renamed once complete, so a failed
 // run never leaves a partial file.
+//
+// On a glTF input, --parts-glb keeps the input's materials, textures, UVs, normals and vertex
+// colours in each part, and --labels-glb writes the input's scene unchanged with the part of every
+// triangle as an EXT_mesh_features feature ID (another format: the mesh as one glTF primitive).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
 #include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/decompose.h>
 
@@ -57,7 +62,7 @@ struct Options
   std::string input, labels, colored, primitives, primitive_mesh, hierarchy;
   std::size_t parts = 0; // 0: the default granularity
   std::string batch, out_dir;
-  std::string parts_glb;
+  std::string parts_glb, labels_glb;
   bool parts_glb_primitives = false;
   std::size_t shard = 0, shards = 1;
   int threads = 0;
@@ -69,7 +74,7 @@ struct Options
 const char* const usage_text =
   "usage: hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]\n"
   "                    [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]\n"
-  "                    [--threads N] [parameter options]\n"
+  "                    [--labels-glb OUT.glb] [--threads N] [parameter options]\n"
   "       hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]\n"
   "\n"
   "Decomposes a triangle mesh (OFF, OBJ, PLY, STL, glTF .gltf/.glb) into parts with the Hi-TOPS method.\n"
@@ -84,7 +89,12 @@ const char* const usage_text =
   "                           superquadric; the leaf of each face of INPUT, in its order\n"
   "  --parts-glb FILE         the parts as binary glTF: one mesh and node part_K per part, its colour as\n"
   "                           material, to pick parts one by one in Blender or any glTF viewer\n"
+  "                           (a glTF INPUT: each part keeps the input's materials, textures, UVs, normals,\n"
+  "                           tangents and vertex colours, in the frame of the scene)\n"
   "  --parts-glb-primitives   with --parts-glb: also the superquadrics, nodes primitive_K (half transparent)\n"
+  "  --labels-glb FILE        binary glTF with the part of every face as an EXT_mesh_features feature ID\n"
+  "                           (vertex attribute _FEATURE_ID_0): a glTF INPUT's scene unchanged otherwise,\n"
+  "                           another format as one mesh\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --verbose                print what each stage does on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
@@ -177,6 +187,7 @@ Options parse(int argc, char** argv)
     else if(a == "--hierarchy") o.hierarchy = value();
     else if(a == "--parts-glb") o.parts_glb = value();
     else if(a == "--parts-glb-primitives") o.parts_glb_primitives = true;
+    else if(a == "--labels-glb") o.labels_glb = value();
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
     else if(a == "--verbose") o.decomposition.verbose = true;
@@ -476,9 +487,14 @@ int single(const Options& o)
   if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
   if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
   if(!o.hierarchy.empty()) write_hierarchy(outputs.open(o.hierarchy), info, r);
-  if(!o.parts_glb.empty())
-    PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts,
-                            o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>());
+  const std::vector<Superquadric> glb_primitives = o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>();
+  if(!o.parts_glb.empty() && PD::internal::is_gltf_file(o.input))
+    PD::IO::write_gltf_parts_glb(outputs.open(o.parts_glb), o.input, PD::IO::labels_in_file_order(info, r.face_part),
+                                 r.parts, glb_primitives);
+  else if(!o.parts_glb.empty())
+    PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts, glb_primitives);
+  if(!o.labels_glb.empty())
+    PD::IO::write_labels_glb(outputs.open(o.labels_glb), o.input, PD::IO::labels_in_file_order(info, r.face_part), r.parts);
   outputs.commit();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);

@@ -1,7 +1,10 @@
-// Input handling: voxel binning, normalization, and the reader on files that real data produce.
+// Input handling: voxel binning, normalization, the reader on files that real data produce, and
+// the glTF writers that copy a file (labels as feature IDs, parts with the file's attributes).
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
+#include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/normalization.h>
@@ -19,6 +22,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -579,4 +583,177 @@ TEST_CASE("welding never merges two vertices of one triangle, nor vertices insid
   }
   // 13 points, 2 welded; 8 stays apart from 1, 10 from 9
   CHECK(num_vertices(m) == 11);
+}
+
+// ---- glTF writers
+
+namespace {
+
+// A GLB read back: its JSON and its binary chunk.
+struct Glb
+{
+  nlohmann::json j;
+  std::string bin;
+
+  explicit Glb(const std::string& bytes)
+  {
+    std::uint32_t length;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    j = nlohmann::json::parse(bytes.substr(20, length));
+    bin = bytes.substr(28 + length);
+  }
+  // The elements of accessor i, their components as doubles (unsigned integers or floats).
+  std::vector<std::vector<double> > accessor(std::size_t i) const
+  {
+    const nlohmann::json& a = j["accessors"][i];
+    const nlohmann::json& view = j["bufferViews"][a["bufferView"].get<std::size_t>()];
+    const int type = a["componentType"];
+    const std::size_t size = type == 5121 ? 1 : (type == 5123 ? 2 : 4);
+    const std::size_t n = a["type"] == "SCALAR" ? 1 : std::size_t(a["type"].get<std::string>()[3] - '0');
+    const std::size_t stride = view.value("byteStride", size * n);
+    const std::size_t base = view.value("byteOffset", std::size_t(0)) + a.value("byteOffset", std::size_t(0));
+    std::vector<std::vector<double> > out(a["count"].get<std::size_t>(), std::vector<double>(n));
+    for(std::size_t e = 0; e < out.size(); ++e)
+      for(std::size_t c = 0; c < n; ++c)
+      {
+        std::uint32_t u = 0;
+        std::memcpy(&u, bin.data() + base + e * stride + c * size, size);
+        float f;
+        std::memcpy(&f, &u, 4);
+        out[e][c] = type == 5126 ? double(f) : double(u);
+      }
+    return out;
+  }
+};
+
+std::string read_file_bytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string glb_of(const std::function<void(std::ostream&)>& write)
+{
+  std::ostringstream out;
+  write(out);
+  return out.str();
+}
+
+// A quad as a strip of two triangles (sharing two vertices), with normals +z and UVs, instanced
+// by a node and by a mirrored node (scale -1 in x).
+std::string strip_scene()
+{
+  Gltf_builder b;
+  const std::vector<Float3> p = {{{0.f, 0.f, 0.f}}, {{1.f, 0.f, 0.f}}, {{0.f, 1.f, 0.f}}, {{1.f, 1.f, 0.f}}};
+  const std::vector<Float3> n(4, Float3{{0.f, 0.f, 1.f}});
+  const std::vector<std::array<float, 2> > uv = {{{0.f, 0.f}}, {{1.f, 0.f}}, {{0.f, 1.f}}, {{1.f, 1.f}}};
+  const std::size_t pos = b.positions(p), nor = b.accessor(n, 5126, "VEC3", 4), tex = b.accessor(uv, 5126, "VEC2", 4);
+  b.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", pos}, {"NORMAL", nor}, {"TEXCOORD_0", tex}}},
+                                            {"mode", 5}, {"material", 0}}}}});
+  b.j["materials"] = {{{"name", "paint"}}};
+  b.j["nodes"].push_back({{"mesh", 0}});
+  b.j["nodes"].push_back({{"mesh", 0}, {"translation", {5., 0., 0.}}, {"scale", {-1., 1., 1.}}});
+  b.j["scenes"] = {{{"nodes", {0, 1}}}};
+  return write_temp("strip.glb", b.glb());
+}
+
+// The corners of each triangle of a primitive (mode TRIANGLES or TRIANGLE_STRIP).
+std::vector<std::array<std::size_t, 3> > primitive_triangles(const Glb& g, const nlohmann::json& p)
+{
+  std::vector<std::size_t> index;
+  if(p.contains("indices"))
+    for(const auto& e : g.accessor(p["indices"])) index.push_back(std::size_t(e[0]));
+  else
+    for(std::size_t i = 0; i < g.j["accessors"][p["attributes"]["POSITION"].get<std::size_t>()]["count"]; ++i) index.push_back(i);
+  std::vector<std::array<std::size_t, 3> > out;
+  if(p.value("mode", 4) == 4)
+    for(std::size_t k = 0; k + 2 < index.size(); k += 3) out.push_back({{index[k], index[k + 1], index[k + 2]}});
+  else
+    for(std::size_t t = 0; t + 2 < index.size(); ++t) out.push_back({{index[t], index[t + 1 + t % 2], index[t + 2 - t % 2]}});
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("glTF labels as feature IDs: vertices split on part boundaries, instanced meshes split by labelling",
+          "[io][gltf][writer]")
+{
+  const std::string path = strip_scene();
+  // node 0: its two triangles in parts 0 and 1 (a shared vertex gets both); node 1: both in part 1
+  const std::vector<std::size_t> labels = {0, 1, 1, 1};
+  const Glb g(glb_of([&](std::ostream& out) { PD::IO::write_labels_glb(out, path, labels, 2); }));
+  CHECK(g.j["extensionsUsed"] == nlohmann::json::array({"EXT_mesh_features"}));
+  REQUIRE(g.j["meshes"].size() == 2);
+  CHECK(g.j["nodes"][0]["mesh"] == 0);
+  CHECK(g.j["nodes"][1]["mesh"] == 1);
+  CHECK(g.j["nodes"][1]["scale"] == nlohmann::json({-1., 1., 1.}));
+  const std::vector<std::vector<double> > source_positions = Glb(read_file_bytes(path)).accessor(0);
+  std::size_t t = 0;
+  for(std::size_t m = 0; m < 2; ++m)
+  {
+    const nlohmann::json& p = g.j["meshes"][m]["primitives"][0];
+    CHECK(p["material"] == 0);
+    CHECK(p["extensions"]["EXT_mesh_features"]["featureIds"] == nlohmann::json::array({{{"featureCount", 2}, {"attribute", 0}}}));
+    const auto ids = g.accessor(p["attributes"]["_FEATURE_ID_0"]);
+    const auto positions = g.accessor(p["attributes"]["POSITION"]);
+    CHECK(ids.size() == positions.size());
+    CHECK(g.accessor(p["attributes"]["TEXCOORD_0"]).size() == positions.size());
+    for(const auto& c : primitive_triangles(g, p))
+    {
+      INFO("mesh " << m << ", triangle " << t);
+      CHECK(ids[c[0]][0] == double(labels[t]));
+      CHECK(ids[c[1]][0] == double(labels[t]));
+      CHECK(ids[c[2]][0] == double(labels[t]));
+      ++t;
+    }
+    // a duplicated vertex is a copy of a vertex of the source
+    for(const auto& q : positions)
+      CHECK(std::find(source_positions.begin(), source_positions.end(), q) != source_positions.end());
+  }
+  CHECK(t == labels.size());
+  // the strip with two labels became triangles on six vertices (two duplicated); the other is unchanged
+  CHECK(g.j["meshes"][0]["primitives"][0]["mode"] == 4);
+  CHECK(g.accessor(g.j["meshes"][0]["primitives"][0]["attributes"]["POSITION"]).size() == 6);
+  CHECK(g.j["meshes"][1]["primitives"][0]["mode"] == 5);
+  CHECK(!g.j["meshes"][1]["primitives"][0].contains("indices"));
+
+  CHECK_THROWS_AS(glb_of([&](std::ostream& out) { PD::IO::write_labels_glb(out, path, {0, 1, 1}, 2); }), std::invalid_argument);
+  CHECK_THROWS_AS(glb_of([&](std::ostream& out) { PD::IO::write_labels_glb(out, path, labels, 1); }), std::invalid_argument);
+}
+
+TEST_CASE("glTF parts keep the attributes and material of the file, in the scene's frame", "[io][gltf][writer]")
+{
+  const std::string path = strip_scene();
+  const std::vector<std::size_t> labels = {0, 1, 1, 1};
+  const std::vector<PD::Superquadric<test_shapes::K> > none;
+  const Glb g(glb_of([&](std::ostream& out) { PD::IO::write_gltf_parts_glb(out, path, labels, 2, none); }));
+  REQUIRE(g.j["meshes"].size() == 2);
+  CHECK(g.j["materials"] == nlohmann::json::array({{{"name", "paint"}}}));
+  // part 1: the second triangle of node 0, then both triangles of the mirrored node 1
+  CHECK(g.j["meshes"][0]["primitives"].size() == 1);
+  REQUIRE(g.j["meshes"][1]["primitives"].size() == 2);
+  std::size_t triangles = 0;
+  for(const auto& mesh : g.j["meshes"])
+    for(const auto& p : mesh["primitives"])
+    {
+      CHECK(p["material"] == 0);
+      REQUIRE(p["attributes"].contains("NORMAL"));
+      REQUIRE(p["attributes"].contains("TEXCOORD_0"));
+      const auto positions = g.accessor(p["attributes"]["POSITION"]);
+      const auto normals = g.accessor(p["attributes"]["NORMAL"]);
+      for(const auto& c : primitive_triangles(g, p))
+      {
+        // in the scene's frame, and facing the way of the normals (+z), also when mirrored
+        const auto& a = positions[c[0]];
+        const auto& b = positions[c[1]];
+        const auto& d = positions[c[2]];
+        const double z = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+        CHECK(z > 0.);
+        CHECK(normals[c[0]] == std::vector<double>({0., 0., 1.}));
+        CHECK(a[0] + b[0] + d[0] <= (triangles < 2 ? 3. : 15.));
+        CHECK(a[0] + b[0] + d[0] >= (triangles < 2 ? 0. : 12.));
+        ++triangles;
+      }
+    }
+  CHECK(triangles == 4);
 }

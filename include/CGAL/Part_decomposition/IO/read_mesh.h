@@ -12,6 +12,7 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/gltf_source.h>
 #include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
@@ -44,6 +45,7 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -165,6 +167,69 @@ inline void read_gltf_soup(const std::string& filename, const File_contents& con
 #endif
 }
 
+// Whether the file is read as glTF.
+inline bool is_gltf_file(const std::string& filename)
+{
+  const std::string extension = CGAL::IO::internal::get_file_extension(filename);
+  return extension == "gltf" || extension == "glb";
+}
+
+#ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+// Runs f(); an error of a glTF file (broken JSON, accessor, index) becomes UNREADABLE_FILE with
+// the reason.
+template <typename F>
+void with_gltf_errors(const std::string& filename, const F& f)
+{
+  try
+  {
+    f();
+  }
+  catch(const Gltf_error& e)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as glTF: " + e.what());
+  }
+  catch(const nlohmann::json::exception& e)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as glTF: " + e.what());
+  }
+}
+
+// The glTF file in memory with its triangle primitives, for the writers that copy it; a broken
+// file throws UNREADABLE_FILE with the reason, as when it is read as a mesh.
+inline std::unique_ptr<Gltf_source> read_gltf_source(const std::string& filename)
+{
+  File_contents contents;
+  if(!read_file_contents(filename, contents))
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot read '" + filename + "'");
+  const std::size_t slash = filename.find_last_of('/');
+  std::unique_ptr<Gltf_source> source;
+  with_gltf_errors(filename, [&] {
+    source = std::make_unique<Gltf_source>(std::string(contents.begin(), contents.end()),
+                                           slash == std::string::npos ? std::string() : filename.substr(0, slash + 1));
+  });
+  for(const Gltf_source::Primitive_instance& p : source->instances)
+    for(const std::array<std::uint64_t, 3>& t : p.triangles)
+      for(std::uint64_t v : t)
+        if(v >= p.positions.count)
+          throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with an out-of-range vertex index");
+  return source;
+}
+#endif
+
+// Throws std::invalid_argument for `what` unless `labels` holds one label in [0, number_of_labels)
+// per face of the file.
+inline void check_file_labels(const std::vector<std::size_t>& labels, std::size_t number_of_faces,
+                              std::size_t number_of_labels, const char* what)
+{
+  if(labels.size() != number_of_faces)
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(labels.size()) + " labels for " +
+                                std::to_string(number_of_faces) + " faces of the file");
+  for(std::size_t k : labels)
+    if(k >= number_of_labels)
+      throw std::invalid_argument(std::string(what) + ": label " + std::to_string(k) + " is not below the number of labels, " +
+                                  std::to_string(number_of_labels));
+}
+
 // Parses the file into `soup`; false if it cannot be parsed.
 inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays& soup)
 {
@@ -182,7 +247,7 @@ inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays&
     if(extension == "off") return Off_soup_reader(contents.begin(), contents.end()).read(soup);
     if(extension == "ply") return Ply_soup_reader(contents.begin(), contents.end()).read(soup);
     if(extension == "stl") return Stl_soup_reader(contents.begin(), contents.end()).read(soup);
-    if(extension == "gltf" || extension == "glb")
+    if(is_gltf_file(filename))
     {
       read_gltf_soup(filename, contents, soup);
       return true;

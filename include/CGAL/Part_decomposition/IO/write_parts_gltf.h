@@ -9,6 +9,9 @@
 #define CGAL_PART_DECOMPOSITION_IO_WRITE_PARTS_GLTF_H
 
 #include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/internal/glb_builder.h>
+#include <CGAL/Part_decomposition/internal/gltf_part_primitives.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -21,8 +24,10 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,6 +69,21 @@ struct Gltf_triangles
   std::vector<std::uint32_t> indices;
   std::size_t material = 0;
 };
+
+// The tessellation of a superquadric (see Superquadric::to_triangle_mesh()).
+template <typename GeomTraits>
+Gltf_triangles superquadric_triangles(const Superquadric<GeomTraits>& q, int resolution)
+{
+  CGAL::Surface_mesh<typename GeomTraits::Point_3> sq;
+  q.to_triangle_mesh(sq, resolution);
+  Gltf_triangles t;
+  for(auto v : vertices(sq))
+    for(double x : {CGAL::to_double(sq.point(v).x()), CGAL::to_double(sq.point(v).y()), CGAL::to_double(sq.point(v).z())})
+      t.positions.push_back(float(x));
+  for(auto f : faces(sq))
+    for(auto v : vertices_around_face(halfedge(f, sq), sq)) t.indices.push_back(std::uint32_t(v));
+  return t;
+}
 
 // Appends `v` to `bin` as little-endian 32-bit words (glTF's byte order, whatever the host's),
 // 4-byte aligned; returns the offset.
@@ -141,23 +161,63 @@ inline void write_glb(std::ostream& out, const std::vector<Gltf_triangles>& mesh
                      "\"scenes\":[{\"nodes\":[" + scene.str() + "]}],\"nodes\":[" + nodes.str() + "],\"meshes\":[" +
                      gltf_meshes.str() + "],\"materials\":[" + materials.str() + "],\"accessors\":[" + accessors.str() +
                      "],\"bufferViews\":[" + views.str() + "],\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
-  while(json.size() % 4) json += ' ';
-  while(bin.size() % 4) bin += '\0';
-  auto u32 = [&out](std::size_t v) {
-    const unsigned char b[4] = {(unsigned char)(v & 0xff), (unsigned char)((v >> 8) & 0xff),
-                                (unsigned char)((v >> 16) & 0xff), (unsigned char)((v >> 24) & 0xff)};
-    out.write(reinterpret_cast<const char*>(b), 4);
-  };
-  out.write("glTF", 4);
-  u32(2);
-  u32(12 + 8 + json.size() + 8 + bin.size());
-  u32(json.size());
-  out.write("JSON", 4);
-  out.write(json.data(), std::streamsize(json.size()));
-  u32(bin.size());
-  out.write("BIN\0", 4);
-  out.write(bin.data(), std::streamsize(bin.size()));
+  write_glb_container(out, json, bin);
 }
+
+#ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+// The flat material of the superquadric of part k: the part's colour, half transparent.
+inline Glb_builder::Json superquadric_material(std::size_t k)
+{
+  const std::array<double, 3> c = part_srgb(k);
+  return {{"name", "primitive_" + std::to_string(k)},
+          {"pbrMetallicRoughness", {{"baseColorFactor", {srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]), 0.5}},
+                                    {"metallicFactor", 0}, {"roughnessFactor", 0.8}}},
+          {"doubleSided", true}, {"alphaMode", "BLEND"}};
+}
+
+// Adds a node `name` whose children are `children` to the scene's roots, if it has any.
+inline void add_group_node(const std::string& name, const Glb_builder::Json& children, Glb_builder& out)
+{
+  if(children.empty()) return;
+  const std::size_t node = out.push("nodes", {{"name", name}, {"children", children}});
+  out.gltf["scenes"][0]["nodes"].push_back(node);
+}
+
+// The document of write_gltf_parts_glb(): the parts of the source with its materials, nodes
+// part_k under a node "parts", and the superquadrics, nodes primitive_k under a node "primitives".
+inline void gltf_parts_document(const Gltf_source& source, const std::vector<std::size_t>& triangle_part,
+                                std::size_t number_of_parts, const std::vector<Gltf_triangles>& superquadrics,
+                                Glb_builder& out)
+{
+  typedef Glb_builder::Json Json;
+  out.gltf["asset"] = output_asset(&source);
+  out.gltf["scene"] = 0;
+  out.gltf["scenes"] = Json::array({Json{{"nodes", Json::array()}}});
+  copy_materials(source, true, out);
+  const std::vector<Json> parts = part_primitives(source, triangle_part, number_of_parts, out);
+  Json children = Json::array();
+  for(std::size_t k = 0; k < parts.size(); ++k)
+  {
+    if(parts[k].empty()) continue; // a glTF mesh has at least one primitive
+    const std::string name = "part_" + std::to_string(k);
+    const std::size_t mesh = out.push("meshes", {{"name", name}, {"primitives", parts[k]}});
+    children.push_back(out.push("nodes", {{"name", name}, {"mesh", mesh}}));
+  }
+  add_group_node("parts", children, out);
+  children = Json::array();
+  for(std::size_t k = 0; k < superquadrics.size(); ++k)
+  {
+    const std::string name = "primitive_" + std::to_string(k);
+    Json primitive = {{"attributes", {{"POSITION", out.add_floats(superquadrics[k].positions, 3, true)}}},
+                      {"indices", out.add_indices(superquadrics[k].indices)},
+                      {"material", out.push("materials", superquadric_material(k))}, {"mode", 4}};
+    const std::size_t mesh = out.push("meshes", {{"name", name}, {"primitives", Json::array({primitive})}});
+    children.push_back(out.push("nodes", {{"name", name}, {"mesh", mesh}}));
+  }
+  add_group_node("primitives", children, out);
+  declare_extensions(source, out);
+}
+#endif
 
 } // namespace internal
 /// \endcond
@@ -172,7 +232,8 @@ one by one in Blender or any glTF viewer: part `k` is the mesh and node `part_k`
 `primitives` is not empty, the superquadric of each part is added as a triangle mesh (`resolution`
 segments per parameter, see `Superquadric::to_triangle_mesh()`) in node `primitive_k`, with the
 colour of its part, half transparent, all under a node `primitives`. Positions are written as
-32-bit floats, in the coordinates of `tm`.
+32-bit floats, in the coordinates of `tm`. For a mesh read from a glTF file,
+`write_gltf_parts_glb()` keeps the materials, textures and vertex attributes of the file instead.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam GeomTraits the geometric traits of the superquadrics
@@ -232,16 +293,9 @@ void write_parts_glb(std::ostream& out, const TriangleMesh& tm, const std::vecto
   std::vector<std::string> group_names = {"parts"};
   for(std::size_t k = 0; k < primitives.size(); ++k)
   {
-    CGAL::Surface_mesh<typename GeomTraits::Point_3> sq;
-    primitives[k].to_triangle_mesh(sq, resolution);
-    internal::Gltf_triangles t;
+    internal::Gltf_triangles t = internal::superquadric_triangles(primitives[k], resolution);
     t.name = "primitive_" + std::to_string(k);
     t.material = colors.size();
-    for(auto v : vertices(sq))
-      for(double x : {CGAL::to_double(sq.point(v).x()), CGAL::to_double(sq.point(v).y()), CGAL::to_double(sq.point(v).z())})
-        t.positions.push_back(float(x));
-    for(auto f : faces(sq))
-      for(auto v : vertices_around_face(halfedge(f, sq), sq)) t.indices.push_back(std::uint32_t(v));
     std::array<double, 4> c = colors[k];
     c[3] = 0.5;
     colors.push_back(c);
@@ -254,6 +308,65 @@ void write_parts_glb(std::ostream& out, const TriangleMesh& tm, const std::vecto
     group_names.push_back("primitives");
   }
   internal::write_glb(out, meshes, colors, names, groups, group_names);
+}
+
+/*!
+\ingroup PkgPartDecompositionIO
+writes the parts of the glTF 2.0 file `filename` (`.gltf` or `.glb`) as a binary glTF file (GLB) to
+`out`, keeping the look of the source: part `k` is the mesh and node `part_k` (all under a node
+`parts`), with one primitive per primitive of the source that has triangles in the part (a
+primitive of a mesh instanced by several nodes counts once per node), with the source's material.
+The materials, textures, samplers and images of the source are copied with their extensions (e.g.
+`KHR_texture_transform`, `KHR_materials_*`); images stored in the source's buffers or in files next
+to it are embedded in the output. Each part primitive keeps the vertices its triangles use with
+their `POSITION`, `NORMAL`, `TANGENT`, every `TEXCOORD_n` and `COLOR_n` (as 32-bit floats), in the
+frame of the scene: a part may span several nodes, so the node transforms are applied, as
+`read_triangle_mesh()` does (normals by the inverse transpose, triangles turned over by a
+transform that mirrors). Skins, morph targets, points and lines are left out. If `primitives` is
+not empty, the superquadrics are added as in `write_parts_glb()`, nodes `primitive_k` under a node
+`primitives`.
+
+The triangles of the file are those `read_triangle_mesh()` reads, in the same order: the labels
+`labels_in_file_order()` gives for a mesh read from `filename` are the parts to pass.
+
+\tparam GeomTraits the geometric traits of the superquadrics
+
+\param out the stream, opened in binary mode
+\param filename the glTF file
+\param face_part the part of each face of the file, in the file's order, in `[0, number_of_parts)`
+\param number_of_parts the number of parts
+\param primitives the superquadric of each part (`primitives[k]` explains part `k`), or none
+\param resolution the tessellation of the superquadrics
+
+\pre `primitives` is empty or of size `number_of_parts`.
+
+\throws Invalid_input if the file cannot be read as glTF (`UNREADABLE_FILE`, also when the package
+is built without nlohmann/json) or a triangle refers to a vertex that does not exist (`INVALID_FACE`)
+\throws std::invalid_argument if `face_part` does not hold one part in `[0, number_of_parts)` per
+face of the file
+*/
+template <typename GeomTraits>
+void write_gltf_parts_glb(std::ostream& out, const std::string& filename, const std::vector<std::size_t>& face_part,
+                          std::size_t number_of_parts, const std::vector<Superquadric<GeomTraits> >& primitives,
+                          int resolution = 24)
+{
+  CGAL_precondition(primitives.empty() || primitives.size() == number_of_parts);
+#ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+  const std::unique_ptr<internal::Gltf_source> source = internal::read_gltf_source(filename);
+  internal::check_file_labels(face_part, source->number_of_triangles, number_of_parts, "write_gltf_parts_glb()");
+  std::vector<internal::Gltf_triangles> superquadrics;
+  for(const Superquadric<GeomTraits>& q : primitives) superquadrics.push_back(internal::superquadric_triangles(q, resolution));
+  internal::Glb_builder builder;
+  internal::with_gltf_errors(filename, [&] { internal::gltf_parts_document(*source, face_part, number_of_parts, superquadrics, builder); });
+  builder.write(out);
+#else
+  CGAL_USE(out);
+  CGAL_USE(face_part);
+  CGAL_USE(number_of_parts);
+  CGAL_USE(resolution);
+  throw Invalid_input(Input_error::UNREADABLE_FILE,
+                      "cannot read '" + filename + "': glTF needs nlohmann/json.hpp (Debian: nlohmann-json3-dev)");
+#endif
 }
 
 } // namespace IO

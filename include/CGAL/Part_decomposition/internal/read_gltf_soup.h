@@ -129,7 +129,9 @@ TRIANGLE_FAN) of every mesh instanced by a node of the default scene is read, it
 transformed by the node's global transform (matrix or translation, rotation, scale, nested), with
 or without indices of any integer type. The triangles come in this order: the nodes of the scene
 depth first (a node before its children, in the order of the scene's and the node's lists), the
-primitives of the node's mesh in their order, the triangles of a primitive in index order.
+primitives of the node's mesh in their order, the triangles of a primitive in index order. The
+writers of glTF files walk the same primitive instances (for_each_primitive_instance()), so that
+triangle i of the soup is known as a triangle of a primitive of the file.
 
 Every index into a JSON array, every offset, length, stride and count of a buffer view or an
 accessor is checked before any byte is read; a node hierarchy that is not a forest is refused.
@@ -140,14 +142,36 @@ public:
   typedef nlohmann::json Json;
   typedef std::array<double, 16> Matrix; // column-major, as in glTF
 
+  // The elements of an accessor, bounds-checked: element i starts at data + i * stride.
+  struct Accessor
+  {
+    const unsigned char* data = nullptr; // null: every component is 0
+    std::size_t count = 0, stride = 0, components = 0, element_size = 0;
+    int component_type = 0;
+    bool normalized = false;
+  };
+
+  // A triangle primitive of a mesh instanced by a node: the triangles of the soup in their order
+  // are those of these instances, one after the other.
+  struct Primitive_instance
+  {
+    std::size_t node = 0, mesh = 0, primitive = 0;
+    Matrix world{};        // the node's global transform
+    bool mirrored = false; // the transform mirrors: the soup turns the triangles over
+    Accessor positions;
+    // the corners of each triangle as vertex indices of the primitive (std::uint64_t(-1) or
+    // beyond positions.count: no vertex), in the file's winding
+    std::vector<std::array<std::uint64_t, 3> > triangles;
+  };
+
   // `directory`: the folder of the .gltf file, for side-by-side buffers (with a final '/', or empty).
   Gltf_soup_reader(const char* begin, const char* end, std::string directory)
     : m_begin(reinterpret_cast<const unsigned char*>(begin)), m_end(reinterpret_cast<const unsigned char*>(end)),
       m_directory(std::move(directory))
   {}
 
-  // Appends the points and triangles of the default scene to `soup`; throws Gltf_error.
-  void read(Polygon_soup_arrays& soup)
+  // Parses the JSON and loads the buffers; throws Gltf_error.
+  void load()
   {
     const unsigned char* bin = nullptr;
     std::size_t bin_size = 0;
@@ -157,7 +181,108 @@ public:
     if(!m_json.is_object()) throw Gltf_error("the JSON is not an object");
     check_asset_and_extensions();
     load_buffers(bin, bin_size);
-    for_each_mesh_instance([&](std::size_t mesh, const Matrix& world) { add_mesh(mesh, world, soup); });
+  }
+
+  // Appends the points and triangles of the default scene to `soup`; throws Gltf_error.
+  void read(Polygon_soup_arrays& soup)
+  {
+    load();
+    for_each_primitive_instance([&](const Primitive_instance& p) { add_primitive_instance(p, soup); });
+  }
+
+  // Calls f(Primitive_instance) for every triangle primitive of the default scene, in the order
+  // of the soup (after load()). The instance passed is reused from call to call.
+  template <typename F>
+  void for_each_primitive_instance(const F& f) const
+  {
+    Primitive_instance instance;
+    for_each_mesh_instance([&](std::size_t node, std::size_t mesh, const Matrix& world) {
+      const Json* primitives = member(element("meshes", mesh), "primitives");
+      if(!primitives || !primitives->is_array()) throw Gltf_error("mesh " + std::to_string(mesh) + " has no primitives");
+      instance.node = node;
+      instance.mesh = mesh;
+      instance.world = world;
+      // a transform that mirrors turns the triangles over (glTF: clockwise winding)
+      instance.mirrored = determinant(world) < 0.;
+      for(std::size_t p = 0; p < primitives->size(); ++p)
+      {
+        instance.primitive = p;
+        if(triangles_of_primitive((*primitives)[p], instance)) f(instance);
+      }
+    });
+  }
+
+  const Json& json() const { return m_json; }
+
+  // The folder of the .gltf file, with a final '/', or empty.
+  const std::string& directory() const { return m_directory; }
+
+  // The bytes of buffer view `i`, bounds-checked: first, length.
+  std::pair<const unsigned char*, std::size_t> buffer_view(std::uint64_t i) const
+  {
+    const Json& view = element("bufferViews", i);
+    const std::uint64_t buffer = unsigned_value(required(view, "buffer"), "bufferView buffer");
+    if(buffer >= m_buffers.size()) throw Gltf_error("bufferView refers to a missing buffer");
+    const std::uint64_t offset = unsigned_member(view, "byteOffset", 0, "bufferView byteOffset");
+    const std::uint64_t length = unsigned_value(required(view, "byteLength"), "bufferView byteLength");
+    if(offset + length > m_buffers[buffer].size) throw Gltf_error("bufferView exceeds its buffer");
+    return {m_buffers[buffer].data + offset, std::size_t(length)};
+  }
+
+  // Accessor `i`, bounds-checked against its buffer view and the view against its buffer.
+  Accessor accessor(std::uint64_t i) const
+  {
+    const Json& a = element("accessors", i);
+    if(member(a, "sparse")) throw Gltf_error("sparse accessors are not supported");
+    Accessor out;
+    out.component_type = int(unsigned_value(required(a, "componentType"), "accessor componentType"));
+    out.components = number_of_components(required(a, "type"));
+    out.element_size = std::size_t(component_size(out.component_type)) * out.components;
+    out.count = std::size_t(unsigned_value(required(a, "count"), "accessor count"));
+    const Json* normalized = member(a, "normalized");
+    out.normalized = normalized && normalized->is_boolean() && normalized->get<bool>();
+    out.stride = out.element_size;
+    const Json* view_index = member(a, "bufferView");
+    if(!view_index) return out;
+    const std::uint64_t v = unsigned_value(*view_index, "accessor bufferView");
+    const std::pair<const unsigned char*, std::size_t> view = buffer_view(v);
+    out.stride = std::size_t(unsigned_member(element("bufferViews", v), "byteStride", out.element_size, "bufferView byteStride"));
+    if(out.stride < out.element_size) throw Gltf_error("bufferView byteStride is smaller than an element");
+    const std::uint64_t offset = unsigned_member(a, "byteOffset", 0, "accessor byteOffset");
+    if(out.count > 0 && (offset > view.second || (out.count - 1) > (view.second - offset) / out.stride ||
+                         std::uint64_t(out.stride) * (out.count - 1) + out.element_size > view.second - offset))
+      throw Gltf_error("accessor " + std::to_string(i) + " reads past the end of its bufferView");
+    out.data = view.first + offset;
+    return out;
+  }
+
+  // Component c of element i, as the accessor defines it (normalized integers to [-1, 1] or [0, 1]).
+  static double component(const Accessor& a, std::size_t i, std::size_t c)
+  {
+    if(!a.data) return 0.;
+    const int size = component_size(a.component_type);
+    const std::uint64_t u = little_endian(a.data + i * a.stride + c * std::size_t(size), size);
+    switch(a.component_type)
+    {
+    case 5120: return a.normalized ? (std::max)(double(std::int8_t(u)) / 127., -1.) : double(std::int8_t(u));
+    case 5121: return a.normalized ? double(u) / 255. : double(u);
+    case 5122: return a.normalized ? (std::max)(double(std::int16_t(u)) / 32767., -1.) : double(std::int16_t(u));
+    case 5123: return a.normalized ? double(u) / 65535. : double(u);
+    case 5125: return double(std::uint32_t(u));
+    default:
+    {
+      const std::uint32_t u32 = std::uint32_t(u);
+      float f;
+      std::memcpy(&f, &u32, 4);
+      return double(f);
+    }
+    }
+  }
+
+  // The determinant of the linear part of a transform.
+  static double determinant(const Matrix& m)
+  {
+    return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) + m[8] * (m[1] * m[6] - m[5] * m[2]);
   }
 
 private:
@@ -324,14 +449,6 @@ private:
 
   // ---- accessors
 
-  struct Accessor
-  {
-    const unsigned char* data = nullptr; // null: every component is 0
-    std::size_t count = 0, stride = 0, components = 0;
-    int component_type = 0;
-    bool normalized = false;
-  };
-
   static int component_size(int type)
   {
     switch(type)
@@ -351,60 +468,6 @@ private:
     if(t == "VEC3") return 3;
     if(t == "VEC4") return 4;
     throw Gltf_error("accessor type '" + t + "' is not SCALAR or VECn");
-  }
-
-  // Accessor `i`, bounds-checked against its buffer view and the view against its buffer.
-  Accessor accessor(std::uint64_t i) const
-  {
-    const Json& a = element("accessors", i);
-    if(member(a, "sparse")) throw Gltf_error("sparse accessors are not supported");
-    Accessor out;
-    out.component_type = int(unsigned_value(required(a, "componentType"), "accessor componentType"));
-    out.components = number_of_components(required(a, "type"));
-    const std::size_t element_size = std::size_t(component_size(out.component_type)) * out.components;
-    out.count = std::size_t(unsigned_value(required(a, "count"), "accessor count"));
-    const Json* normalized = member(a, "normalized");
-    out.normalized = normalized && normalized->is_boolean() && normalized->get<bool>();
-    out.stride = element_size;
-    const Json* view_index = member(a, "bufferView");
-    if(!view_index) return out;
-    const Json& view = element("bufferViews", unsigned_value(*view_index, "accessor bufferView"));
-    const std::uint64_t buffer = unsigned_value(required(view, "buffer"), "bufferView buffer");
-    if(buffer >= m_buffers.size()) throw Gltf_error("bufferView refers to a missing buffer");
-    const std::uint64_t view_offset = unsigned_member(view, "byteOffset", 0, "bufferView byteOffset");
-    const std::uint64_t view_length = unsigned_value(required(view, "byteLength"), "bufferView byteLength");
-    if(view_offset + view_length > m_buffers[buffer].size) throw Gltf_error("bufferView exceeds its buffer");
-    out.stride = std::size_t(unsigned_member(view, "byteStride", element_size, "bufferView byteStride"));
-    if(out.stride < element_size) throw Gltf_error("bufferView byteStride is smaller than an element");
-    const std::uint64_t offset = unsigned_member(a, "byteOffset", 0, "accessor byteOffset");
-    if(out.count > 0 && (offset > view_length || (out.count - 1) > (view_length - offset) / out.stride ||
-                         std::uint64_t(out.stride) * (out.count - 1) + element_size > view_length - offset))
-      throw Gltf_error("accessor " + std::to_string(i) + " reads past the end of its bufferView");
-    out.data = m_buffers[buffer].data + view_offset + offset;
-    return out;
-  }
-
-  // Component c of element i, as the accessor defines it (normalized integers to [-1, 1] or [0, 1]).
-  static double component(const Accessor& a, std::size_t i, std::size_t c)
-  {
-    if(!a.data) return 0.;
-    const int size = component_size(a.component_type);
-    const std::uint64_t u = little_endian(a.data + i * a.stride + c * std::size_t(size), size);
-    switch(a.component_type)
-    {
-    case 5120: return a.normalized ? (std::max)(double(std::int8_t(u)) / 127., -1.) : double(std::int8_t(u));
-    case 5121: return a.normalized ? double(u) / 255. : double(u);
-    case 5122: return a.normalized ? (std::max)(double(std::int16_t(u)) / 32767., -1.) : double(std::int16_t(u));
-    case 5123: return a.normalized ? double(u) / 65535. : double(u);
-    case 5125: return double(std::uint32_t(u));
-    default:
-    {
-      const std::uint32_t u32 = std::uint32_t(u);
-      float f;
-      std::memcpy(&f, &u32, 4);
-      return double(f);
-    }
-    }
   }
 
   // ---- the scene
@@ -495,7 +558,7 @@ private:
     return roots;
   }
 
-  // Calls f(mesh, global transform) for every node with a mesh, depth first, with an explicit
+  // Calls f(node, mesh, global transform) for every node with a mesh, depth first, with an explicit
   // stack (a hostile file may nest nodes deeply); a node reached twice is an error.
   template <typename F>
   void for_each_mesh_instance(const F& f) const
@@ -514,7 +577,7 @@ private:
       if(visited[std::size_t(n)]) throw Gltf_error("node " + std::to_string(n) + " is reached twice: the nodes are not a forest");
       visited[std::size_t(n)] = 1;
       const Matrix world = multiply(parent, local_transform(node));
-      if(const Json* mesh = member(node, "mesh")) f(std::size_t(unsigned_value(*mesh, "node mesh")), world);
+      if(const Json* mesh = member(node, "mesh")) f(std::size_t(n), std::size_t(unsigned_value(*mesh, "node mesh")), world);
       if(const Json* children = member(node, "children"))
       {
         if(!children->is_array()) throw Gltf_error("node children is not an array");
@@ -526,34 +589,17 @@ private:
 
   // ---- meshes
 
-  void add_mesh(std::size_t mesh_index, const Matrix& world, Polygon_soup_arrays& soup) const
-  {
-    const Json* primitives = member(element("meshes", mesh_index), "primitives");
-    if(!primitives || !primitives->is_array()) throw Gltf_error("mesh " + std::to_string(mesh_index) + " has no primitives");
-    // a transform that mirrors turns the triangles over (glTF: clockwise winding)
-    const double det = world[0] * (world[5] * world[10] - world[9] * world[6]) -
-                       world[4] * (world[1] * world[10] - world[9] * world[2]) +
-                       world[8] * (world[1] * world[6] - world[5] * world[2]);
-    for(const Json& p : *primitives) add_primitive(p, world, det < 0., soup);
-  }
-
-  void add_primitive(const Json& primitive, const Matrix& world, bool mirrored, Polygon_soup_arrays& soup) const
+  // The positions and the triangles of a primitive of mode TRIANGLES, TRIANGLE_STRIP or
+  // TRIANGLE_FAN with a POSITION; false for any other primitive (points and lines have no triangle).
+  bool triangles_of_primitive(const Json& primitive, Primitive_instance& out) const
   {
     const std::uint64_t mode = unsigned_member(primitive, "mode", 4, "primitive mode");
-    if(mode < 4 || mode > 6) return; // points and lines have no triangle
+    if(mode < 4 || mode > 6) return false;
     const Json* attributes = member(primitive, "attributes");
     const Json* position = attributes ? member(*attributes, "POSITION") : nullptr;
-    if(!position) return;
-    const Accessor positions = accessor(unsigned_value(*position, "POSITION"));
-    if(positions.components != 3) throw Gltf_error("POSITION is not VEC3");
-    const std::size_t base = soup.number_of_points();
-    for(std::size_t i = 0; i < positions.count; ++i)
-    {
-      const double x = component(positions, i, 0), y = component(positions, i, 1), z = component(positions, i, 2);
-      soup.add_point(world[0] * x + world[4] * y + world[8] * z + world[12],
-                     world[1] * x + world[5] * y + world[9] * z + world[13],
-                     world[2] * x + world[6] * y + world[10] * z + world[14]);
-    }
+    if(!position) return false;
+    out.positions = accessor(unsigned_value(*position, "POSITION"));
+    if(out.positions.components != 3) throw Gltf_error("POSITION is not VEC3");
     std::vector<std::uint64_t> index; // empty: the vertices in order
     if(const Json* indices = member(primitive, "indices"))
     {
@@ -566,20 +612,35 @@ private:
         index[i] = v < 0. ? std::uint64_t(-1) : std::uint64_t(v);
       }
     }
-    const std::size_t n = index.empty() ? positions.count : index.size();
-    auto vertex = [&](std::size_t k) {
-      const std::uint64_t v = index.empty() ? std::uint64_t(k) : index[k];
-      return v < positions.count ? base + std::size_t(v) : invalid_vertex_index;
-    };
+    const std::size_t n = index.empty() ? out.positions.count : index.size();
+    auto vertex = [&](std::size_t k) { return index.empty() ? std::uint64_t(k) : index[k]; };
     const std::size_t triangles = mode == 4 ? n / 3 : (n >= 3 ? n - 2 : 0);
+    out.triangles.resize(triangles);
     for(std::size_t t = 0; t < triangles; ++t)
     {
-      std::array<std::size_t, 3> c;
-      if(mode == 4) c = {{vertex(3 * t), vertex(3 * t + 1), vertex(3 * t + 2)}};
-      else if(mode == 5) c = {{vertex(t), vertex(t + 1 + t % 2), vertex(t + 2 - t % 2)}};
-      else c = {{vertex(t + 1), vertex(t + 2), vertex(0)}};
-      if(mirrored) std::swap(c[1], c[2]);
-      for(std::size_t v : c) soup.add_vertex_index(v);
+      if(mode == 4) out.triangles[t] = {{vertex(3 * t), vertex(3 * t + 1), vertex(3 * t + 2)}};
+      else if(mode == 5) out.triangles[t] = {{vertex(t), vertex(t + 1 + t % 2), vertex(t + 2 - t % 2)}};
+      else out.triangles[t] = {{vertex(t + 1), vertex(t + 2), vertex(0)}};
+    }
+    return true;
+  }
+
+  // The positions of the instance in the scene's frame, and its triangles, turned over if the
+  // transform mirrors.
+  static void add_primitive_instance(const Primitive_instance& p, Polygon_soup_arrays& soup)
+  {
+    const Matrix& w = p.world;
+    const std::size_t base = soup.number_of_points();
+    for(std::size_t i = 0; i < p.positions.count; ++i)
+    {
+      const double x = component(p.positions, i, 0), y = component(p.positions, i, 1), z = component(p.positions, i, 2);
+      soup.add_point(w[0] * x + w[4] * y + w[8] * z + w[12], w[1] * x + w[5] * y + w[9] * z + w[13],
+                     w[2] * x + w[6] * y + w[10] * z + w[14]);
+    }
+    for(std::array<std::uint64_t, 3> c : p.triangles)
+    {
+      if(p.mirrored) std::swap(c[1], c[2]);
+      for(std::uint64_t v : c) soup.add_vertex_index(v < p.positions.count ? base + std::size_t(v) : invalid_vertex_index);
       soup.end_polygon();
     }
   }
