@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
 #include <CGAL/Part_decomposition/decompose.h>
 
 #include "decomposition_settings.h"
@@ -17,6 +18,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -408,6 +413,34 @@ std::string keyword_documentation()
 
 } // namespace
 
+// write_labels_glb(output, input, labels, number_of_labels): the library's writer, labels in the
+// input file's face order (those of decompose_file()).
+void write_labels_glb_file(const std::string& output, const std::string& input,
+                           const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& labels,
+                           std::optional<std::size_t> number_of_labels)
+{
+  if(labels.ndim() != 1) throw std::invalid_argument("labels must be a one-dimensional array");
+  std::vector<std::size_t> face_label(std::size_t(labels.shape(0)));
+  std::size_t largest = 0;
+  for(std::size_t i = 0; i < face_label.size(); ++i)
+  {
+    const std::int64_t l = labels.at(py::ssize_t(i));
+    if(l < 0) throw std::invalid_argument("labels must not be negative");
+    face_label[i] = std::size_t(l);
+    largest = (std::max)(largest, face_label[i] + 1);
+  }
+  const std::size_t n = number_of_labels ? *number_of_labels : largest;
+  std::ostringstream glb;
+  {
+    py::gil_scoped_release release;
+    PD::IO::write_labels_glb(glb, input, face_label, n);
+  }
+  std::ofstream out(output, std::ios::binary);
+  out << glb.str();
+  out.close();
+  if(!out) throw std::invalid_argument("cannot write '" + output + "'");
+}
+
 PYBIND11_MODULE(_core, m)
 {
   m.doc() = "The compiled core of part_decomposition: import part_decomposition instead.";
@@ -467,5 +500,13 @@ PYBIND11_MODULE(_core, m)
          "Reads the mesh file (OFF, OBJ, PLY, STL, glTF .gltf/.glb) with the package's reader and\n"
          "decomposes it: the labels are in the file's face order, as written by hitops --labels.\n"
          "Same keywords as decompose().\n");
+  m.def("write_labels_glb", &write_labels_glb_file, py::arg("output"), py::arg("input"), py::arg("labels"),
+        py::arg("number_of_labels") = py::none(),
+        "write_labels_glb(output, input, labels, number_of_labels=None)\n\n"
+        "Writes the mesh file input (any format of decompose_file()) as a binary glTF file output, with\n"
+        "the label of every face as an EXT_mesh_features feature ID (vertex attribute _FEATURE_ID_0);\n"
+        "a glTF input keeps its scene, materials and textures. labels: one per face in the file's\n"
+        "order, as decompose_file() gives them; number_of_labels (the featureCount) defaults to\n"
+        "max(labels) + 1. ValueError for labels that do not fit the file.\n");
   m.attr("DEFAULTS") = default_parameters();
 }

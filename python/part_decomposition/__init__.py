@@ -16,10 +16,10 @@ import tempfile
 import numpy as np
 
 from . import _core
-from ._core import DEFAULTS, Decomposition, InvalidInput, Primitive, __version__, decompose_file
+from ._core import DEFAULTS, Decomposition, InvalidInput, Primitive, __version__, decompose_file, write_labels_glb
 
 __all__ = ["DEFAULTS", "FORMATS", "Decomposition", "InvalidInput", "Primitive", "__version__", "decompose",
-           "decompose_bytes", "decompose_file"]
+           "decompose_bytes", "decompose_file", "write_labels_glb"]
 
 # the classes show, and pickle, under the package's name rather than its private core's
 for _c in (Decomposition, InvalidInput, Primitive):

@@ -1,7 +1,7 @@
 """Hi-TOPS part decomposition of triangle meshes (the CGAL package Part_decomposition)."""
 
 import os
-from typing import IO, Any, Dict, List, Protocol, Tuple, Union, overload
+from typing import IO, Any, Dict, List, Optional, Protocol, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -101,3 +101,11 @@ def decompose_bytes(data: Union[bytes, bytearray, memoryview, IO[bytes]], format
     """Decomposes the mesh file held in memory: data is its contents, format one of FORMATS (case
     and a leading dot do not matter). The labels are those of decompose_file() on the same file.
     Raises ValueError for an unknown format or contents that cannot be parsed, TypeError for text."""
+
+def write_labels_glb(output: Union[str, os.PathLike[str]], input: Union[str, os.PathLike[str]],
+                     labels: ArrayLike, number_of_labels: Optional[int] = None) -> None:
+    """Writes the mesh file input (any format of decompose_file()) as a binary glTF file output,
+    with the label of every face as an EXT_mesh_features feature ID (vertex attribute
+    _FEATURE_ID_0); a glTF input keeps its scene, materials and textures. labels has one entry
+    per face in the file's order, as decompose_file() gives them; number_of_labels (the
+    featureCount) defaults to max(labels) + 1. Raises ValueError for labels that do not fit."""

@@ -242,3 +242,48 @@ def test_the_version_is_the_projects():
     with open(cmake) as f:
         version = re.search(r"project\(Part_decomposition\s+VERSION\s+([0-9.]+)", f.read()).group(1)
     assert pd.__version__ == version
+
+
+def _glb_feature_ids_per_triangle(path):
+    """The _FEATURE_ID_0 of the three corners of every triangle of a GLB, primitive by primitive,
+    and the featureCount of each primitive."""
+    data = open(path, "rb").read()
+    assert data[:4] == b"glTF"
+    json_length = struct.unpack_from("<I", data, 12)[0]
+    import json
+    doc = json.loads(data[20:20 + json_length])
+    binary = data[20 + json_length + 8:]
+
+    def read(accessor_index):
+        a = doc["accessors"][accessor_index]
+        view = doc["bufferViews"][a["bufferView"]]
+        dtype = {5121: np.uint8, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}[a["componentType"]]
+        start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+        stride = view.get("byteStride", np.dtype(dtype).itemsize)  # vertex attributes are 4-byte aligned
+        rows = np.frombuffer(binary, dtype=np.uint8, count=stride * a["count"], offset=start).reshape(-1, stride)
+        return rows[:, :np.dtype(dtype).itemsize].copy().view(dtype).ravel()
+
+    corners, counts = [], []
+    for mesh in doc["meshes"]:
+        for p in mesh["primitives"]:
+            ext = p["extensions"]["EXT_mesh_features"]["featureIds"][0]
+            counts.append(ext["featureCount"])
+            ids = read(p["attributes"]["_FEATURE_ID_%d" % ext["attribute"]])
+            corners.append(ids[read(p["indices"]).astype(np.int64)].reshape(-1, 3))
+    assert "EXT_mesh_features" in doc["extensionsUsed"]
+    return np.concatenate(corners), counts
+
+
+def test_write_labels_glb_puts_the_labels_on_the_triangles(animal):
+    path = os.path.join(DATA, "animal.off")
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "animal_labels.glb")
+        pd.write_labels_glb(out, path, animal.labels)
+        corners, counts = _glb_feature_ids_per_triangle(out)
+        # each triangle carries its face's label at its three corners (the OFF has only triangles)
+        assert counts == [animal.number_of_parts]
+        assert np.array_equal(corners, np.repeat(animal.labels[:, None], 3, axis=1))
+        with pytest.raises(ValueError):
+            pd.write_labels_glb(out, path, animal.labels[:-1])
+        with pytest.raises(ValueError):
+            pd.write_labels_glb(out, path, animal.labels, number_of_labels=1)
