@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "sha256.h"
 #include "test_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -579,4 +580,43 @@ TEST_CASE("welding never merges two vertices of one triangle, nor vertices insid
   }
   // 13 points, 2 welded; 8 stays apart from 1, 10 from 9
   CHECK(num_vertices(m) == 11);
+}
+
+// ---- SHA-256 of the batch summary (examples/Part_decomposition/include/sha256.h)
+
+TEST_CASE("SHA-256 gives the FIPS 180-4 known answers and the digest of sha256sum", "[sha256]")
+{
+  using Part_decomposition_tools::sha256_hex;
+  CHECK(sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  CHECK(sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
+        "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  CHECK(sha256_hex(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+
+  // a message fed in pieces of every size around the block length gives the same digest
+  std::string message;
+  for(std::size_t i = 0; i < 300000; ++i) message += char((i * 2654435761u) >> 13);
+  const std::string whole = sha256_hex(message);
+  for(std::size_t piece : {1u, 55u, 56u, 63u, 64u, 65u, 1000u})
+  {
+    Part_decomposition_tools::Sha256 h;
+    for(std::size_t at = 0; at < message.size(); at += piece)
+      h.update(message.data() + at, (std::min)(piece, message.size() - at));
+    CHECK(h.hex_digest() == whole);
+  }
+
+  // a file read in chunks, against the system's tool
+  const std::string path = write_temp("sha256.bin", message);
+  std::string digest;
+  REQUIRE(Part_decomposition_tools::sha256_of_file(path, digest));
+  CHECK(digest == whole);
+  std::FILE* tool = popen(("sha256sum " + path).c_str(), "r");
+  REQUIRE(tool != nullptr);
+  char line[128] = {0};
+  const bool got = std::fgets(line, sizeof(line), tool) != nullptr;
+  pclose(tool);
+  REQUIRE(got);
+  CHECK(std::string(line).substr(0, 64) == digest);
+  CHECK(!Part_decomposition_tools::sha256_of_file("pd_test_no_such_file", digest));
+  std::remove(path.c_str());
 }
