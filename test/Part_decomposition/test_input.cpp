@@ -582,6 +582,166 @@ TEST_CASE("welding never merges two vertices of one triangle, nor vertices insid
   CHECK(num_vertices(m) == 11);
 }
 
+// ---- files that other mesh libraries read
+
+namespace {
+
+// The corners of a tetrahedron with distinct coordinates, and its faces turned outward.
+const double tet_points[4][3] = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 4}};
+const int tet_faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+// Whether the mesh has a vertex at (x, y, z).
+bool has_point(const Mesh& m, double x, double y, double z)
+{
+  for(auto v : vertices(m))
+    if(m.point(v) == Point(x, y, z)) return true;
+  return false;
+}
+
+// Reads the tetrahedron from `path` and checks that it is the one of tet_points.
+void check_tetrahedron(const std::string& path)
+{
+  INFO(path);
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, m);
+  CHECK(info.number_of_input_faces == 4u);
+  CHECK(info.number_of_input_vertices == 4u);
+  CHECK(num_faces(m) == 4u);
+  CHECK(num_vertices(m) == 4u);
+  for(const auto& p : tet_points) CHECK(has_point(m, p[0], p[1], p[2]));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(2. * 3. * 4. / 6.));
+}
+
+// The bytes of `value` in little- or big-endian order.
+template <typename T>
+std::string bytes_of(T value, bool big_endian)
+{
+  std::string b(sizeof(T), '\0');
+  std::memcpy(&b[0], &value, sizeof(T));
+  const std::uint16_t probe = 1;
+  const bool host_little = *reinterpret_cast<const unsigned char*>(&probe) == 1;
+  if(host_little == big_endian) std::reverse(b.begin(), b.end());
+  return b;
+}
+
+// The message of the Invalid_input (UNREADABLE_FILE) that reading `path` throws.
+std::string read_message(const std::string& path)
+{
+  Mesh m;
+  try { PD::IO::read_triangle_mesh(path, m); }
+  catch(const PD::Invalid_input& e)
+  {
+    CHECK(e.error() == PD::Input_error::UNREADABLE_FILE);
+    return e.what();
+  }
+  FAIL("no exception for " << path);
+  return std::string();
+}
+
+} // namespace
+
+TEST_CASE("PLY as MeshLab writes it: per-corner texture coordinates and colours after the indices", "[io][ply]")
+{
+  const std::string header_end = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                 "element face 4\nproperty list uchar int vertex_indices\n"
+                                 "property list uchar float texcoord\nproperty uchar red\nproperty uchar green\n"
+                                 "property uchar blue\nproperty uchar alpha\nend_header\n";
+  std::ostringstream ascii;
+  ascii << "ply\nformat ascii 1.0\ncomment VCGLIB generated\ncomment TextureFile tex.png\n" << header_end;
+  for(const auto& p : tet_points) ascii << p[0] << ' ' << p[1] << ' ' << p[2] << " \n";
+  for(const auto& f : tet_faces)
+    ascii << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << " 6 0 0 1 0 0.5 1 255 128 0 255 \n";
+  check_tetrahedron(write_temp("meshlab.ply", ascii.str()));
+
+  for(bool big : {false, true})
+  {
+    std::string binary = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+                         " 1.0\ncomment VCGLIB generated\n" + header_end;
+    for(const auto& p : tet_points)
+      for(double c : p) binary += bytes_of(float(c), big);
+    for(const auto& f : tet_faces)
+    {
+      binary += '\3';
+      for(int i : f) binary += bytes_of(std::int32_t(i), big);
+      binary += '\6';
+      for(float t : {0.f, 0.f, 1.f, 0.f, 0.5f, 1.f}) binary += bytes_of(t, big);
+      binary += std::string("\xff\x80\x00\xff", 4);
+    }
+    check_tetrahedron(write_temp(big ? "meshlab_be.ply" : "meshlab_le.ply", binary));
+  }
+}
+
+TEST_CASE("OFF: blanks before the keyword and the first count glued to it", "[io][off]")
+{
+  // a box (0, 0, 0) - (1, 2, 3) of six quads
+  const std::string body = "0 0 0\n1 0 0\n1 2 0\n0 2 0\n0 0 3\n1 0 3\n1 2 3\n0 2 3\n"
+                           "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("glued.off", "   OFF8 6 12 # comment\n" + body), m);
+  CHECK(info.number_of_input_vertices == 8u);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(info.number_of_triangulated_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(has_point(m, 1, 2, 3));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+  // the same with the other variants' letters, and with the counts on the next line
+  Mesh n;
+  PD::IO::read_triangle_mesh(write_temp("glued_n.off", "NOFF8\n6 12\n" + body), n);
+  CHECK(num_faces(n) == 12u);
+  // what is not OFF stays refused
+  for(const std::string& first : {"OFFx 8 6 12\n", "XOFF 8 6 12\n", "OFF8x 6 12\n", "OF 8 6 12\n", "OFFOFF 8 6 12\n"})
+  {
+    INFO(first);
+    CHECK(read_message(write_temp("not.off", first + body)).find("line 1: expected OFF") != std::string::npos);
+  }
+}
+
+TEST_CASE("a file that cannot be parsed is refused with its line (or byte) and what was expected", "[io]")
+{
+  const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
+  struct Case
+  {
+    std::string name, content, expected;
+  };
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string binary_ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\nend_header\n";
+  const std::size_t header = binary_ply.size();
+  binary_ply += std::string(20, '\0'); // 5 of the 9 floats
+  std::string binary_stl(80, ' ');
+  binary_stl += bytes_of(std::uint32_t(3), false) + std::string(70, '\0');
+  const std::vector<Case> cases = {
+    {"bad.off", "OFF\n3 1 0\n0 0 0\n1 abc 0\n0 1 0\n3 0 1 2\n",
+     "as OFF: line 4: expected 3 vertex coordinates, got 'abc'"},
+    {"short.off", "OFF\n3 2 0\n" + tri + "3 0 1 2\n", "as OFF: line 7: expected face 2 of 2, got the end of the file"},
+    {"degree.off", "OFF\n3 1 0\n" + tri + "4 0 1 2\n",
+     "as OFF: line 6: expected 4 vertex indices after the face degree, got 3"},
+    {"bad.ply", ply + tri + "3 0 1 x\n",
+     "as PLY: line 13: expected an integer in list 'vertex_indices' of face 1 of 1, got 'x'"},
+    {"type.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty flot x\n", "as PLY: line 4: expected a property type"},
+    {"binary.ply", binary_ply, "as PLY: byte " + std::to_string(header + 20) + ": expected a float 'z' of vertex 2 of 3"},
+    {"bad.stl",
+     "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n  endloop\n endfacet\nendsolid t\n",
+     "as STL: line 7: expected 3 vertices in the facet, got 2"},
+    {"binary.stl", binary_stl, "as STL: byte 84: expected 3 triangles of 50 bytes, got 70 bytes"},
+    {"bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": [", "as glTF: invalid JSON"},
+    {"mesh.xyz", tri, "cannot parse"}};
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = write_temp(c.name, c.content);
+    const std::string message = read_message(path);
+    CHECK(message.rfind("cannot parse '" + path + "'", 0) == 0);
+    CHECK(message.find(c.expected) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    std::remove(path.c_str());
+  }
+  // nlohmann's message names the place of the JSON error
+  CHECK(read_message(write_temp("bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": [")).find("line 2") !=
+        std::string::npos);
+}
+
 // ---- SHA-256 of the batch summary (examples/Part_decomposition/include/sha256.h)
 
 TEST_CASE("SHA-256 gives the FIPS 180-4 known answers and the digest of sha256sum", "[sha256]")
