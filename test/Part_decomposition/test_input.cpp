@@ -696,6 +696,72 @@ TEST_CASE("OFF: blanks before the keyword and the first count glued to it", "[io
   }
 }
 
+TEST_CASE("OBJ: every statement but v and f skipped, also a group name holding f", "[io][obj]")
+{
+  std::ostringstream obj;
+  obj << "# exported\nmtllib tet.mtl\no Tetrahedron\n";
+  obj << "v " << tet_points[0][0] << ' ' << tet_points[0][1] << ' ' << tet_points[0][2] << '\n';
+  obj << "v " << tet_points[1][0] << ' ' << tet_points[1][1] << ' ' << tet_points[1][2] << " 1.0\n"; // weight
+  obj << "v " << tet_points[2][0] << ' ' << tet_points[2][1] << ' ' << tet_points[2][2] << " 0.5 0.2 0.9\n"; // colour
+  obj << "  v\t" << tet_points[3][0] << ' ' << tet_points[3][1] << ' ' << tet_points[3][2] << "\r\n";
+  obj << "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nvp 0.5\ng An f Three Other Things\nusemtl red\ns 1\n";
+  const int (&f)[4][3] = tet_faces;
+  obj << "f " << f[0][0] + 1 << ' ' << f[0][1] + 1 << ' ' << f[0][2] + 1 << '\n';                         // i
+  obj << "f " << f[1][0] + 1 << "/1 " << f[1][1] + 1 << "/2 " << f[1][2] + 1 << "/3 # a comment\n";       // i/t
+  obj << "l 1 2\np 3\ncurv 0 1 1 2\nparm u 0 1\nend\n";
+  obj << "f " << f[2][0] - 4 << "//1 " << f[2][1] - 4 << "//1 " << f[2][2] - 4 << "//1\n";                 // -i//n
+  obj << "fo " << f[3][0] + 1 << "/1/1 " << f[3][1] + 1 << "/2/1 " << f[3][2] + 1 << "/3/1\n";           // i/t/n
+  check_tetrahedron(write_temp("groups.obj", obj.str()));
+
+  // polygons are triangulated by the common path: a box of six quads
+  const std::string box = "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 0 0 3\nv 1 0 3\nv 1 2 3\nv 0 2 3\n"
+                          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("box.obj", box), m);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(info.number_of_triangulated_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+}
+
+TEST_CASE("OBJ: a statement continued on the next line after a backslash", "[io][obj]")
+{
+  // a box of six quads, as Rhino writes long faces: "f 1 2 \" then "3 4"
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 0 0 3\nv 1 0 3\nv \\\n 1 2 3\nv 0 2 3\n"
+                          "f 1 4 \\\n3 2\n"
+                          "f 5 6 \\\r\n 7 \\\n 8\n"
+                          "f 1 2\\\n 6 5\n"          // glued to the index
+                          "f 2 3 7 6 \\  \n"          // blanks after the backslash, then an empty line
+                          "\n"
+                          "f 3 4 8 7 # a comment ends the statement \\\n"
+                          "f 4 1 5 8\n"
+                          "g a long \\\n group name\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("continued.obj", obj), m);
+  CHECK(info.number_of_input_vertices == 8u);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(has_point(m, 1, 2, 3));
+  CHECK(CGAL::is_closed(m));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+  // a continuation line alone is not a statement
+  CHECK(read_message(write_temp("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n3\n")).find("line 5") != std::string::npos);
+}
+
+TEST_CASE("OBJ: indices out of range are the out-of-range error, not a parse error", "[io][obj]")
+{
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  CHECK(read_error(write_temp("zero.obj", tri + "f 0 1 2\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("past.obj", tri + "f 1 2 4\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("before.obj", tri + "f -1 -2 -4\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("huge.obj", tri + "f 1 2 99999999999999999999999\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("novertex.obj", "# nothing\n")) == PD::Input_error::NO_FACES);
+  // a vertex index may refer to a vertex given later in the file
+  Mesh m;
+  PD::IO::read_triangle_mesh(write_temp("forward.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"), m);
+  CHECK(num_faces(m) == 1u);
+}
+
 TEST_CASE("a file that cannot be parsed is refused with its line (or byte) and what was expected", "[io]")
 {
   const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
@@ -712,6 +778,10 @@ TEST_CASE("a file that cannot be parsed is refused with its line (or byte) and w
   std::string binary_stl(80, ' ');
   binary_stl += bytes_of(std::uint32_t(3), false) + std::string(70, '\0');
   const std::vector<Case> cases = {
+    {"bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\n# faces\nf 1 2 abc\n",
+     "as OBJ: line 6: expected a vertex index after 'f', got 'abc'"},
+    {"bad_vertex.obj", "v 0 0 0\nv 1 0 \\\n  x\n", "as OBJ: line 3: expected 3 coordinates after 'v', got 'x'"},
+    {"binary.obj", "v 0 0 0\n\x89PNG\r\n", "as OBJ: line 2: expected an OBJ statement"},
     {"bad.off", "OFF\n3 1 0\n0 0 0\n1 abc 0\n0 1 0\n3 0 1 2\n",
      "as OFF: line 4: expected 3 vertex coordinates, got 'abc'"},
     {"short.off", "OFF\n3 2 0\n" + tri + "3 0 1 2\n", "as OFF: line 7: expected face 2 of 2, got the end of the file"},

@@ -14,6 +14,7 @@
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
 #include <CGAL/Part_decomposition/internal/read_error.h>
 #include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
+#include <CGAL/Part_decomposition/internal/read_obj_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/read_stl_soup.h>
@@ -22,11 +23,10 @@
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 #include <CGAL/Part_decomposition/internal/weld_border_points.h>
 
-#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -90,8 +90,6 @@ struct Mesh_file_info
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
-
 // The polygon soup of a file, as read, and the triangles made from it.
 struct File_soup
 {
@@ -127,22 +125,6 @@ inline void read_file_contents(const std::string& filename, File_contents& conte
   in.seekg(0, std::ios::beg);
   if(contents.size != 0 && !in.read(contents.data.get(), std::streamsize(contents.size)))
     throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot read '" + filename + "'");
-}
-
-// The OBJ parser of CGAL, whose output is copied into the flat arrays.
-inline void read_obj_soup(const std::string& filename, Polygon_soup_arrays& soup)
-{
-  std::vector<Read_point, Bounded_allocator<Read_point> > points;
-  std::vector<std::vector<std::size_t, Bounded_allocator<std::size_t> >,
-              Bounded_allocator<std::vector<std::size_t, Bounded_allocator<std::size_t> > > > polygons;
-  if(!CGAL::IO::read_OBJ(filename, points, polygons, CGAL::parameters::verbose(false)))
-    throw Read_error("CGAL's OBJ reader refused the file");
-  for(const Read_point& p : points) soup.add_point(p.x(), p.y(), p.z());
-  for(const auto& polygon : polygons)
-  {
-    for(std::size_t id : polygon) soup.add_vertex_index(id);
-    soup.end_polygon();
-  }
 }
 
 // glTF (.gltf, .glb): a broken file throws Gltf_error with the reason.
@@ -190,14 +172,10 @@ inline void parse_polygon_soup(const std::string& filename, Polygon_soup_arrays&
     // few bytes): no single allocation of the parser may exceed a multiple of the file size.
     Read_allocation_limit limit(64 * contents.size + (std::size_t(1) << 20));
     // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
-    // broken files, and its STL reader looks every corner up in a std::map: these formats are
-    // read by our own parsers.
+    // broken files, its STL reader looks every corner up in a std::map, and its OBJ reader
+    // refuses valid files and reads a stream: every format is read by our own parsers.
     if(extension == "off") Off_soup_reader(contents.begin(), contents.end()).read(soup);
-    else if(extension == "obj")
-    {
-      contents = File_contents(); // CGAL reads the file again
-      read_obj_soup(filename, soup);
-    }
+    else if(extension == "obj") Obj_soup_reader(contents.begin(), contents.end()).read(soup);
     else if(extension == "ply") Ply_soup_reader(contents.begin(), contents.end()).read(soup);
     else if(extension == "stl") Stl_soup_reader(contents.begin(), contents.end()).read(soup);
     else read_gltf_soup(filename, contents, soup);
@@ -687,8 +665,8 @@ sizes from the origin) and the smallest gap between distinct border vertices in 
 (\f$4 \cdot 10^{-5}\f$); see the user manual. A mesh stored in float32 far from the origin (more
 than about ten times its size) has a larger round-off and needs a larger tolerance.
 
-The file is read into memory at once and parsed in place (OFF, PLY and STL by the package's own
-parsers, OBJ by \cgal's). An STL file stores the corners of each triangle apart: its vertices are
+The file is read into memory at once and parsed in place by the package's own parsers (see the
+user manual for what each reads). An STL file stores the corners of each triangle apart: its vertices are
 the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts them and
 `Mesh_file_info::number_of_merged_vertices` is 0.
 
