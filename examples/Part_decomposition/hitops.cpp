@@ -3,11 +3,14 @@
 //   hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]
 //                [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]
 //                [--labels-glb OUT.glb] [--threads N] [parameter options]
-//   hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]
+//   hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--threads N]
+//                [parameter options]
 //
 // `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
 // status 1; output files are written to a temporary name and renamed once complete, so a failed
-// run never leaves a partial file.
+// run never leaves a partial file. In batch mode, the summary gives the SHA-256 of every input
+// file, and `--mesh-timeout` decomposes each mesh in a child process that is killed when it takes
+// longer (status `timeout`; the batch goes on with the next mesh, and the mesh leaves no output).
 //
 // On a glTF input, --parts-glb keeps the input's materials, textures, UVs, normals and vertex
 // colours in each part, and --labels-glb writes the input's scene unchanged with the part of every
@@ -21,13 +24,16 @@
 #include <CGAL/Part_decomposition/decompose.h>
 
 #include "decomposition_settings.h"
+#include "sha256.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -41,6 +47,8 @@
 #include <string>
 #include <vector>
 
+#include <poll.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -65,6 +73,7 @@ struct Options
   std::string parts_glb, labels_glb;
   bool parts_glb_primitives = false;
   std::size_t shard = 0, shards = 1;
+  double mesh_timeout = 0.; // seconds per mesh of a batch; 0: no limit
   int threads = 0;
   bool timings = false;
   double weld_tolerance = PD::defaults::weld_tolerance; // the named parameter of the reader
@@ -75,7 +84,8 @@ const char* const usage_text =
   "usage: hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]\n"
   "                    [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]\n"
   "                    [--labels-glb OUT.glb] [--threads N] [parameter options]\n"
-  "       hitops --batch LIST --out DIR [--shard I/N] [--threads N] [parameter options]\n"
+  "       hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--threads N]\n"
+  "                    [parameter options]\n"
   "\n"
   "Decomposes a triangle mesh (OFF, OBJ, PLY, STL, glTF .gltf/.glb) into parts with the Hi-TOPS method.\n"
   "\n"
@@ -101,8 +111,11 @@ const char* const usage_text =
   "batch processing:\n"
   "  --batch LIST             a file with one mesh path per line (# starts a comment)\n"
   "  --out DIR                (created if needed) writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
-  "                           DIR/summary[.I-of-N].tsv; meshes whose outputs exist are skipped\n"
+  "                           DIR/summary[.I-of-N].tsv (name, input, status, faces, parts, seconds, sha256 of\n"
+  "                           the input, message); meshes whose outputs exist are skipped\n"
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
+  "  --mesh-timeout SECONDS   stop a mesh (read, decomposition, outputs) that takes longer: status timeout, no\n"
+  "                           output, the batch goes on (each mesh then runs in a child process); 0: no limit\n"
   "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
   "  --weld-tolerance 5e-6    border vertices closer than this fraction of the bounding box diagonal are\n"
   "                           welded when the mesh is read (seams left open by round-off); 0: none\n"
@@ -193,6 +206,11 @@ Options parse(int argc, char** argv)
     else if(a == "--verbose") o.decomposition.verbose = true;
     else if(a == "--weld-tolerance") o.weld_tolerance = to_number(a, value());
     else if(a == "--batch") o.batch = value();
+    else if(a == "--mesh-timeout")
+    {
+      o.mesh_timeout = to_number(a, value());
+      if(o.mesh_timeout < 0) throw Usage_error("--mesh-timeout expects a non-negative number of seconds");
+    }
     else if(a == "--out") o.out_dir = value();
     else if(a == "--shard")
     {
@@ -279,6 +297,7 @@ Options parse(int argc, char** argv)
   if(!o.batch.empty() && !o.input.empty()) throw Usage_error("give either an input file or --batch, not both");
   if(!o.batch.empty() && o.out_dir.empty()) throw Usage_error("--batch needs --out DIR");
   if(o.parts_glb_primitives && o.parts_glb.empty()) throw Usage_error("--parts-glb-primitives needs --parts-glb FILE");
+  if(o.mesh_timeout > 0 && o.batch.empty()) throw Usage_error("--mesh-timeout applies to --batch only");
   return o;
 }
 
@@ -515,11 +534,11 @@ bool file_exists(const std::string& path)
   return std::ifstream(path).good();
 }
 
-// One line per mesh of the shard: name, status, faces, parts, seconds, message.
-int batch(const Options& o)
+// The paths of the list file: one per line, blank lines and '#' comments skipped.
+std::vector<std::string> read_list(const std::string& list_path)
 {
-  std::ifstream list(o.batch);
-  if(!list) throw Usage_error("cannot read the list '" + o.batch + "'");
+  std::ifstream list(list_path);
+  if(!list) throw Usage_error("cannot read the list '" + list_path + "'");
   std::vector<std::string> paths;
   for(std::string line; std::getline(list, line);)
   {
@@ -528,6 +547,151 @@ int batch(const Options& o)
     if(b == std::string::npos || line[b] == '#') continue;
     paths.push_back(line.substr(b));
   }
+  return paths;
+}
+
+// What became of one mesh of a batch: ok, failed or timeout, and its columns of the summary.
+struct Mesh_outcome
+{
+  std::string status = "failed";
+  std::size_t faces = 0, parts = 0;
+  std::string message; // on one line, without tabs
+};
+
+std::string one_line(std::string message)
+{
+  for(char& c : message)
+    if(c == '\t' || c == '\n') c = ' ';
+  return message;
+}
+
+// Reads, decomposes and writes the outputs of one mesh of a batch; an error is the outcome.
+Mesh_outcome decompose_one(const Options& o, const std::string& path, const std::string& seg, const std::string& json)
+{
+  Mesh_outcome outcome;
+  try
+  {
+    Mesh mesh;
+    const PD::IO::Mesh_file_info info =
+      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+    if(o.decomposition.verbose) print_reading(info);
+    const Result r = run(mesh, o);
+    Atomic_outputs outputs;
+    write_labels(outputs.open(seg), info, r);
+    write_primitives(outputs.open(json), r);
+    outputs.commit();
+    if(o.timings) print_timings(path, mesh, r, 0.);
+    outcome.status = "ok";
+    outcome.faces = info.number_of_input_faces;
+    outcome.parts = r.parts;
+  }
+  catch(const std::exception& e)
+  {
+    outcome.message = one_line(e.what());
+  }
+  catch(...)
+  {
+    outcome.message = "unexpected exception";
+  }
+  return outcome;
+}
+
+// Writes all of `text` to the file descriptor `fd`.
+void write_all(int fd, const std::string& text)
+{
+  for(std::size_t done = 0; done < text.size();)
+  {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if(n < 0 && errno == EINTR) continue;
+    if(n <= 0) return;
+    done += std::size_t(n);
+  }
+}
+
+// Reads what the child writes to `fd` until it closes it (true) or `deadline` passes (false).
+bool read_until_closed(int fd, std::chrono::steady_clock::time_point deadline, std::string& text)
+{
+  char buffer[4096];
+  for(;;)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if(now >= deadline) return false;
+    // rounded up: poll() must not return just before the deadline and spin
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
+    pollfd p = {fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, int((std::min)(left, std::chrono::milliseconds::rep(1 << 30))));
+    if(ready < 0 && errno == EINTR) continue;
+    if(ready <= 0) continue; // the deadline is checked again
+    const ssize_t n = ::read(fd, buffer, sizeof(buffer));
+    if(n < 0 && errno == EINTR) continue;
+    if(n <= 0) return true;
+    text.append(buffer, std::size_t(n));
+  }
+}
+
+// decompose_one() in a child process, killed if it takes longer than o.mesh_timeout seconds; the
+// child sends its outcome through a pipe. A killed child leaves no output, complete or not.
+Mesh_outcome decompose_with_timeout(const Options& o, const std::string& path, const std::string& seg,
+                                    const std::string& json)
+{
+  int channel[2];
+  if(::pipe(channel) != 0) throw std::runtime_error("cannot create a pipe");
+  std::cout.flush();
+  const pid_t child = ::fork();
+  if(child < 0) throw std::runtime_error("cannot start a process for '" + path + "'");
+  if(child == 0)
+  {
+    ::close(channel[0]);
+    const Mesh_outcome m = decompose_one(o, path, seg, json);
+    write_all(channel[1],
+              m.status + '\t' + std::to_string(m.faces) + '\t' + std::to_string(m.parts) + '\t' + m.message);
+    // no destructor of the parent's objects (its summary, with its temporary file) may run here
+    std::cerr.flush();
+    ::_exit(EXIT_SUCCESS);
+  }
+  ::close(channel[1]);
+  // at most 30 years: the clock's range is not exceeded
+  const std::chrono::duration<double> timeout((std::min)(o.mesh_timeout, 1e9));
+  const auto deadline =
+    std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(timeout);
+  std::string text;
+  const bool finished = read_until_closed(channel[0], deadline, text);
+  ::close(channel[0]);
+  if(!finished) ::kill(child, SIGKILL);
+  int status = 0;
+  while(::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
+
+  Mesh_outcome outcome;
+  std::istringstream in(text);
+  if(finished && std::getline(in, outcome.status, '\t') && (in >> outcome.faces >> outcome.parts))
+  {
+    in.get(); // the tab before the message
+    std::getline(in, outcome.message);
+    return outcome;
+  }
+  // killed, or the child died without an outcome (a crash): its outputs are not complete
+  for(const std::string& f : {seg, json})
+  {
+    std::remove((f + ".tmp." + std::to_string(child)).c_str());
+    std::remove(f.c_str());
+  }
+  outcome = Mesh_outcome();
+  if(!finished)
+  {
+    outcome.status = "timeout";
+    std::ostringstream message;
+    message << "stopped after " << o.mesh_timeout << " s (--mesh-timeout)";
+    outcome.message = message.str();
+  }
+  else if(WIFSIGNALED(status)) outcome.message = "killed by signal " + std::to_string(WTERMSIG(status));
+  else outcome.message = "the process ended without a result";
+  return outcome;
+}
+
+// One line per mesh of the shard: name, input, status, faces, parts, seconds, sha256, message.
+int batch(const Options& o)
+{
+  const std::vector<std::string> paths = read_list(o.batch);
   // names must be unique in the output folder: repeated stems get their rank appended
   std::map<std::string, std::size_t> stem_count;
   for(const std::string& p : paths) ++stem_count[stem(p)];
@@ -540,52 +704,41 @@ int batch(const Options& o)
   const std::string suffix = o.shards > 1 ? "." + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) : "";
   Atomic_outputs summary_file;
   std::ostream& summary = summary_file.open(o.out_dir + "/summary" + suffix + ".tsv");
-  summary << "name\tinput\tstatus\tfaces\tparts\tseconds\tmessage\n";
-  std::size_t done = 0, skipped = 0, failed = 0;
+  summary << "name\tinput\tstatus\tfaces\tparts\tseconds\tsha256\tmessage\n";
+  std::map<std::string, std::size_t> count; // per status
   for(std::size_t i = 0; i < paths.size(); ++i)
   {
     if(i % o.shards != o.shard) continue;
     const std::string name = stem_count[stem(paths[i])] > 1 ? stem(paths[i]) + "_" + std::to_string(i) : stem(paths[i]);
     const std::string seg = o.out_dir + "/" + name + ".seg", json = o.out_dir + "/" + name + ".json";
+    std::string sha256; // empty if the file cannot be read
+    Part_decomposition_tools::sha256_of_file(paths[i], sha256);
+    const auto t0 = std::chrono::steady_clock::now();
+    Mesh_outcome outcome;
     if(file_exists(seg) && file_exists(json))
     {
-      ++skipped;
-      summary << name << '\t' << paths[i] << "\tskipped\t\t\t\talready done\n";
-      continue;
+      outcome.status = "skipped";
+      outcome.message = "already done";
     }
-    const auto t0 = std::chrono::steady_clock::now();
-    try
-    {
-      Mesh mesh;
-      const PD::IO::Mesh_file_info info =
-        PD::IO::read_triangle_mesh(paths[i], mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
-      if(o.decomposition.verbose) print_reading(info);
-      const Result r = run(mesh, o);
-      Atomic_outputs outputs;
-      write_labels(outputs.open(seg), info, r);
-      write_primitives(outputs.open(json), r);
-      outputs.commit();
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      summary << name << '\t' << paths[i] << "\tok\t" << info.number_of_input_faces << '\t' << r.parts << '\t'
-              << s << "\t\n";
-      if(o.timings) print_timings(paths[i], mesh, r, 0.);
-      ++done;
-    }
-    catch(const std::exception& e)
-    {
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::string message = e.what();
-      for(char& c : message)
-        if(c == '\t' || c == '\n') c = ' ';
-      summary << name << '\t' << paths[i] << "\tfailed\t\t\t" << s << '\t' << message << '\n';
-      std::cerr << "hitops: " << paths[i] << ": " << message << std::endl;
-      ++failed;
-    }
+    else
+      outcome =
+        o.mesh_timeout > 0 ? decompose_with_timeout(o, paths[i], seg, json) : decompose_one(o, paths[i], seg, json);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const bool ok = outcome.status == "ok";
+    summary << name << '\t' << paths[i] << '\t' << outcome.status << '\t';
+    if(ok) summary << outcome.faces << '\t' << outcome.parts;
+    else summary << '\t';
+    summary << '\t';
+    if(outcome.status != "skipped") summary << s;
+    summary << '\t' << sha256 << '\t' << outcome.message << '\n';
+    if(!ok && outcome.status != "skipped") std::cerr << "hitops: " << paths[i] << ": " << outcome.message << std::endl;
+    ++count[outcome.status];
     summary.flush();
   }
   summary_file.commit();
-  std::cout << "batch: " << done << " decomposed, " << skipped << " skipped, " << failed << " failed" << std::endl;
-  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  std::cout << "batch: " << count["ok"] << " decomposed, " << count["skipped"] << " skipped, " << count["failed"]
+            << " failed, " << count["timeout"] << " timed out" << std::endl;
+  return count["failed"] + count["timeout"] == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 } // namespace

@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "sha256.h"
 #include "test_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -756,4 +757,273 @@ TEST_CASE("glTF parts keep the attributes and material of the file, in the scene
       }
     }
   CHECK(triangles == 4);
+}
+
+// ---- files that other mesh libraries read
+
+namespace {
+
+// The corners of a tetrahedron with distinct coordinates, and its faces turned outward.
+const double tet_points[4][3] = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 4}};
+const int tet_faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+// Whether the mesh has a vertex at (x, y, z).
+bool has_point(const Mesh& m, double x, double y, double z)
+{
+  for(auto v : vertices(m))
+    if(m.point(v) == Point(x, y, z)) return true;
+  return false;
+}
+
+// Reads the tetrahedron from `path` and checks that it is the one of tet_points.
+void check_tetrahedron(const std::string& path)
+{
+  INFO(path);
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, m);
+  CHECK(info.number_of_input_faces == 4u);
+  CHECK(info.number_of_input_vertices == 4u);
+  CHECK(num_faces(m) == 4u);
+  CHECK(num_vertices(m) == 4u);
+  for(const auto& p : tet_points) CHECK(has_point(m, p[0], p[1], p[2]));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(2. * 3. * 4. / 6.));
+}
+
+// The bytes of `value` in little- or big-endian order.
+template <typename T>
+std::string bytes_of(T value, bool big_endian)
+{
+  std::string b(sizeof(T), '\0');
+  std::memcpy(&b[0], &value, sizeof(T));
+  const std::uint16_t probe = 1;
+  const bool host_little = *reinterpret_cast<const unsigned char*>(&probe) == 1;
+  if(host_little == big_endian) std::reverse(b.begin(), b.end());
+  return b;
+}
+
+// The message of the Invalid_input (UNREADABLE_FILE) that reading `path` throws.
+std::string read_message(const std::string& path)
+{
+  Mesh m;
+  try { PD::IO::read_triangle_mesh(path, m); }
+  catch(const PD::Invalid_input& e)
+  {
+    CHECK(e.error() == PD::Input_error::UNREADABLE_FILE);
+    return e.what();
+  }
+  FAIL("no exception for " << path);
+  return std::string();
+}
+
+} // namespace
+
+TEST_CASE("PLY as MeshLab writes it: per-corner texture coordinates and colours after the indices", "[io][ply]")
+{
+  const std::string header_end = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                 "element face 4\nproperty list uchar int vertex_indices\n"
+                                 "property list uchar float texcoord\nproperty uchar red\nproperty uchar green\n"
+                                 "property uchar blue\nproperty uchar alpha\nend_header\n";
+  std::ostringstream ascii;
+  ascii << "ply\nformat ascii 1.0\ncomment VCGLIB generated\ncomment TextureFile tex.png\n" << header_end;
+  for(const auto& p : tet_points) ascii << p[0] << ' ' << p[1] << ' ' << p[2] << " \n";
+  for(const auto& f : tet_faces)
+    ascii << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << " 6 0 0 1 0 0.5 1 255 128 0 255 \n";
+  check_tetrahedron(write_temp("meshlab.ply", ascii.str()));
+
+  for(bool big : {false, true})
+  {
+    std::string binary = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +
+                         " 1.0\ncomment VCGLIB generated\n" + header_end;
+    for(const auto& p : tet_points)
+      for(double c : p) binary += bytes_of(float(c), big);
+    for(const auto& f : tet_faces)
+    {
+      binary += '\3';
+      for(int i : f) binary += bytes_of(std::int32_t(i), big);
+      binary += '\6';
+      for(float t : {0.f, 0.f, 1.f, 0.f, 0.5f, 1.f}) binary += bytes_of(t, big);
+      binary += std::string("\xff\x80\x00\xff", 4);
+    }
+    check_tetrahedron(write_temp(big ? "meshlab_be.ply" : "meshlab_le.ply", binary));
+  }
+}
+
+TEST_CASE("OFF: blanks before the keyword and the first count glued to it", "[io][off]")
+{
+  // a box (0, 0, 0) - (1, 2, 3) of six quads
+  const std::string body = "0 0 0\n1 0 0\n1 2 0\n0 2 0\n0 0 3\n1 0 3\n1 2 3\n0 2 3\n"
+                           "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("glued.off", "   OFF8 6 12 # comment\n" + body), m);
+  CHECK(info.number_of_input_vertices == 8u);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(info.number_of_triangulated_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(has_point(m, 1, 2, 3));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+  // the same with the other variants' letters, and with the counts on the next line
+  Mesh n;
+  PD::IO::read_triangle_mesh(write_temp("glued_n.off", "NOFF8\n6 12\n" + body), n);
+  CHECK(num_faces(n) == 12u);
+  // what is not OFF stays refused
+  for(const std::string& first : {"OFFx 8 6 12\n", "XOFF 8 6 12\n", "OFF8x 6 12\n", "OF 8 6 12\n", "OFFOFF 8 6 12\n"})
+  {
+    INFO(first);
+    CHECK(read_message(write_temp("not.off", first + body)).find("line 1: expected OFF") != std::string::npos);
+  }
+}
+
+TEST_CASE("OBJ: every statement but v and f skipped, also a group name holding f", "[io][obj]")
+{
+  std::ostringstream obj;
+  obj << "# exported\nmtllib tet.mtl\no Tetrahedron\n";
+  obj << "v " << tet_points[0][0] << ' ' << tet_points[0][1] << ' ' << tet_points[0][2] << '\n';
+  obj << "v " << tet_points[1][0] << ' ' << tet_points[1][1] << ' ' << tet_points[1][2] << " 1.0\n"; // weight
+  obj << "v " << tet_points[2][0] << ' ' << tet_points[2][1] << ' ' << tet_points[2][2] << " 0.5 0.2 0.9\n"; // colour
+  obj << "  v\t" << tet_points[3][0] << ' ' << tet_points[3][1] << ' ' << tet_points[3][2] << "\r\n";
+  obj << "vt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nvp 0.5\ng An f Three Other Things\nusemtl red\ns 1\n";
+  const int (&f)[4][3] = tet_faces;
+  obj << "f " << f[0][0] + 1 << ' ' << f[0][1] + 1 << ' ' << f[0][2] + 1 << '\n';                         // i
+  obj << "f " << f[1][0] + 1 << "/1 " << f[1][1] + 1 << "/2 " << f[1][2] + 1 << "/3 # a comment\n";       // i/t
+  obj << "l 1 2\np 3\ncurv 0 1 1 2\nparm u 0 1\nend\n";
+  obj << "f " << f[2][0] - 4 << "//1 " << f[2][1] - 4 << "//1 " << f[2][2] - 4 << "//1\n";                 // -i//n
+  obj << "fo " << f[3][0] + 1 << "/1/1 " << f[3][1] + 1 << "/2/1 " << f[3][2] + 1 << "/3/1\n";           // i/t/n
+  check_tetrahedron(write_temp("groups.obj", obj.str()));
+
+  // polygons are triangulated by the common path: a box of six quads
+  const std::string box = "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 0 0 3\nv 1 0 3\nv 1 2 3\nv 0 2 3\n"
+                          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("box.obj", box), m);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(info.number_of_triangulated_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+}
+
+TEST_CASE("OBJ: a statement continued on the next line after a backslash", "[io][obj]")
+{
+  // a box of six quads, as Rhino writes long faces: "f 1 2 \" then "3 4"
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 0 0 3\nv 1 0 3\nv \\\n 1 2 3\nv 0 2 3\n"
+                          "f 1 4 \\\n3 2\n"
+                          "f 5 6 \\\r\n 7 \\\n 8\n"
+                          "f 1 2\\\n 6 5\n"          // glued to the index
+                          "f 2 3 7 6 \\  \n"          // blanks after the backslash, then an empty line
+                          "\n"
+                          "f 3 4 8 7 # a comment ends the statement \\\n"
+                          "f 4 1 5 8\n"
+                          "g a long \\\n group name\n";
+  Mesh m;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(write_temp("continued.obj", obj), m);
+  CHECK(info.number_of_input_vertices == 8u);
+  CHECK(info.number_of_input_faces == 6u);
+  CHECK(num_faces(m) == 12u);
+  CHECK(has_point(m, 1, 2, 3));
+  CHECK(CGAL::is_closed(m));
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
+  // a continuation line alone is not a statement
+  CHECK(read_message(write_temp("broken.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n3\n")).find("line 5") != std::string::npos);
+}
+
+TEST_CASE("OBJ: indices out of range are the out-of-range error, not a parse error", "[io][obj]")
+{
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  CHECK(read_error(write_temp("zero.obj", tri + "f 0 1 2\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("past.obj", tri + "f 1 2 4\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("before.obj", tri + "f -1 -2 -4\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("huge.obj", tri + "f 1 2 99999999999999999999999\n")) == PD::Input_error::INVALID_FACE);
+  CHECK(read_error(write_temp("novertex.obj", "# nothing\n")) == PD::Input_error::NO_FACES);
+  // a vertex index may refer to a vertex given later in the file
+  Mesh m;
+  PD::IO::read_triangle_mesh(write_temp("forward.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"), m);
+  CHECK(num_faces(m) == 1u);
+}
+
+TEST_CASE("a file that cannot be parsed is refused with its line (or byte) and what was expected", "[io]")
+{
+  const std::string tri = "0 0 0\n1 0 0\n0 1 0\n";
+  struct Case
+  {
+    std::string name, content, expected;
+  };
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string binary_ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\nend_header\n";
+  const std::size_t header = binary_ply.size();
+  binary_ply += std::string(20, '\0'); // 5 of the 9 floats
+  std::string binary_stl(80, ' ');
+  binary_stl += bytes_of(std::uint32_t(3), false) + std::string(70, '\0');
+  const std::vector<Case> cases = {
+    {"bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\n# faces\nf 1 2 abc\n",
+     "as OBJ: line 6: expected a vertex index after 'f', got 'abc'"},
+    {"bad_vertex.obj", "v 0 0 0\nv 1 0 \\\n  x\n", "as OBJ: line 3: expected 3 coordinates after 'v', got 'x'"},
+    {"binary.obj", "v 0 0 0\n\x89PNG\r\n", "as OBJ: line 2: expected an OBJ statement"},
+    {"bad.off", "OFF\n3 1 0\n0 0 0\n1 abc 0\n0 1 0\n3 0 1 2\n",
+     "as OFF: line 4: expected 3 vertex coordinates, got 'abc'"},
+    {"short.off", "OFF\n3 2 0\n" + tri + "3 0 1 2\n", "as OFF: line 7: expected face 2 of 2, got the end of the file"},
+    {"degree.off", "OFF\n3 1 0\n" + tri + "4 0 1 2\n",
+     "as OFF: line 6: expected 4 vertex indices after the face degree, got 3"},
+    {"bad.ply", ply + tri + "3 0 1 x\n",
+     "as PLY: line 13: expected an integer in list 'vertex_indices' of face 1 of 1, got 'x'"},
+    {"type.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty flot x\n", "as PLY: line 4: expected a property type"},
+    {"binary.ply", binary_ply, "as PLY: byte " + std::to_string(header + 20) + ": expected a float 'z' of vertex 2 of 3"},
+    {"bad.stl",
+     "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n  endloop\n endfacet\nendsolid t\n",
+     "as STL: line 7: expected 3 vertices in the facet, got 2"},
+    {"binary.stl", binary_stl, "as STL: byte 84: expected 3 triangles of 50 bytes, got 70 bytes"},
+    {"bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": [", "as glTF: invalid JSON"},
+    {"mesh.xyz", tri, "cannot parse"}};
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = write_temp(c.name, c.content);
+    const std::string message = read_message(path);
+    CHECK(message.rfind("cannot parse '" + path + "'", 0) == 0);
+    CHECK(message.find(c.expected) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    std::remove(path.c_str());
+  }
+  // nlohmann's message names the place of the JSON error
+  CHECK(read_message(write_temp("bad.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": [")).find("line 2") !=
+        std::string::npos);
+}
+
+// ---- SHA-256 of the batch summary (examples/Part_decomposition/include/sha256.h)
+
+TEST_CASE("SHA-256 gives the FIPS 180-4 known answers and the digest of sha256sum", "[sha256]")
+{
+  using Part_decomposition_tools::sha256_hex;
+  CHECK(sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  CHECK(sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
+        "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  CHECK(sha256_hex(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+
+  // a message fed in pieces of every size around the block length gives the same digest
+  std::string message;
+  for(std::size_t i = 0; i < 300000; ++i) message += char((i * 2654435761u) >> 13);
+  const std::string whole = sha256_hex(message);
+  for(std::size_t piece : {1u, 55u, 56u, 63u, 64u, 65u, 1000u})
+  {
+    Part_decomposition_tools::Sha256 h;
+    for(std::size_t at = 0; at < message.size(); at += piece)
+      h.update(message.data() + at, (std::min)(piece, message.size() - at));
+    CHECK(h.hex_digest() == whole);
+  }
+
+  // a file read in chunks, against the system's tool
+  const std::string path = write_temp("sha256.bin", message);
+  std::string digest;
+  REQUIRE(Part_decomposition_tools::sha256_of_file(path, digest));
+  CHECK(digest == whole);
+  std::FILE* tool = popen(("sha256sum " + path).c_str(), "r");
+  REQUIRE(tool != nullptr);
+  char line[128] = {0};
+  const bool got = std::fgets(line, sizeof(line), tool) != nullptr;
+  pclose(tool);
+  REQUIRE(got);
+  CHECK(std::string(line).substr(0, 64) == digest);
+  CHECK(!Part_decomposition_tools::sha256_of_file("pd_test_no_such_file", digest));
+  std::remove(path.c_str());
 }

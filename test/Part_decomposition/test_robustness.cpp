@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
+#include "sha256.h"
 #include "test_shapes.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -967,6 +968,114 @@ TEST_CASE("hitops batch: failures are reported per mesh, outputs of the others a
   CHECK(summary.find("bad\t" + bad + "\tfailed\t") != std::string::npos);
   CHECK(summary.find("missing\t") != std::string::npos);
   CHECK(std::count(summary.begin(), summary.end(), '\n') == 4);
+}
+
+namespace {
+
+// The rows of a summary.tsv, each as its columns by the names of the header.
+std::vector<std::map<std::string, std::string> > summary_rows(const std::string& path)
+{
+  std::istringstream in(read_text(path));
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string> > rows;
+  for(std::string line; std::getline(in, line);)
+  {
+    std::vector<std::string> cells;
+    std::istringstream cells_in(line);
+    for(std::string cell; std::getline(cells_in, cell, '\t');) cells.push_back(cell);
+    if(!line.empty() && line.back() == '\t') cells.push_back(std::string());
+    if(header.empty())
+    {
+      header = cells;
+      continue;
+    }
+    REQUIRE(cells.size() == header.size());
+    std::map<std::string, std::string> row;
+    for(std::size_t k = 0; k < cells.size(); ++k) row[header[k]] = cells[k];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The digest `sha256sum` gives for the file.
+std::string sha256sum(const std::string& path)
+{
+  std::FILE* tool = popen(("sha256sum " + quoted(path)).c_str(), "r");
+  REQUIRE(tool != nullptr);
+  char line[128] = {0};
+  const bool got = std::fgets(line, sizeof(line), tool) != nullptr;
+  pclose(tool);
+  REQUIRE(got);
+  return std::string(line).substr(0, 64);
+}
+
+} // namespace
+
+TEST_CASE("hitops batch: the summary gives the SHA-256 of every input that can be read", "[robustness][hitops]")
+{
+  Temp_dir dir;
+  const std::string good = std::string(PD_EXAMPLE_DATA_DIR) + "/dumbbell.off";
+  const std::string bad = dir.file("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 x\n");
+  const std::string list = dir.file("list.txt", good + "\n" + bad + "\n" + (dir / "missing.off") + "\n");
+  std::string good_digest, bad_digest;
+  REQUIRE(Part_decomposition_tools::sha256_of_file(good, good_digest));
+  REQUIRE(Part_decomposition_tools::sha256_of_file(bad, bad_digest));
+  CHECK(good_digest == sha256sum(good));
+  CHECK(bad_digest == sha256sum(bad));
+  for(const std::string run : {"decomposed", "skipped"})
+  {
+    INFO(run);
+    hitops(dir, "--batch " + quoted(list) + " --out " + quoted(dir / "out") + " --threads 1");
+    const auto rows = summary_rows(dir / "out/summary.tsv");
+    REQUIRE(rows.size() == 3);
+    CHECK(rows[0].at("status") == (run == "decomposed" ? "ok" : "skipped"));
+    CHECK(rows[0].at("sha256") == good_digest);
+    CHECK(rows[1].at("status") == "failed");
+    CHECK(rows[1].at("sha256") == bad_digest);
+    CHECK(rows[1].at("message").find("line 6") != std::string::npos);
+    CHECK(rows[2].at("status") == "failed");
+    CHECK(rows[2].at("sha256").empty());
+  }
+}
+
+TEST_CASE("hitops batch: a mesh over --mesh-timeout is stopped, and the batch goes on", "[robustness][hitops]")
+{
+  Temp_dir dir;
+  const std::string table = std::string(PD_EXAMPLE_DATA_DIR) + "/table.off";
+  const std::string dumbbell = std::string(PD_EXAMPLE_DATA_DIR) + "/dumbbell.off";
+  const std::string list = dir.file("list.txt", table + "\n" + dumbbell + "\n");
+  // these decompositions take far more than a millisecond: each mesh times out, in order
+  Run r = hitops(dir, "--batch " + quoted(list) + " --out " + quoted(dir / "out") + " --mesh-timeout 0.001");
+  CHECK(r.status == 1);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 2);
+  auto rows = summary_rows(dir / "out/summary.tsv");
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].at("status") == "timeout");
+  CHECK(rows[0].at("message").find("--mesh-timeout") != std::string::npos);
+  CHECK(rows[1].at("name") == "dumbbell");
+  CHECK(rows[1].at("status") == "timeout");
+  CHECK(rows[1].at("sha256") == sha256sum(dumbbell));
+  // a killed mesh leaves nothing, not even a temporary file
+  std::set<std::string> out;
+  for(const auto& e : fs::directory_iterator(dir.path / "out")) out.insert(e.path().filename().string());
+  CHECK(out == std::set<std::string>{"summary.tsv"});
+
+  // within the limit, the child process gives the outputs and the summary of the batch without one
+  const std::string box = dir.file("box.off", box_off());
+  const std::string short_list = dir.file("short.txt", box + "\n" + (dir / "missing.off") + "\n");
+  r = hitops(dir, "--batch " + quoted(short_list) + " --out " + quoted(dir / "limited") + " --threads 1 --mesh-timeout 600");
+  CHECK(r.status == 1); // the missing file
+  r = hitops(dir, "--batch " + quoted(short_list) + " --out " + quoted(dir / "unlimited") + " --threads 1");
+  rows = summary_rows(dir / "limited/summary.tsv");
+  const auto unlimited = summary_rows(dir / "unlimited/summary.tsv");
+  REQUIRE(rows.size() == 2);
+  REQUIRE(unlimited.size() == 2);
+  CHECK(rows[0].at("status") == "ok");
+  for(const char* column : {"status", "faces", "parts", "sha256"}) CHECK(rows[0].at(column) == unlimited[0].at(column));
+  CHECK(read_text(dir / "limited/box.seg") == read_text(dir / "unlimited/box.seg"));
+  CHECK(read_text(dir / "limited/box.json") == read_text(dir / "unlimited/box.json"));
+  CHECK(rows[1].at("status") == "failed");
+  CHECK(rows[1].at("message") == unlimited[1].at("message"));
 }
 
 TEST_CASE("hitops gives the same labels for 1 and 2 threads", "[robustness][hitops][determinism][data]")

@@ -13,7 +13,9 @@
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
 #include <CGAL/Part_decomposition/internal/gltf_source.h>
+#include <CGAL/Part_decomposition/internal/read_error.h>
 #include <CGAL/Part_decomposition/internal/read_gltf_soup.h>
+#include <CGAL/Part_decomposition/internal/read_obj_soup.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 #include <CGAL/Part_decomposition/internal/read_ply_soup.h>
 #include <CGAL/Part_decomposition/internal/read_stl_soup.h>
@@ -22,11 +24,10 @@
 #include <CGAL/Part_decomposition/internal/triangulate_polygon.h>
 #include <CGAL/Part_decomposition/internal/weld_border_points.h>
 
-#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -91,8 +92,6 @@ struct Mesh_file_info
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-typedef CGAL::Simple_cartesian<double>::Point_3 Read_point;
-
 // The polygon soup of a file, as read, and the triangles made from it.
 struct File_soup
 {
@@ -115,50 +114,28 @@ struct File_contents
   const char* end() const { return data.get() + size; }
 };
 
-// Throws UNREADABLE_FILE if the file cannot be opened; false if it cannot be read.
-inline bool read_file_contents(const std::string& filename, File_contents& contents)
+// Throws UNREADABLE_FILE if the file cannot be opened or read.
+inline void read_file_contents(const std::string& filename, File_contents& contents)
 {
   std::ifstream in(filename, std::ios::binary | std::ios::ate);
   if(!in)
     throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot open '" + filename + "'");
   const std::streamoff end = in.tellg();
-  if(end < 0) return false;
+  if(end < 0) throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot read '" + filename + "'");
   contents.size = std::size_t(end);
   contents.data.reset(new char[contents.size + 1]);
   in.seekg(0, std::ios::beg);
-  return contents.size == 0 || bool(in.read(contents.data.get(), std::streamsize(contents.size)));
+  if(contents.size != 0 && !in.read(contents.data.get(), std::streamsize(contents.size)))
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot read '" + filename + "'");
 }
 
-// The OBJ parser of CGAL, whose output is copied into the flat arrays.
-inline bool read_obj_soup(const std::string& filename, Polygon_soup_arrays& soup)
-{
-  std::vector<Read_point, Bounded_allocator<Read_point> > points;
-  std::vector<std::vector<std::size_t, Bounded_allocator<std::size_t> >,
-              Bounded_allocator<std::vector<std::size_t, Bounded_allocator<std::size_t> > > > polygons;
-  if(!CGAL::IO::read_OBJ(filename, points, polygons, CGAL::parameters::verbose(false))) return false;
-  for(const Read_point& p : points) soup.add_point(p.x(), p.y(), p.z());
-  for(const auto& polygon : polygons)
-  {
-    for(std::size_t id : polygon) soup.add_vertex_index(id);
-    soup.end_polygon();
-  }
-  return true;
-}
-
-// glTF (.gltf, .glb): a broken file throws UNREADABLE_FILE with the reason.
+// glTF (.gltf, .glb): a broken file throws Gltf_error with the reason.
 inline void read_gltf_soup(const std::string& filename, const File_contents& contents, Polygon_soup_arrays& soup)
 {
 #ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
   const std::size_t slash = filename.find_last_of('/');
-  try
-  {
-    Gltf_soup_reader(contents.begin(), contents.end(), slash == std::string::npos ? std::string() : filename.substr(0, slash + 1))
-      .read(soup);
-  }
-  catch(const Gltf_error& e)
-  {
-    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as glTF: " + e.what());
-  }
+  Gltf_soup_reader(contents.begin(), contents.end(), slash == std::string::npos ? std::string() : filename.substr(0, slash + 1))
+    .read(soup);
 #else
   CGAL_USE(contents);
   CGAL_USE(soup);
@@ -199,8 +176,7 @@ void with_gltf_errors(const std::string& filename, const F& f)
 inline std::unique_ptr<Gltf_source> read_gltf_source(const std::string& filename)
 {
   File_contents contents;
-  if(!read_file_contents(filename, contents))
-    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot read '" + filename + "'");
+  read_file_contents(filename, contents);
   const std::size_t slash = filename.find_last_of('/');
   std::unique_ptr<Gltf_source> source;
   with_gltf_errors(filename, [&] {
@@ -230,43 +206,59 @@ inline void check_file_labels(const std::vector<std::size_t>& labels, std::size_
                                   std::to_string(number_of_labels));
 }
 
-// Parses the file into `soup`; false if it cannot be parsed.
-inline bool parse_polygon_soup(const std::string& filename, Polygon_soup_arrays& soup)
+// The format of a file extension, as the messages name it; empty if the package reads none.
+inline std::string format_of_extension(const std::string& extension)
 {
+  if(extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
+  {
+    std::string name = extension;
+    for(char& c : name) c = char(c - 'a' + 'A');
+    return name;
+  }
+  return extension == "gltf" || extension == "glb" ? "glTF" : std::string();
+}
+
+// Parses the file into `soup`; throws UNREADABLE_FILE, saying where and why, if it cannot.
+inline void parse_polygon_soup(const std::string& filename, Polygon_soup_arrays& soup)
+{
+  // only these formats: CGAL's reader of every format costs a user seconds of compilation
+  const std::string extension = CGAL::IO::internal::get_file_extension(filename);
+  const std::string format = format_of_extension(extension);
+  if(format.empty())
+    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename +
+                                                        "': the extension is none of .off, .obj, .ply, .stl, .gltf, .glb");
   File_contents contents;
-  if(!read_file_contents(filename, contents)) return false;
+  read_file_contents(filename, contents);
+  const std::string cannot = "cannot parse '" + filename + "' as " + format + ": ";
   try
   {
     // A header may promise more than the file holds (an OFF count or face degree of 10^9 in a
     // few bytes): no single allocation of the parser may exceed a multiple of the file size.
     Read_allocation_limit limit(64 * contents.size + (std::size_t(1) << 20));
     // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
-    // broken files, and its STL reader looks every corner up in a std::map: these formats are
-    // read by our own parsers.
-    const std::string extension = CGAL::IO::internal::get_file_extension(filename);
-    if(extension == "off") return Off_soup_reader(contents.begin(), contents.end()).read(soup);
-    if(extension == "ply") return Ply_soup_reader(contents.begin(), contents.end()).read(soup);
-    if(extension == "stl") return Stl_soup_reader(contents.begin(), contents.end()).read(soup);
-    if(is_gltf_file(filename))
-    {
-      read_gltf_soup(filename, contents, soup);
-      return true;
-    }
-    if(extension == "obj")
-    {
-      contents = File_contents(); // CGAL reads the file again
-      return read_obj_soup(filename, soup);
-    }
-    // only these formats: CGAL's reader of every format costs a user seconds of compilation
-    return false;
+    // broken files, its STL reader looks every corner up in a std::map, and its OBJ reader
+    // refuses valid files and reads a stream: every format is read by our own parsers.
+    if(extension == "off") Off_soup_reader(contents.begin(), contents.end()).read(soup);
+    else if(extension == "obj") Obj_soup_reader(contents.begin(), contents.end()).read(soup);
+    else if(extension == "ply") Ply_soup_reader(contents.begin(), contents.end()).read(soup);
+    else if(extension == "stl") Stl_soup_reader(contents.begin(), contents.end()).read(soup);
+    else read_gltf_soup(filename, contents, soup);
   }
   catch(const Invalid_input&)
   {
     throw;
   }
-  catch(const std::exception&)
+  catch(const Read_error& e)
   {
-    return false;
+    throw Invalid_input(Input_error::UNREADABLE_FILE, cannot + e.what());
+  }
+  catch(const std::bad_alloc&)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, cannot + "out of memory");
+  }
+  catch(const std::exception& e)
+  {
+    throw Invalid_input(Input_error::UNREADABLE_FILE, cannot + e.what());
   }
 }
 
@@ -737,8 +729,8 @@ sizes from the origin) and the smallest gap between distinct border vertices in 
 (\f$4 \cdot 10^{-5}\f$); see the user manual. A mesh stored in float32 far from the origin (more
 than about ten times its size) has a larger round-off and needs a larger tolerance.
 
-The file is read into memory at once and parsed in place (OFF, PLY and STL by the package's own
-parsers, OBJ by \cgal's). An STL file stores the corners of each triangle apart: its vertices are
+The file is read into memory at once and parsed in place by the package's own parsers (see the
+user manual for what each reads). An STL file stores the corners of each triangle apart: its vertices are
 the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts them and
 `Mesh_file_info::number_of_merged_vertices` is 0.
 
@@ -767,7 +759,8 @@ clipping of the polygons, quadratic in the number of vertices of each polygon, a
 of the soup by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the
 triangles already form a consistently oriented manifold (checked in linear time).
 
-\throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`), holds no face
+\throws Invalid_input if the file cannot be opened or parsed (`UNREADABLE_FILE`, the message then
+names the line, or the byte of binary data, and what was expected there), holds no face
 (`NO_FACES`), has a face with fewer than three vertices or an out-of-range vertex index
 (`INVALID_FACE`), or a vertex with a non-finite coordinate (`NON_FINITE_COORDINATES`), and if
 `weld_tolerance` is out of its range (`INVALID_PARAMETER`).
@@ -778,9 +771,7 @@ Mesh_file_info read_triangle_mesh(const std::string& filename, TriangleMesh& tm,
 {
   const double weld_tolerance = internal::read_weld_tolerance(np);
   internal::File_soup soup;
-  if(!internal::parse_polygon_soup(filename, soup.file))
-    throw Invalid_input(Input_error::UNREADABLE_FILE,
-                        "cannot parse '" + filename + "' as an OFF, OBJ, PLY, STL or glTF mesh");
+  internal::parse_polygon_soup(filename, soup.file);
   Mesh_file_info info = internal::build_triangle_mesh(soup, "'" + filename + "'", weld_tolerance, tm);
   if(CGAL::IO::internal::get_file_extension(filename) == "stl")
   {

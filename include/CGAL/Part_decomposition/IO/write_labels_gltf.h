@@ -38,8 +38,7 @@ inline void labelled_soup_document(const std::string& filename, const std::vecto
 {
   typedef Glb_builder::Json Json;
   File_soup soup;
-  if(!parse_polygon_soup(filename, soup.file))
-    throw Invalid_input(Input_error::UNREADABLE_FILE, "cannot parse '" + filename + "' as an OFF, OBJ, PLY, STL or glTF mesh");
+  parse_polygon_soup(filename, soup.file);
   check_polygon_soup("'" + filename + "'", soup.file);
   check_file_labels(labels, soup.file.number_of_polygons(), number_of_labels, "write_labels_glb()");
   merge_equal_points(soup);

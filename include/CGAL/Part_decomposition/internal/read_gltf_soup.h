@@ -9,6 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_READ_GLTF_SOUP_H
 
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/read_error.h>
 
 // The JSON of glTF is parsed by nlohmann/json (Debian: nlohmann-json3-dev), which throws on any
 // malformed text; without it, glTF files are refused with a clear error.
@@ -35,9 +36,9 @@ namespace Part_decomposition {
 namespace internal {
 
 // Why a glTF file cannot be read, for the message of the caller.
-struct Gltf_error : std::runtime_error
+struct Gltf_error : Read_error
 {
-  using std::runtime_error::runtime_error;
+  using Read_error::Read_error;
 };
 
 // Bytes of a glTF buffer: a view into the GLB or decoded data owned here.

@@ -9,6 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_READ_OFF_SOUP_H
 
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/read_error.h>
 
 #include <charconv>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -79,51 +81,68 @@ read, so a lying header costs no memory. Tokens are parsed independently of the 
 class Off_soup_reader
 {
 public:
-  Off_soup_reader(const char* begin, const char* end) : m_pos(begin), m_end(end) {}
+  Off_soup_reader(const char* begin, const char* end) : m_begin(begin), m_pos(begin), m_end(end) {}
 
-  // Appends the points and the faces of the file to `soup`. Returns false if the file is not
-  // OFF, is truncated or holds a token that is not a number.
-  bool read(Polygon_soup_arrays& soup)
+  // Appends the points and the faces of the file to `soup`. Throws Read_error, naming the line,
+  // if the file is not OFF, is truncated or holds a token that is not a number.
+  void read(Polygon_soup_arrays& soup)
   {
-    if(!next_line()) return false;
+    if(!next_line()) fail(m_end, "expected the OFF header, got an empty file");
     std::size_t t = 0;
-    if(!m_tokens.empty() && !is_number(m_tokens[0]))
+    if(!is_number(m_tokens[0]))
     {
-      if(!read_keyword(m_tokens[0])) return false;
-      t = 1;
+      read_keyword(t);
       if(t < m_tokens.size() && m_tokens[t] == "BINARY")
       {
         // the binary part starts right after the header line
-        if(t + 1 != m_tokens.size()) return false;
-        return read_binary(soup);
+        if(t + 1 != m_tokens.size()) fail(at(t + 1), "expected the end of the line after BINARY, got " + got(t + 1));
+        read_binary(soup);
+        return;
       }
     }
-    if(m_dimension_follows && !take_count(t, m_dimension)) return false;
-    if(m_dimension != 3) return false;
+    if(m_dimension_follows)
+    {
+      const char* where = take_count(t, m_dimension, "the dimension");
+      if(m_dimension != 3) fail(where, "expected dimension 3, got " + std::to_string(m_dimension));
+    }
     std::size_t nv = 0, nf = 0;
-    if(!take_count(t, nv) || !take_count(t, nf)) return false;
+    take_count(t, nv, "the number of vertices");
+    take_count(t, nf, "the number of faces");
     // the edge count, when present, is ignored
 
-    const std::size_t coordinates = m_homogeneous ? 4 : 3;
     for(std::size_t i = 0; i < nv; ++i)
     {
-      if(!next_line() || m_tokens.size() < coordinates) return false;
-      double c[4] = {0., 0., 0., 1.};
-      for(std::size_t k = 0; k < coordinates; ++k)
-        if(!to_double(m_tokens[k], c[k])) return false;
-      soup.add_point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
+      if(!next_line()) fail(m_end, "expected vertex " + of(i, nv) + ", got the end of the file");
+      read_vertex(soup);
     }
     for(std::size_t i = 0; i < nf; ++i)
-      if(!next_line() || !read_face(soup, nv)) return false;
-    return true;
+    {
+      if(!next_line()) fail(m_end, "expected face " + of(i, nf) + ", got the end of the file");
+      read_face(soup, nv);
+    }
   }
 
 private:
+  const char* m_begin;
   const char* m_pos;
   const char* m_end;
   std::vector<std::string_view> m_tokens;
   bool m_homogeneous = false, m_dimension_follows = false, m_normals = false, m_colors = false, m_texture = false;
   std::size_t m_dimension = 3;
+
+  [[noreturn]] void fail(const char* at, const std::string& what) const { throw_read_error_at_line(m_begin, at, what); }
+
+  // "i+1 of n", for the messages
+  static std::string of(std::size_t i, std::size_t n) { return std::to_string(i + 1) + " of " + std::to_string(n); }
+
+  // The token `k` of the line, quoted for a message, or the end of the line.
+  std::string got(std::size_t k) const { return quoted_token(k < m_tokens.size() ? m_tokens[k] : std::string_view()); }
+
+  // Where token `k` of the line is, or its end.
+  const char* at(std::size_t k) const
+  {
+    return k < m_tokens.size() ? m_tokens[k].data() : m_tokens.back().data() + m_tokens.back().size();
+  }
 
   static bool is_space(char c)
   {
@@ -153,17 +172,31 @@ private:
     return false;
   }
 
+  // One vertex line: the coordinates, then ignored tokens (normal, colour, texture coordinates).
+  void read_vertex(Polygon_soup_arrays& soup) const
+  {
+    const std::size_t coordinates = m_homogeneous ? 4 : 3;
+    double c[4] = {0., 0., 0., 1.};
+    for(std::size_t k = 0; k < coordinates; ++k)
+      if(k >= m_tokens.size() || !to_double(m_tokens[k], c[k]))
+        fail(at(k), "expected " + std::to_string(coordinates) + " vertex coordinates, got " + got(k));
+    soup.add_point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
+  }
+
   // One face line: the degree, the indices, then ignored tokens (the face colour).
-  bool read_face(Polygon_soup_arrays& soup, std::size_t nv)
+  void read_face(Polygon_soup_arrays& soup, std::size_t nv) const
   {
     std::uint64_t degree = 0;
     if(!to_unsigned(m_tokens[0], degree))
     {
       double d = 0.;
-      if(!to_double(m_tokens[0], d) || !is_count(d)) return false;
+      if(!to_double(m_tokens[0], d) || !is_count(d))
+        fail(at(0), "expected the number of vertices of a face, got " + got(0));
       degree = std::uint64_t(d);
     }
-    if(degree >= m_tokens.size()) return false;
+    if(degree >= m_tokens.size())
+      fail(at(0), "expected " + std::to_string(degree) + " vertex indices after the face degree, got " +
+                    std::to_string(m_tokens.size() - 1));
     for(std::size_t k = 1; k <= std::size_t(degree); ++k)
     {
       std::uint64_t u = 0;
@@ -173,21 +206,36 @@ private:
         continue;
       }
       double id = 0.;
-      if(!to_double(m_tokens[k], id) || std::floor(id) != id) return false;
+      if(!to_double(m_tokens[k], id) || std::floor(id) != id) fail(at(k), "expected a vertex index, got " + got(k));
       soup.add_vertex_index(vertex_index(id, nv));
     }
     soup.end_polygon();
-    return true;
   }
 
-  // [ST][C][N][4][n]OFF
-  bool read_keyword(std::string_view k)
+  // [ST][C][N][4][n]OFF, maybe with the first count glued to it ("OFF8 6 12"); `t` becomes the
+  // token after the keyword.
+  void read_keyword(std::size_t& t)
   {
-    const std::size_t n = k.size();
-    if(n < 3 || k.substr(n - 3) != "OFF") return false;
+    const std::string_view k = m_tokens[0];
+    const std::size_t off = k.find("OFF");
+    if(off == std::string_view::npos || !read_variant(k.substr(0, off)) ||
+       (off + 3 < k.size() && !is_number(k.substr(off + 3))))
+      fail(at(0), "expected OFF or a variant [ST][C][N][4][n]OFF, got " + got(0));
+    if(off + 3 == k.size())
+    {
+      t = 1;
+      return;
+    }
+    m_tokens[0] = k.substr(off + 3);
+    t = 0;
+  }
+
+  // The letters before OFF: [ST][C][N][4][n]
+  bool read_variant(std::string_view k)
+  {
     std::size_t i = 0;
     auto take = [&](std::string_view p) {
-      if(i + p.size() > n - 3 || k.substr(i, p.size()) != p) return false;
+      if(k.substr(i, p.size()) != p) return false;
       i += p.size();
       return true;
     };
@@ -196,7 +244,7 @@ private:
     m_normals = take("N"); // skipped, like any trailing token of an ASCII line
     m_homogeneous = take("4");
     m_dimension_follows = take("n");
-    return i == n - 3;
+    return i == k.size();
   }
 
   static bool is_number(std::string_view s)
@@ -205,18 +253,23 @@ private:
     return to_double(s, d);
   }
 
-  bool take_count(std::size_t& t, std::size_t& count)
+  // Reads a count of the header, from the next line if this one has no more tokens; returns where it is.
+  const char* take_count(std::size_t& t, std::size_t& count, const char* what)
   {
     if(t == m_tokens.size())
     {
-      if(!next_line()) return false;
+      if(!next_line()) fail(m_end, std::string("expected ") + what + ", got the end of the file");
       t = 0;
     }
     double d = 0.;
-    if(!to_double(m_tokens[t], d) || !is_count(d)) return false;
+    if(!to_double(m_tokens[t], d) || !is_count(d)) fail(at(t), std::string("expected ") + what + ", got " + got(t));
     count = std::size_t(d);
-    ++t;
-    return true;
+    return at(t++);
+  }
+
+  [[noreturn]] void fail_binary(const std::string& what) const
+  {
+    throw_read_error_at_byte(m_begin, m_pos, "expected " + what + ", got the end of the file");
   }
 
   // Binary OFF: big-endian 32-bit integers and floats after the header line.
@@ -240,42 +293,55 @@ private:
     return true;
   }
 
-  bool read_binary(Polygon_soup_arrays& soup)
+  void read_binary(Polygon_soup_arrays& soup)
   {
     // colours and texture coordinates have no agreed binary layout
-    if(m_colors || m_texture || m_dimension_follows) return false;
+    if(m_colors || m_texture || m_dimension_follows)
+      fail(at(0), "expected binary OFF without colours, texture coordinates or dimension (C, ST, n), got " + got(0));
     std::int32_t nv = 0, nf = 0, ne = 0;
-    if(!read_int(nv) || !read_int(nf) || !read_int(ne) || nv < 0 || nf < 0) return false;
+    if(!read_int(nv) || !read_int(nf) || !read_int(ne)) fail_binary("the vertex, face and edge counts");
+    if(nv < 0 || nf < 0)
+      throw_read_error_at_byte(m_begin, m_pos - 12, "expected non-negative counts, got " + std::to_string(nv) +
+                                                      " vertices and " + std::to_string(nf) + " faces");
     const int coordinates = m_homogeneous ? 4 : 3;
     for(std::int32_t i = 0; i < nv; ++i)
     {
       double c[4] = {0., 0., 0., 1.};
       for(int k = 0; k < coordinates; ++k)
-        if(!read_float(c[k])) return false;
+        if(!read_float(c[k])) fail_binary("vertex " + of(std::size_t(i), std::size_t(nv)));
       double ignored;
       for(int k = 0; m_normals && k < coordinates; ++k)
-        if(!read_float(ignored)) return false;
+        if(!read_float(ignored)) fail_binary("the normal of vertex " + std::to_string(i + 1));
       soup.add_point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
     }
-    for(std::int32_t i = 0; i < nf; ++i)
+    for(std::int32_t i = 0; i < nf; ++i) read_binary_face(soup, i, nf, nv);
+  }
+
+  // The degree, the indices, the number of colour components and the components.
+  void read_binary_face(Polygon_soup_arrays& soup, std::int32_t i, std::int32_t nf, std::int32_t nv)
+  {
+    // the messages are made only on failure: no allocation per face
+    const auto face = [&] { return "face " + of(std::size_t(i), std::size_t(nf)); };
+    std::int32_t degree = 0, colors = 0;
+    if(!read_int(degree)) fail_binary(face());
+    if(degree < 0)
+      throw_read_error_at_byte(m_begin, m_pos - 4, "expected the degree of " + face() + ", got " + std::to_string(degree));
+    for(std::int32_t k = 0; k < degree; ++k)
     {
-      std::int32_t degree = 0, colors = 0;
-      if(!read_int(degree) || degree < 0) return false;
-      for(std::int32_t k = 0; k < degree; ++k)
-      {
-        std::int32_t id = 0;
-        if(!read_int(id)) return false;
-        soup.add_vertex_index(vertex_index(double(id), std::size_t(nv)));
-      }
-      soup.end_polygon();
-      if(!read_int(colors) || colors < 0 || colors > 4) return false;
-      for(std::int32_t k = 0; k < colors; ++k)
-      {
-        double ignored;
-        if(!read_float(ignored)) return false;
-      }
+      std::int32_t id = 0;
+      if(!read_int(id)) fail_binary("the vertex indices of " + face());
+      soup.add_vertex_index(vertex_index(double(id), std::size_t(nv)));
     }
-    return true;
+    soup.end_polygon();
+    if(!read_int(colors)) fail_binary("the number of colour components of " + face());
+    if(colors < 0 || colors > 4)
+      throw_read_error_at_byte(m_begin, m_pos - 4,
+                               "expected 0 to 4 colour components of " + face() + ", got " + std::to_string(colors));
+    for(std::int32_t k = 0; k < colors; ++k)
+    {
+      double ignored;
+      if(!read_float(ignored)) fail_binary("the colour of " + face());
+    }
   }
 };
 

@@ -8,6 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_READ_PLY_SOUP_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_READ_PLY_SOUP_H
 
+#include <CGAL/Part_decomposition/internal/read_error.h>
 #include <CGAL/Part_decomposition/internal/read_off_soup.h>
 
 #include <algorithm>
@@ -43,65 +44,40 @@ what the file holds ends in a read failure.
 class Ply_soup_reader
 {
 public:
-  Ply_soup_reader(const char* begin, const char* end) : m_pos(begin), m_end(end) {}
+  Ply_soup_reader(const char* begin, const char* end) : m_begin(begin), m_pos(begin), m_end(end) {}
 
-  // Appends the points and the faces of the file to `soup`. Returns false if the file is not
-  // PLY, is truncated or holds a value that its type cannot have.
-  bool read(Polygon_soup_arrays& soup)
+  // Appends the points and the faces of the file to `soup`. Throws Read_error, naming the line
+  // (the byte in binary data), if the file is not PLY, is truncated or holds a value that its
+  // type cannot have.
+  void read(Polygon_soup_arrays& soup)
   {
-    if(!read_header()) return false;
+    read_header();
     for(const Element& e : m_elements)
     {
-      const bool is_vertex = e.name == "vertex" || e.name == "vertices";
-      const bool is_face = e.name == "face" || e.name == "faces";
-      std::size_t coordinate[3] = {npos, npos, npos}, indices = npos;
+      Element_use use;
+      use.is_vertex = e.name == "vertex" || e.name == "vertices";
+      use.is_face = e.name == "face" || e.name == "faces";
       for(std::size_t p = 0; p < e.properties.size(); ++p)
       {
         const Property& q = e.properties[p];
-        for(int k = 0; k < 3 && is_vertex && !q.list; ++k)
-          if(q.name == std::string(1, char('x' + k))) coordinate[k] = p;
-        if(is_face && q.list && (q.name == "vertex_indices" || q.name == "vertex_index") && indices == npos)
-          indices = p;
+        for(int k = 0; k < 3 && use.is_vertex && !q.list; ++k)
+          if(q.name == std::string(1, char('x' + k))) use.coordinate[k] = p;
+        if(use.is_face && q.list && (q.name == "vertex_indices" || q.name == "vertex_index") && use.indices == npos)
+          use.indices = p;
       }
-      if(is_vertex && (coordinate[0] == npos || coordinate[1] == npos || coordinate[2] == npos)) return false;
-      if(is_face && indices == npos) return false;
+      if(use.is_vertex && (use.coordinate[0] == npos || use.coordinate[1] == npos || use.coordinate[2] == npos))
+        throw_read_error_at_line(m_begin, e.where, "expected the properties x, y and z of element '" + e.name + "'");
+      if(use.is_face && use.indices == npos)
+        throw_read_error_at_line(m_begin, e.where,
+                                 "expected a list property vertex_indices of element '" + e.name + "'");
       // no property: items without data, however many the header claims
       if(e.properties.empty()) continue;
-
-      for(std::size_t i = 0; i < e.count; ++i)
-      {
-        double c[3] = {0., 0., 0.};
-        for(std::size_t p = 0; p < e.properties.size(); ++p)
-        {
-          const Property& q = e.properties[p];
-          if(!q.list)
-          {
-            double v;
-            if(!read_value(q.type, v)) return false;
-            for(int k = 0; k < 3; ++k)
-              if(is_vertex && p == coordinate[k]) c[k] = v;
-            continue;
-          }
-          double length = 0.;
-          if(!read_value(q.size_type, length) || !is_count(length)) return false;
-          const bool keep = is_face && p == indices;
-          for(std::size_t k = 0; k < std::size_t(length); ++k)
-          {
-            double v;
-            if(!read_value(q.type, v)) return false;
-            if(keep && std::floor(v) != v) return false;
-            // an index past the vertices is the caller's out-of-range error
-            if(keep) soup.add_vertex_index(is_count(v) ? std::size_t(v) : invalid_vertex_index);
-          }
-          if(keep) soup.end_polygon();
-        }
-        if(is_vertex) soup.add_point(c[0], c[1], c[2]);
-      }
+      for(std::size_t i = 0; i < e.count; ++i) read_item(e, i, use, soup);
     }
-    return true;
   }
 
 private:
+  static constexpr std::size_t npos = std::size_t(-1);
   enum Type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64, UNKNOWN };
   enum Format { ASCII, LITTLE_ENDIAN_BINARY, BIG_ENDIAN_BINARY };
   struct Property
@@ -115,12 +91,22 @@ private:
     std::string name;
     std::size_t count = 0;
     std::vector<Property> properties;
+    const char* where = nullptr; // its line of the header
   };
-  static constexpr std::size_t npos = std::size_t(-1);
+  // what the reader keeps of an element: the positions of x, y, z or of the vertex indices
+  struct Element_use
+  {
+    bool is_vertex = false, is_face = false;
+    std::size_t coordinate[3] = {npos, npos, npos}, indices = npos;
+  };
 
+  const char* m_begin;
   const char* m_pos;
   const char* m_end;
   Format m_format = ASCII;
+  // the value read last: where it starts, and its text in ASCII (for the messages)
+  const char* m_value = nullptr;
+  std::string_view m_token;
   std::vector<Element> m_elements;
 
   // The next line (without its '\n'), as std::getline would give it.
@@ -160,69 +146,157 @@ private:
     return sizes[t];
   }
 
-  bool read_header()
+  [[noreturn]] void fail_header(const char* line, const std::string& what) const
   {
-    std::string line;
-    if(!next_line(line)) return false;
-    std::istringstream first(line);
-    std::string word;
-    if(!(first >> word) || word != "ply") return false;
+    throw_read_error_at_line(m_begin, line, what);
+  }
+
+  // The lines up to end_header; the elements and their properties in m_elements.
+  void read_header()
+  {
+    std::string line, word;
+    const char* start = m_pos;
+    if(m_pos == m_end) fail_header(start, "expected 'ply', got an empty file");
+    next_line(line);
+    if(!(std::istringstream(line) >> word) || word != "ply")
+      fail_header(start, "expected 'ply', got " + quoted_token(word));
     bool format = false;
-    while(next_line(line))
+    for(start = m_pos; next_line(line); start = m_pos)
     {
       std::istringstream iss(line);
       std::string keyword;
       if(!(iss >> keyword) || keyword == "comment" || keyword == "obj_info") continue;
-      if(keyword == "end_header") return format;
+      if(keyword == "end_header")
+      {
+        if(!format) fail_header(start, "expected a format line before end_header");
+        return;
+      }
       if(keyword == "format")
       {
-        if(!(iss >> word)) return false;
+        word.clear();
+        iss >> word;
         if(word == "ascii") m_format = ASCII;
         else if(word == "binary_little_endian") m_format = LITTLE_ENDIAN_BINARY;
         else if(word == "binary_big_endian") m_format = BIG_ENDIAN_BINARY;
-        else return false;
+        else
+          fail_header(start, "expected the format ascii, binary_little_endian or binary_big_endian, got " +
+                               quoted_token(word));
         format = true;
       }
-      else if(keyword == "element")
-      {
-        Element e;
-        std::string count;
-        if(!(iss >> e.name >> count)) return false;
-        unsigned long long n = 0;
-        const char* last = count.data() + count.size();
-        const std::from_chars_result r = std::from_chars(count.data(), last, n);
-        if(r.ec != std::errc() || r.ptr != last) return false;
-        e.count = std::size_t(n);
-        m_elements.push_back(e);
-      }
-      else if(keyword == "property")
-      {
-        if(m_elements.empty()) return false;
-        Property q;
-        if(!(iss >> word)) return false;
-        if(word == "list")
-        {
-          std::string size_type;
-          if(!(iss >> size_type >> word)) return false;
-          q.list = true;
-          q.size_type = type_of(size_type);
-          if(q.size_type == UNKNOWN) return false;
-        }
-        q.type = type_of(word);
-        if(q.type == UNKNOWN || !(iss >> q.name)) return false;
-        m_elements.back().properties.push_back(q);
-      }
+      else if(keyword == "element") read_element_line(iss, start);
+      else if(keyword == "property") read_property_line(iss, start);
       // other keywords are ignored, as by other readers
     }
-    return false; // no end_header
+    fail_header(m_end, "expected end_header, got the end of the file");
+  }
+
+  // element NAME COUNT
+  void read_element_line(std::istringstream& iss, const char* line)
+  {
+    Element e;
+    e.where = line;
+    std::string count;
+    iss >> e.name >> count;
+    unsigned long long n = 0;
+    const char* last = count.data() + count.size();
+    const std::from_chars_result r = std::from_chars(count.data(), last, n);
+    if(e.name.empty() || r.ec != std::errc() || r.ptr != last)
+      fail_header(line, "expected 'element NAME COUNT' with a non-negative COUNT, got " +
+                          quoted_token(count.empty() ? e.name : count));
+    e.count = std::size_t(n);
+    m_elements.push_back(e);
+  }
+
+  // property TYPE NAME, or property list SIZE_TYPE TYPE NAME
+  void read_property_line(std::istringstream& iss, const char* line)
+  {
+    if(m_elements.empty()) fail_header(line, "expected an element line before the first property");
+    Property q;
+    std::string word;
+    iss >> word;
+    if(word == "list")
+    {
+      std::string size_type;
+      iss >> size_type >> word;
+      q.list = true;
+      q.size_type = type_of(size_type);
+      if(q.size_type == UNKNOWN)
+        fail_header(line, "expected the type of a list length, got " + quoted_token(size_type));
+    }
+    q.type = type_of(word);
+    if(q.type == UNKNOWN) fail_header(line, "expected a property type (char, uchar, short, ushort, int, uint, float, "
+                                            "double or their sized names), got " + quoted_token(word));
+    if(!(iss >> q.name)) fail_header(line, "expected the name of the property");
+    m_elements.back().properties.push_back(q);
+  }
+
+  // Throws for the value `what` of item i of e that could not be read or is not what it must be.
+  [[noreturn]] void fail_value(const std::string& what, const Element& e, std::size_t i, const std::string& got) const
+  {
+    const std::string message = "expected " + what + " of " + e.name + " " + std::to_string(i + 1) + " of " +
+                                std::to_string(e.count) + ", got " + got;
+    if(m_format == ASCII) throw_read_error_at_line(m_begin, m_value, message);
+    throw_read_error_at_byte(m_begin, m_value, message);
+  }
+
+  // The value last read, or what was found instead, for a message.
+  std::string value_text(double v, bool was_read) const
+  {
+    if(!was_read && (m_format != ASCII || m_token.empty())) return "the end of the file";
+    if(m_format == ASCII) return quoted_token(m_token);
+    std::ostringstream out;
+    out << v;
+    return out.str();
+  }
+
+  static std::string type_name(Type t)
+  {
+    static const char* const names[8] = {"a char", "a uchar", "a short",  "a ushort",
+                                         "an int", "a uint",  "a float", "a double"};
+    return names[t];
+  }
+
+  // One item of element e: its coordinates to the soup if it is a vertex, its polygon if a face.
+  void read_item(const Element& e, std::size_t i, const Element_use& use, Polygon_soup_arrays& soup)
+  {
+    double c[3] = {0., 0., 0.};
+    for(std::size_t p = 0; p < e.properties.size(); ++p)
+    {
+      const Property& q = e.properties[p];
+      double v = 0.;
+      if(!q.list)
+      {
+        if(!read_value(q.type, v)) fail_value(type_name(q.type) + " '" + q.name + "'", e, i, value_text(v, false));
+        for(int k = 0; k < 3; ++k)
+          if(use.is_vertex && p == use.coordinate[k]) c[k] = v;
+        continue;
+      }
+      double length = 0.;
+      const bool length_read = read_value(q.size_type, length);
+      if(!length_read || !is_count(length))
+        fail_value("the length of list '" + q.name + "'", e, i, value_text(length, length_read));
+      const bool keep = use.is_face && p == use.indices;
+      for(std::size_t k = 0; k < std::size_t(length); ++k)
+      {
+        const bool read = read_value(q.type, v);
+        if(!read || (keep && std::floor(v) != v))
+          fail_value(std::string(keep ? "an integer" : type_name(q.type)) + " in list '" + q.name + "'", e, i,
+                     value_text(v, read));
+        // an index past the vertices is the caller's out-of-range error
+        if(keep) soup.add_vertex_index(is_count(v) ? std::size_t(v) : invalid_vertex_index);
+      }
+      if(keep) soup.end_polygon();
+    }
+    if(use.is_vertex) soup.add_point(c[0], c[1], c[2]);
   }
 
   bool read_value(Type t, double& v)
   {
     if(m_format == ASCII)
     {
-      std::string_view token;
-      if(!next_token(token) || !to_double(token, v)) return false;
+      const bool found = next_token(m_token);
+      m_value = found ? m_token.data() : m_end;
+      if(!found || !to_double(m_token, v)) return false;
       if(t == FLOAT64) return true;
       if(t == FLOAT32)
       {
@@ -238,6 +312,7 @@ private:
     }
     unsigned char b[8];
     const std::size_t n = size_of(t);
+    m_value = m_pos;
     if(std::size_t(m_end - m_pos) < n) return false;
     std::memcpy(b, m_pos, n);
     m_pos += n;
