@@ -486,62 +486,9 @@ PD::decompose(mesh, part_map,
 \endcode
 
 Which parameter a function reads, its type, range and default are listed in that function's
-documentation; `decompose()` accepts them all and passes each to the stage that reads it. The
-package's parameters are:
-
-| Function | Type | Default | Read by |
-| :------- | :--- | :------ | :------ |
-| `voxel_resolutions()` | `std::vector<int>` | `{16, 32, 64}` | `compute_flow_freeze_prior()`, `compute_tsdf()` |
-| `number_of_neighbors()` | `unsigned int` | 8 | `compute_face_normal_deviation()` |
-| `curvature_percentile()` | `double` | 99.5 | `compute_face_curvature_cue()` |
-| `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
-| `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
-| `use_density()` | `bool` | `true` | `compute_topology_score()`, `compute_flow_freeze_prior()` |
-| `prior_resolution_cap()` | `int` | 0 (every resolution) | `compute_flow_freeze_prior()` |
-| `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
-| `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
-| `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |
-| `tsdf_sign_method()` | `Tsdf_sign_method` | `AUTOMATIC` | `compute_tsdf()` |
-| `flow_zone_tolerance()` | `double` | 2 | `compute_fitting_zones()`, `fit_superquadrics()` |
-| `trust_region_scales()` | `std::vector<double>` | `{1, 0.5, 0.25}` | `fit_superquadrics()` |
-| `body_seed_threshold()` | `double` | 1.5 | `fit_superquadrics()` |
-| `minimum_body_volume()` | `double` | 5 | `fit_superquadrics()` |
-| `minimum_surface_volume()` | `double` | 3 | `fit_superquadrics()` |
-| `exterior_penalty()` | `double` | 5 | `fit_superquadrics()` |
-| `coverage_target()` | `double` | 0.999 | `fit_superquadrics()` |
-| `roi_radius()` | `double` | 8 | `fit_superquadrics()` |
-| `interior_weight_mode()` | `Interior_weight_mode` | `ONE_SHOT` | `fit_superquadrics()` |
-| `maximum_number_of_primitives()` | `std::size_t` | 256 | `fit_superquadrics()` |
-| `use_freeze_zone()` | `bool` | `true` | `compute_fitting_zones()`, `fit_superquadrics()` |
-| `use_tsdf_guidance()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_body_seeds()` | `bool` | `true` | `fit_superquadrics()` |
-| `fitting_resolution_cap()` | `int` | 0 (the resolution before the finest) | `fitting_resolutions()`, `fit_superquadrics()` |
-| `use_exterior_band_samples()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_reachable_regions()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_seed_exclusion()` | `bool` | `true` | `fit_superquadrics()` |
-| `maximum_solver_evaluations()` | `int` | 40 | `fit_superquadrics()` |
-| `maximum_rejections_in_a_row()` | `std::size_t` | 4 | `fit_superquadrics()` |
-| `merge_primitives()` | `bool` | `true` | `fit_superquadrics()` |
-| `minimum_merge_iou()` | `double` | 0.6 | `fit_superquadrics()` |
-| `dihedral_percentile()` | `double` | 90 | `over_segment()` |
-| `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
-| `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
-| `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
-| `vote_temperature()` | `double` | 1 | `assign_parts()` |
-| `boundary_smoothness()` | `double` | 10 | `assign_parts()` |
-| `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
-| `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
-| `crease_angle()` | `double` | 60 | `segment_pieces()` |
-| `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
-| `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()` |
-| `maximum_merge_cost()` | `double` | 0.003 | `decompose()` |
-| `part_hierarchy()` | `Part_hierarchy<GeomTraits>*` | `nullptr` | `decompose()` |
-| `thin_part_resolution()` | `int` | 0 (no finer pass) | `decompose()` |
-| `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
-| `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
-| `weld_tolerance()` | `double` | \f$5 \cdot 10^{-6}\f$ | `IO::read_triangle_mesh()`, `IO::triangle_mesh_from_polygon_soup()` |
-| `primitive_output_iterator()` | an output iterator | none | `decompose()` |
-| `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
+documentation; `decompose()` accepts them all and passes each to the stage that reads it. Every
+parameter, with its type, default, range, meaning and the functions that read it, is in
+`parameter_table`, from which the manual's table (\ref PD_Parameters) is made.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
 `dihedral_quantile()` and `maximum_patch_size()`, the former names of `dihedral_percentile()` and
