@@ -227,6 +227,15 @@ void print_parameter(std::ostream& out, const PD::Parameter_description& p, cons
   for(const Alias& a : aliases)
     if(p.name == std::string(a.parameter)) also += std::string(also.empty() ? "" : ", ") + a.option + (a.value ? std::string(" for ") + a.value : "");
   if(!also.empty()) line += " [also " + also + "]";
+  // at most 110 columns: the text goes on under the meaning
+  const std::size_t width = 110, indent = 38;
+  while(line.size() > width)
+  {
+    const std::size_t cut = line.rfind(' ', width);
+    if(cut == std::string::npos || cut <= indent) break;
+    out << line.substr(0, cut) << '\n';
+    line = std::string(indent, ' ') + line.substr(cut + 1);
+  }
   out << line << '\n';
 }
 
