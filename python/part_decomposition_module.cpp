@@ -50,28 +50,6 @@ struct Parameters : Part_decomposition_tools::Decomposition_settings
   double weld_tolerance = PD::defaults::weld_tolerance; // of the reader
 };
 
-// Enumerations as strings: the enumerator in lower case, or the short name of hitops.
-const std::map<std::string, PD::Tsdf_sign_method> sign_methods = {
-  {"automatic", PD::Tsdf_sign_method::AUTOMATIC},     {"auto", PD::Tsdf_sign_method::AUTOMATIC},
-  {"inside_test", PD::Tsdf_sign_method::INSIDE_TEST}, {"inside", PD::Tsdf_sign_method::INSIDE_TEST},
-  {"winding_number", PD::Tsdf_sign_method::WINDING_NUMBER}, {"winding", PD::Tsdf_sign_method::WINDING_NUMBER},
-  {"flood_fill", PD::Tsdf_sign_method::FLOOD_FILL},   {"flood", PD::Tsdf_sign_method::FLOOD_FILL},
-  {"ray_votes", PD::Tsdf_sign_method::RAY_VOTES},     {"votes", PD::Tsdf_sign_method::RAY_VOTES}};
-const std::map<std::string, PD::Interior_weight_mode> weight_modes = {
-  {"one_shot", PD::Interior_weight_mode::ONE_SHOT}, {"one-shot", PD::Interior_weight_mode::ONE_SHOT},
-  {"mps_reestimated", PD::Interior_weight_mode::MPS_REESTIMATED}, {"mps", PD::Interior_weight_mode::MPS_REESTIMATED}};
-
-// The enumerator's own name: the longest of its names, with '_' rather than '-'.
-template <typename T>
-std::string name_of(const std::map<std::string, T>& names, T value)
-{
-  std::string best;
-  for(const auto& n : names)
-    if(n.second == value && (n.first.size() > best.size() || (n.first.size() == best.size() && n.first.find('_') != std::string::npos)))
-      best = n.first;
-  return best;
-}
-
 // A Python value of the type of the field; a TypeError that names the keyword otherwise.
 template <typename T>
 T cast(const std::string& keyword, py::handle value, const char* expected)
@@ -87,15 +65,21 @@ T cast(const std::string& keyword, py::handle value, const char* expected)
   }
 }
 
-template <typename T>
-T enumerator(const std::string& keyword, py::handle value, const std::map<std::string, T>& names)
+// An enumerator from its lower-case name (or the short name of hitops), as hitops reads it.
+template <typename E>
+E enumerator(const std::string& keyword, py::handle value)
 {
+  E e{};
   const std::string s = cast<std::string>(keyword, value, "a string");
-  const auto it = names.find(s);
-  if(it != names.end()) return it->second;
-  std::string choices;
-  for(const auto& n : names) choices += (choices.empty() ? "'" : ", '") + n.first + "'";
-  throw py::value_error("keyword '" + keyword + "' expects one of " + choices + ", got '" + s + "'");
+  try
+  {
+    Part_decomposition_tools::parse_value(s, e);
+  }
+  catch(const std::invalid_argument& error)
+  {
+    throw py::value_error("keyword '" + keyword + "' expects " + error.what() + ", got '" + s + "'");
+  }
+  return e;
 }
 
 typedef std::function<void(Parameters&, const std::string&, py::handle)> Setter;
@@ -113,64 +97,39 @@ Keyword field(T Owner::*member, const char* expected)
           [member](const Parameters& p) { return py::cast(p.*member); }};
 }
 
-// Every keyword, with how it is read and its default (for DEFAULTS and the documentation).
+// Enumerations as their lower-case names.
+template <typename E, typename Owner>
+std::enable_if_t<std::is_enum<E>::value, Keyword> keyword_of(E Owner::*member)
+{
+  return {[member](Parameters& p, const std::string& k, py::handle v) { p.*member = enumerator<E>(k, v); },
+          [member](const Parameters& p) { return py::cast(Part_decomposition_tools::format_value(p.*member)); }};
+}
+
+// The other settings as the Python value of their type.
+template <typename T, typename Owner>
+std::enable_if_t<!std::is_enum<T>::value, Keyword> keyword_of(T Owner::*member)
+{
+  if(std::is_same<T, bool>::value) return field(member, "a bool");
+  if(std::is_same<T, double>::value) return field(member, "a float");
+  if(std::is_unsigned<T>::value) return field(member, "a non-negative int");
+  if(std::is_integral<T>::value) return field(member, "an int");
+  if(std::is_same<T, std::vector<int> >::value) return field(member, "a sequence of int");
+  if(std::is_same<T, std::vector<double> >::value) return field(member, "a sequence of float");
+  return field(member, "a sequence of 4 floats");
+}
+
+// Every keyword, with how it is read and its default (for DEFAULTS and the documentation): the
+// settings of decompose(), then the module's own.
 const std::map<std::string, Keyword>& keywords()
 {
-  static const std::map<std::string, Keyword> table = {
-    {"voxel_resolutions", field(&Parameters::voxel_resolutions, "a sequence of int")},
-    {"number_of_points_per_face", field(&Parameters::number_of_points_per_face, "a non-negative int")},
-    {"number_of_neighbors", field(&Parameters::number_of_neighbors, "a non-negative int")},
-    {"curvature_percentile", field(&Parameters::curvature_percentile, "a float")},
-    {"cue_weights", field(&Parameters::cue_weights, "a sequence of 4 floats")},
-    {"freeze_ratio", field(&Parameters::freeze_ratio, "a float")},
-    {"use_density", field(&Parameters::use_density, "a bool")},
-    {"prior_resolution_cap", field(&Parameters::prior_resolution_cap, "an int")},
-    {"normalization_margin", field(&Parameters::normalization_margin, "a float")},
-    {"tsdf_truncation", field(&Parameters::tsdf_truncation, "a float")},
-    {"tsdf_sign_method",
-     {[](Parameters& p, const std::string& k, py::handle v) { p.tsdf_sign_method = enumerator(k, v, sign_methods); },
-      [](const Parameters& p) { return py::cast(name_of(sign_methods, p.tsdf_sign_method)); }}},
-    {"flow_zone_tolerance", field(&Parameters::flow_zone_tolerance, "a float")},
-    {"trust_region_scales", field(&Parameters::trust_region_scales, "a sequence of float")},
-    {"body_seed_threshold", field(&Parameters::body_seed_threshold, "a float")},
-    {"minimum_body_volume", field(&Parameters::minimum_body_volume, "a float")},
-    {"minimum_surface_volume", field(&Parameters::minimum_surface_volume, "a float")},
-    {"exterior_penalty", field(&Parameters::exterior_penalty, "a float")},
-    {"coverage_target", field(&Parameters::coverage_target, "a float")},
-    {"roi_radius", field(&Parameters::roi_radius, "a float")},
-    {"interior_weight_mode",
-     {[](Parameters& p, const std::string& k, py::handle v) { p.interior_weight_mode = enumerator(k, v, weight_modes); },
-      [](const Parameters& p) { return py::cast(name_of(weight_modes, p.interior_weight_mode)); }}},
-    {"maximum_number_of_primitives", field(&Parameters::maximum_number_of_primitives, "a non-negative int")},
-    {"use_freeze_zone", field(&Parameters::use_freeze_zone, "a bool")},
-    {"use_tsdf_guidance", field(&Parameters::use_tsdf_guidance, "a bool")},
-    {"use_body_seeds", field(&Parameters::use_body_seeds, "a bool")},
-    {"fitting_resolution_cap", field(&Parameters::fitting_resolution_cap, "an int")},
-    {"use_exterior_band_samples", field(&Parameters::use_exterior_band_samples, "a bool")},
-    {"use_reachable_regions", field(&Parameters::use_reachable_regions, "a bool")},
-    {"use_seed_exclusion", field(&Parameters::use_seed_exclusion, "a bool")},
-    {"maximum_solver_evaluations", field(&Parameters::maximum_solver_evaluations, "an int")},
-    {"maximum_rejections_in_a_row", field(&Parameters::maximum_rejections_in_a_row, "a non-negative int")},
-    {"dihedral_percentile", field(&Parameters::dihedral_percentile, "a float")},
-    {"smoothing_iterations", field(&Parameters::smoothing_iterations, "a non-negative int")},
-    {"minimum_patch_size", field(&Parameters::minimum_patch_size, "a float")},
-    {"patch_split_size", field(&Parameters::patch_split_size, "a float")},
-    {"vote_temperature", field(&Parameters::vote_temperature, "a float")},
-    {"boundary_smoothness", field(&Parameters::boundary_smoothness, "a float")},
-    {"merge_primitives", field(&Parameters::merge_primitives, "a bool")},
-    {"minimum_merge_iou", field(&Parameters::minimum_merge_iou, "a float")},
-    {"merge_thin_sheets", field(&Parameters::merge_thin_sheets, "a bool")},
-    {"use_pieces", field(&Parameters::use_pieces, "a bool")},
-    {"crease_angle", field(&Parameters::crease_angle, "a float")},
-    {"minimum_part_area", field(&Parameters::minimum_part_area, "a float")},
-    {"maximum_merge_cost", field(&Parameters::maximum_merge_cost, "a float")},
-    {"number_of_parts", field(&Parameters::number_of_parts, "None or a positive int")},
-    {"keep_residual_patches", field(&Parameters::keep_residual_patches, "a bool")},
-    {"residual_tolerance", field(&Parameters::residual_tolerance, "a float")},
-    {"thin_part_resolution", field(&Parameters::thin_part_resolution, "an int")},
-    {"threads", field(&Parameters::threads, "None or a positive int")},
-    {"weld_tolerance", field(&Parameters::weld_tolerance, "a float")},
-    {"verbose", field(&Parameters::verbose, "a bool")}};
+  static const std::map<std::string, Keyword> table = [] {
+    std::map<std::string, Keyword> t;
+    Part_decomposition_tools::for_each_setting([&](const char* name, auto member) { t.emplace(name, keyword_of(member)); });
+    t.emplace("number_of_parts", field(&Parameters::number_of_parts, "None or a positive int"));
+    t.emplace("threads", field(&Parameters::threads, "None or a positive int"));
+    t.emplace("weld_tolerance", field(&Parameters::weld_tolerance, "a float"));
+    return t;
+  }();
   return table;
 }
 
@@ -402,12 +361,21 @@ Result decompose_path(py::object path_like, const py::kwargs& kwargs)
   return r;
 }
 
+// One line per keyword: its default and, for a named parameter, what it means.
 std::string keyword_documentation()
 {
   std::string doc;
   const py::dict d = default_parameters();
   for(const auto& item : d)
-    doc += "    " + std::string(py::str(item.first)) + "=" + std::string(py::repr(item.second)) + "\n";
+  {
+    const std::string name = py::str(item.first);
+    doc += "    " + name + "=" + std::string(py::repr(item.second));
+    if(const PD::Parameter_description* p = PD::internal::find_parameter(name.c_str()))
+      doc += std::string(": ") + p->meaning + (p->is_ablation ? " (ablation)" : "");
+    else if(name == "threads")
+      doc += ": the number of threads; None: all cores";
+    doc += "\n";
+  }
   return doc;
 }
 
@@ -494,6 +462,7 @@ PYBIND11_MODULE(_core, m)
          "Keywords (the named parameters of CGAL::Part_decomposition::decompose(), and of the reader\n"
          "for weld_tolerance), with defaults:\n") +
     keyword_documentation();
+  m.attr("_keyword_documentation") = keyword_documentation();
   m.def("decompose", &decompose_arrays, py::arg("vertices"), py::arg("faces"), decompose_doc.c_str());
   m.def("decompose_file", &decompose_path, py::arg("path"),
         "decompose_file(path, **parameters) -> Decomposition\n\n"

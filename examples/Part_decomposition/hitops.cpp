@@ -30,6 +30,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -38,6 +39,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -94,7 +96,6 @@ const char* const usage_text =
   "  --colored FILE           the mesh as PLY with one colour per part\n"
   "  --primitives FILE        the superquadric of each part as JSON, in INPUT's coordinates\n"
   "  --primitive-mesh FILE    the superquadrics as one triangle mesh (OFF)\n"
-  "  --parts K                exactly K parts, a level of the part hierarchy (at most its leaves)\n"
   "  --hierarchy FILE         the part hierarchy as JSON: per node its children, merge cost and\n"
   "                           superquadric; the leaf of each face of INPUT, in its order\n"
   "  --parts-glb FILE         the parts as binary glTF: one mesh and node part_K per part, its colour as\n"
@@ -106,8 +107,9 @@ const char* const usage_text =
   "                           (vertex attribute _FEATURE_ID_0): a glTF INPUT's scene unchanged otherwise,\n"
   "                           another format as one mesh\n"
   "  --timings                print the time of each stage on stderr\n"
-  "  --verbose                print what each stage does on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
+  "  --list-parameters        the table of the parameters (name, option, default, type, range, stage,\n"
+  "                           ablation, meaning) as tab-separated values\n"
   "batch processing:\n"
   "  --batch LIST             a file with one mesh path per line (# starts a comment)\n"
   "  --out DIR                (created if needed) writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
@@ -115,43 +117,166 @@ const char* const usage_text =
   "                           the input, message); meshes whose outputs exist are skipped\n"
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
   "  --mesh-timeout SECONDS   stop a mesh (read, decomposition, outputs) that takes longer: status timeout, no\n"
-  "                           output, the batch goes on (each mesh then runs in a child process); 0: no limit\n"
-  "parameters (defaults are the paper's, Table A.1, or the package's documented choices):\n"
-  "  --weld-tolerance 5e-6    border vertices closer than this fraction of the bounding box diagonal are\n"
-  "                           welded when the mesh is read (seams left open by round-off); 0: none\n"
-  "  --resolutions 16,32,64   voxel resolutions of the prior, coarse to fine\n"
-  "  --prior-cap R            finest resolution of the topology score (0: all); finer ones only refine the grid\n"
-  "  --samples-per-face 36    barycentric samples per face (a perfect square)\n"
-  "  --neighbors 8            neighbours of the normal deviation cue\n"
-  "  --curvature-percentile 99.5\n"
-  "  --cue-weights 1,1,1,1    weights of curvature mean, deviation, gradient, normal deviation\n"
-  "  --freeze-ratio 0.15      fraction of frozen voxels per resolution\n"
-  "  --margin 0.03125         free margin of the normalized cube\n"
-  "  --truncation 8           TSDF truncation, voxels of the finest grid\n"
-  "  --sign-method M          auto, votes, inside, winding or flood\n"
-  "  --flow-tolerance 2       Flow-zone dilation, voxels of the fitting resolution\n"
-  "  --trust-region-scales 1,0.5,0.25\n"
-  "  --body-seed-threshold 1.5\n"
-  "  --min-body-volume 5      --min-surface-volume 3\n"
-  "  --exterior-penalty 5     --coverage 0.999    --roi-radius 8\n"
-  "  --interior-weight M      one-shot or mps\n"
-  "  --max-primitives 256\n"
-  "  --no-freeze --no-tsdf --no-body-seeds --no-density   ablations of the paper\n"
-  "  --fitting-resolution-cap 0   r_fit = min(r, cap); 0: the resolution before the finest\n"
-  "  --no-exterior-band --no-reachable-regions --no-seed-exclusion\n"
-  "  --max-solver-evaluations 40   --max-rejections-in-a-row 4 (0: never)\n"
-  "  --dihedral-percentile 90   --smoothing-iterations 1\n"
-  "  --min-patch-size 0.001   --patch-split-size 0.0005  (fractions of the mesh area)\n"
-  "  --vote-temperature 1     voxels of the finest grid\n"
-  "  --boundary-smoothness 10 cost of a part boundary across smooth surface (0: the patch vote)\n"
-  "  --no-primitive-merge     keep apart the primitives that one superquadric explains\n"
-  "  --min-merge-iou 0.6      voxel IoU from which one superquadric explains two primitives\n"
-  "  --no-sheet-merge         keep the flat parts that tile a thin shell apart\n"
-  "  --no-pieces              ignore the pieces of the mesh and their concave creases\n"
-  "  --crease-angle DEG       dihedral angle of the concave creases between parts (60)\n"
-  "  --min-part-area A        area fraction below which a part is merged into a neighbour (0.005)\n"
-  "  --max-merge-cost C       the parts go on merging in the hierarchy while a merge costs less (0.003; 0: none)\n"
-  "  --thin-part-resolution R a finer pass at R (128 or 256) whose thin parts replace the default ones (0: none)\n";
+  "                           output, the batch goes on (each mesh then runs in a child process); 0: no limit\n";
+
+// Former spellings of parameter options, still accepted: the option, its parameter and the value it
+// implies (nullptr: it takes one).
+struct Alias
+{
+  const char* option;
+  const char* parameter;
+  const char* value;
+};
+const Alias aliases[] = {
+  {"--no-pieces", "use_pieces", "false"}, {"--min-part-area", "minimum_part_area", nullptr},
+  {"--resolutions", "voxel_resolutions", nullptr}, {"--samples-per-face", "number_of_points_per_face", nullptr},
+  {"--neighbors", "number_of_neighbors", nullptr}, {"--no-density", "use_density", "false"},
+  {"--prior-cap", "prior_resolution_cap", nullptr}, {"--margin", "normalization_margin", nullptr},
+  {"--truncation", "tsdf_truncation", nullptr}, {"--sign-method", "tsdf_sign_method", nullptr},
+  {"--flow-tolerance", "flow_zone_tolerance", nullptr}, {"--min-body-volume", "minimum_body_volume", nullptr},
+  {"--min-surface-volume", "minimum_surface_volume", nullptr}, {"--coverage", "coverage_target", nullptr},
+  {"--interior-weight", "interior_weight_mode", nullptr}, {"--max-primitives", "maximum_number_of_primitives", nullptr},
+  {"--no-freeze", "use_freeze_zone", "false"}, {"--no-tsdf", "use_tsdf_guidance", "false"},
+  {"--no-body-seeds", "use_body_seeds", "false"}, {"--no-exterior-band", "use_exterior_band_samples", "false"},
+  {"--no-reachable-regions", "use_reachable_regions", "false"}, {"--no-seed-exclusion", "use_seed_exclusion", "false"},
+  {"--max-solver-evaluations", "maximum_solver_evaluations", nullptr},
+  {"--max-rejections-in-a-row", "maximum_rejections_in_a_row", nullptr},
+  {"--no-primitive-merge", "merge_primitives", "false"}, {"--min-merge-iou", "minimum_merge_iou", nullptr},
+  {"--dihedral-quantile", "dihedral_percentile", nullptr}, {"--min-patch-size", "minimum_patch_size", nullptr},
+  {"--max-patch-size", "patch_split_size", nullptr}, {"--no-sheet-merge", "merge_thin_sheets", "false"},
+  {"--max-merge-cost", "maximum_merge_cost", nullptr}, {"--parts", "number_of_parts", nullptr}};
+
+// The option of a parameter of PD::parameter_table: its name with '-' for '_'.
+std::string option_of(const std::string& parameter)
+{
+  std::string option = "--" + parameter;
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+// How one parameter option reads its value into the options, and prints the value.
+struct Parameter_option
+{
+  const PD::Parameter_description* parameter;
+  std::function<void(Options&, const std::string&)> set;
+  std::function<std::string(const Options&)> get;
+};
+
+template <typename T>
+Parameter_option member_option(const char* name, T Part_decomposition_tools::Decomposition_settings::*member)
+{
+  return {PD::internal::find_parameter(name),
+          [member](Options& o, const std::string& text) { Part_decomposition_tools::parse_value(text, o.decomposition.*member); },
+          [member](const Options& o) { return Part_decomposition_tools::format_value(o.decomposition.*member); }};
+}
+
+// Every parameter option by its option name; made from the settings, checked against the table.
+const std::map<std::string, Parameter_option>& parameter_options()
+{
+  static const std::map<std::string, Parameter_option> table = [] {
+    std::map<std::string, Parameter_option> t;
+    Part_decomposition_tools::for_each_setting(
+      [&](const char* name, auto member) { t.emplace(option_of(name), member_option(name, member)); });
+    t.emplace("--weld-tolerance",
+              Parameter_option{PD::internal::find_parameter("weld_tolerance"),
+                               [](Options& o, const std::string& text) { Part_decomposition_tools::parse_value(text, o.weld_tolerance); },
+                               [](const Options& o) { return Part_decomposition_tools::format_value(o.weld_tolerance); }});
+    t.emplace("--number-of-parts",
+              Parameter_option{PD::internal::find_parameter("number_of_parts"),
+                               [](Options& o, const std::string& text) {
+                                 if(text == "none") { o.parts = 0; return; }
+                                 Part_decomposition_tools::parse_value(text, o.parts);
+                                 if(o.parts < 1) throw std::invalid_argument("at least 1, or none");
+                               },
+                               [](const Options& o) { return o.parts == 0 ? std::string("none") : std::to_string(o.parts); }});
+    // a parameter of the table without option, or an option of no parameter, is a bug of this list
+    for(const PD::Parameter_description& p : PD::parameter_table)
+      if(p.is_value && !t.count(option_of(p.name))) throw std::logic_error(std::string("no option for ") + p.name);
+    for(const auto& o : t)
+      if(o.second.parameter == nullptr) throw std::logic_error("no parameter for " + o.first);
+    return t;
+  }();
+  return table;
+}
+
+// The title of a group of options.
+const char* stage_title(PD::Parameter_stage stage)
+{
+  switch(stage)
+  {
+    case PD::Parameter_stage::READING: return "reading the mesh";
+    case PD::Parameter_stage::PIECES: return "pieces (segment_pieces())";
+    case PD::Parameter_stage::PRIOR: return "prior (compute_flow_freeze_prior())";
+    case PD::Parameter_stage::DISTANCE_FIELD: return "distance field (compute_tsdf())";
+    case PD::Parameter_stage::FITTING: return "fitting (fit_superquadrics())";
+    case PD::Parameter_stage::OVER_SEGMENTATION: return "over-segmentation (over_segment())";
+    case PD::Parameter_stage::ASSIGNMENT: return "assignment (assign_parts())";
+    case PD::Parameter_stage::HIERARCHY: return "part hierarchy (decompose())";
+    default: return "reports";
+  }
+}
+
+// One line per parameter: option, default, meaning, range, former spellings.
+void print_parameter(std::ostream& out, const PD::Parameter_description& p, const Options& defaults)
+{
+  const std::string option = option_of(p.name);
+  std::string line = "  " + option + " " + parameter_options().at(option).get(defaults);
+  line += std::string(line.size() < 38 ? 38 - line.size() : 2, ' ') + p.meaning;
+  if(*p.range) line += std::string("; ") + p.range;
+  std::string also;
+  for(const Alias& a : aliases)
+    if(p.name == std::string(a.parameter)) also += std::string(also.empty() ? "" : ", ") + a.option + (a.value ? std::string(" for ") + a.value : "");
+  if(!also.empty()) line += " [also " + also + "]";
+  // at most 110 columns: the text goes on under the meaning
+  const std::size_t width = 110, indent = 38;
+  while(line.size() > width)
+  {
+    const std::size_t cut = line.rfind(' ', width);
+    if(cut == std::string::npos || cut <= indent) break;
+    out << line.substr(0, cut) << '\n';
+    line = std::string(indent, ' ') + line.substr(cut + 1);
+  }
+  out << line << '\n';
+}
+
+// The usage text, then every parameter with an option, grouped by stage, the ablations last.
+void print_help(std::ostream& out)
+{
+  const Options defaults;
+  out << usage_text
+      << "parameters, the named parameters of decompose() (defaults: the paper's, Table A.1, or the package's\n"
+         "documented choices); booleans take true or false, lists are comma-separated, enumerations take\n"
+         "their lower-case names:\n";
+  for(int s = 0; s <= int(PD::Parameter_stage::OUTPUT); ++s)
+  {
+    bool title = false;
+    for(const PD::Parameter_description& p : PD::parameter_table)
+    {
+      if(int(p.stage) != s || !p.is_value || p.is_ablation || !parameter_options().count(option_of(p.name))) continue;
+      if(!title) out << " " << stage_title(p.stage) << ":\n";
+      title = true;
+      print_parameter(out, p, defaults);
+    }
+  }
+  out << " ablations (each undoes a documented choice of the package, or reproduces the paper literally):\n";
+  for(const PD::Parameter_description& p : PD::parameter_table)
+    if(p.is_value && p.is_ablation) print_parameter(out, p, defaults);
+}
+
+// The table as tab-separated values, for the manual's generator: name, option, default, type,
+// range, stage, read by, ablation, meaning; the default is the value hitops passes.
+void print_parameter_table(std::ostream& out)
+{
+  const Options defaults;
+  out << "name\toption\tdefault\ttable_default\ttype\trange\tstage\tread_by\tablation\tmeaning\n";
+  for(const PD::Parameter_description& p : PD::parameter_table)
+  {
+    const std::string option = p.is_value ? option_of(p.name) : "";
+    out << p.name << '\t' << option << '\t' << (p.is_value ? parameter_options().at(option).get(defaults) : p.default_value)
+        << '\t' << p.default_value << '\t' << p.type << '\t' << p.range << '\t' << stage_title(p.stage) << '\t'
+        << p.read_by << '\t' << (p.is_ablation ? "yes" : "no") << '\t' << p.meaning << '\n';
+  }
+}
 
 double to_number(const std::string& option, const std::string& text)
 {
@@ -171,14 +296,30 @@ unsigned int to_count(const std::string& option, const std::string& text)
   return static_cast<unsigned int>(v);
 }
 
-std::vector<double> to_numbers(const std::string& option, const std::string& text)
+// Reads the parameter option argv[i] (and its value) into `o`; false if it is none.
+bool set_parameter(Options& o, const std::string& a, int argc, char** argv, int& i)
 {
-  std::vector<double> out;
-  std::stringstream in(text);
-  std::string item;
-  while(std::getline(in, item, ',')) out.push_back(to_number(option, item));
-  if(out.empty()) throw Usage_error("option " + option + " expects a comma-separated list");
-  return out;
+  std::string option = a;
+  const char* implied = nullptr;
+  for(const Alias& alias : aliases)
+    if(a == alias.option)
+    {
+      option = option_of(alias.parameter);
+      implied = alias.value;
+    }
+  const auto it = parameter_options().find(option);
+  if(it == parameter_options().end()) return false;
+  if(!implied && i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
+  const std::string text = implied ? implied : argv[++i];
+  try
+  {
+    it->second.set(o, text);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    throw Usage_error("option " + a + " expects " + e.what() + ", got '" + text + "'");
+  }
+  return true;
 }
 
 Options parse(int argc, char** argv)
@@ -191,20 +332,23 @@ Options parse(int argc, char** argv)
       if(i + 1 >= argc) throw Usage_error("option " + a + " expects a value");
       return argv[++i];
     };
-    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(EXIT_SUCCESS); }
+    if(a == "--help" || a == "-h") { print_help(std::cout); std::exit(EXIT_SUCCESS); }
     else if(a == "--labels") o.labels = value();
     else if(a == "--colored") o.colored = value();
     else if(a == "--primitives") o.primitives = value();
     else if(a == "--primitive-mesh") o.primitive_mesh = value();
-    else if(a == "--parts") { o.parts = to_count(a, value()); if(o.parts < 1) throw Usage_error("--parts expects at least 1"); }
     else if(a == "--hierarchy") o.hierarchy = value();
     else if(a == "--parts-glb") o.parts_glb = value();
     else if(a == "--parts-glb-primitives") o.parts_glb_primitives = true;
     else if(a == "--labels-glb") o.labels_glb = value();
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
-    else if(a == "--verbose") o.decomposition.verbose = true;
-    else if(a == "--weld-tolerance") o.weld_tolerance = to_number(a, value());
+    else if(a == "--verbose")
+    {
+      // a flag before it took true or false: a value is read only if it is one
+      const bool has_value = i + 1 < argc && (std::string(argv[i + 1]) == "true" || std::string(argv[i + 1]) == "false");
+      o.decomposition.verbose = !has_value || std::string(argv[++i]) == "true";
+    }
     else if(a == "--batch") o.batch = value();
     else if(a == "--mesh-timeout")
     {
@@ -221,74 +365,8 @@ Options parse(int argc, char** argv)
       o.shards = to_count(a, s.substr(slash + 1));
       if(o.shards < 1 || o.shard >= o.shards) throw Usage_error("--shard expects I/N with 0 <= I < N");
     }
-    else if(a == "--resolutions")
-    {
-      o.decomposition.voxel_resolutions.clear();
-      for(double r : to_numbers(a, value())) o.decomposition.voxel_resolutions.push_back(int(r));
-    }
-    else if(a == "--samples-per-face") o.decomposition.number_of_points_per_face = to_count(a, value());
-    else if(a == "--neighbors") o.decomposition.number_of_neighbors = to_count(a, value());
-    else if(a == "--curvature-percentile") o.decomposition.curvature_percentile = to_number(a, value());
-    else if(a == "--cue-weights")
-    {
-      const std::vector<double> w = to_numbers(a, value());
-      if(w.size() != 4) throw Usage_error("--cue-weights expects four numbers");
-      for(int k = 0; k < 4; ++k) o.decomposition.cue_weights[k] = w[k];
-    }
-    else if(a == "--freeze-ratio") o.decomposition.freeze_ratio = to_number(a, value());
-    else if(a == "--margin") o.decomposition.normalization_margin = to_number(a, value());
-    else if(a == "--truncation") o.decomposition.tsdf_truncation = to_number(a, value());
-    else if(a == "--sign-method")
-    {
-      const std::string m = value();
-      if(m == "auto") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::AUTOMATIC;
-      else if(m == "inside") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::INSIDE_TEST;
-      else if(m == "winding") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
-      else if(m == "flood") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
-      else if(m == "votes") o.decomposition.tsdf_sign_method = PD::Tsdf_sign_method::RAY_VOTES;
-      else throw Usage_error("--sign-method expects auto, votes, inside, winding or flood");
-    }
-    else if(a == "--flow-tolerance") o.decomposition.flow_zone_tolerance = to_number(a, value());
-    else if(a == "--trust-region-scales") o.decomposition.trust_region_scales = to_numbers(a, value());
-    else if(a == "--body-seed-threshold") o.decomposition.body_seed_threshold = to_number(a, value());
-    else if(a == "--min-body-volume") o.decomposition.minimum_body_volume = to_number(a, value());
-    else if(a == "--min-surface-volume") o.decomposition.minimum_surface_volume = to_number(a, value());
-    else if(a == "--exterior-penalty") o.decomposition.exterior_penalty = to_number(a, value());
-    else if(a == "--coverage") o.decomposition.coverage_target = to_number(a, value());
-    else if(a == "--roi-radius") o.decomposition.roi_radius = to_number(a, value());
-    else if(a == "--interior-weight")
-    {
-      const std::string m = value();
-      if(m == "one-shot") o.decomposition.interior_weight_mode = PD::Interior_weight_mode::ONE_SHOT;
-      else if(m == "mps") o.decomposition.interior_weight_mode = PD::Interior_weight_mode::MPS_REESTIMATED;
-      else throw Usage_error("--interior-weight expects one-shot or mps");
-    }
-    else if(a == "--max-primitives") o.decomposition.maximum_number_of_primitives = to_count(a, value());
-    else if(a == "--no-freeze") o.decomposition.use_freeze_zone = false;
-    else if(a == "--no-sheet-merge") o.decomposition.merge_thin_sheets = false;
-    else if(a == "--no-pieces") o.decomposition.use_pieces = false;
-    else if(a == "--crease-angle") o.decomposition.crease_angle = to_number(a, value());
-    else if(a == "--min-part-area") o.decomposition.minimum_part_area = to_number(a, value());
-    else if(a == "--max-merge-cost") o.decomposition.maximum_merge_cost = to_number(a, value());
-    else if(a == "--thin-part-resolution") o.decomposition.thin_part_resolution = int(to_count(a, value()));
-    else if(a == "--no-density") o.decomposition.use_density = false;
-    else if(a == "--prior-cap") o.decomposition.prior_resolution_cap = int(to_count(a, value()));
-    else if(a == "--fitting-resolution-cap") o.decomposition.fitting_resolution_cap = int(to_count(a, value()));
-    else if(a == "--no-exterior-band") o.decomposition.use_exterior_band_samples = false;
-    else if(a == "--no-reachable-regions") o.decomposition.use_reachable_regions = false;
-    else if(a == "--no-seed-exclusion") o.decomposition.use_seed_exclusion = false;
-    else if(a == "--max-solver-evaluations") o.decomposition.maximum_solver_evaluations = int(to_count(a, value()));
-    else if(a == "--max-rejections-in-a-row") o.decomposition.maximum_rejections_in_a_row = to_count(a, value());
-    else if(a == "--no-tsdf") o.decomposition.use_tsdf_guidance = false;
-    else if(a == "--no-body-seeds") o.decomposition.use_body_seeds = false;
-    else if(a == "--dihedral-percentile" || a == "--dihedral-quantile") o.decomposition.dihedral_percentile = to_number(a, value());
-    else if(a == "--smoothing-iterations") o.decomposition.smoothing_iterations = to_count(a, value());
-    else if(a == "--min-patch-size") o.decomposition.minimum_patch_size = to_number(a, value());
-    else if(a == "--patch-split-size" || a == "--max-patch-size") o.decomposition.patch_split_size = to_number(a, value());
-    else if(a == "--vote-temperature") o.decomposition.vote_temperature = to_number(a, value());
-    else if(a == "--boundary-smoothness") o.decomposition.boundary_smoothness = to_number(a, value());
-    else if(a == "--no-primitive-merge") o.decomposition.merge_primitives = false;
-    else if(a == "--min-merge-iou") o.decomposition.minimum_merge_iou = to_number(a, value());
+    else if(a == "--list-parameters") { print_parameter_table(std::cout); std::exit(EXIT_SUCCESS); }
+    else if(set_parameter(o, a, argc, argv, i)) {}
     else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a + " (see --help)");
     else if(o.input.empty()) o.input = a;
     else throw Usage_error("more than one input file: '" + o.input + "' and '" + a + "'");

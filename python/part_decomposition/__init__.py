@@ -68,7 +68,7 @@ a parameter out of its range, TypeError for an unknown keyword or an object with
 
 Keywords (the named parameters of CGAL::Part_decomposition::decompose(), and of the reader for
 weld_tolerance), with defaults:
-""" + "".join("    %s=%r\n" % item for item in DEFAULTS.items())
+""" + _core._keyword_documentation
 
 
 def decompose_bytes(data, format, **parameters):

@@ -10,101 +10,224 @@
 
 // The named parameters of Part_decomposition::decompose() as plain values at the package's
 // defaults, for the programs that take them from their users (hitops, the Python module) or vary
-// them (the benchmark), and the one named-parameter pack that passes them all: the list is
-// written once.
+// them (the benchmark), the one named-parameter pack that passes them all, and their text form.
+// The list is written once; what each parameter means is in PD::parameter_table.
 
 #include <CGAL/Part_decomposition/decompose.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace Part_decomposition_tools {
 
 namespace PD = CGAL::Part_decomposition;
 
+// The package's named parameters that hold a value, in the order of PD::parameter_table: type,
+// name, default. Each is a field of Decomposition_settings, passed by named_parameters().
+#define PART_DECOMPOSITION_TOOLS_SETTINGS(X)                                                   \
+  X(bool, use_pieces, PD::defaults::use_pieces)                                              \
+  X(double, crease_angle, PD::defaults::crease_angle)                                        \
+  X(double, minimum_part_area, PD::defaults::minimum_part_area)                              \
+  X(std::vector<int>, voxel_resolutions, PD::defaults::voxel_resolutions())                  \
+  X(unsigned int, number_of_neighbors, PD::defaults::number_of_neighbors)                    \
+  X(double, curvature_percentile, PD::defaults::curvature_percentile)                        \
+  X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                  \
+  X(double, freeze_ratio, PD::defaults::freeze_ratio)                                        \
+  X(bool, use_density, PD::defaults::use_density)                                            \
+  X(int, prior_resolution_cap, PD::defaults::prior_resolution_cap)                           \
+  X(double, normalization_margin, PD::defaults::normalization_margin)                        \
+  X(double, tsdf_truncation, PD::defaults::tsdf_truncation)                                  \
+  X(PD::Tsdf_sign_method, tsdf_sign_method, PD::defaults::tsdf_sign_method)                  \
+  X(double, flow_zone_tolerance, PD::defaults::flow_zone_tolerance)                          \
+  X(std::vector<double>, trust_region_scales, PD::defaults::trust_region_scales())           \
+  X(double, body_seed_threshold, PD::defaults::body_seed_threshold)                          \
+  X(double, minimum_body_volume, PD::defaults::minimum_body_volume)                          \
+  X(double, minimum_surface_volume, PD::defaults::minimum_surface_volume)                    \
+  X(double, exterior_penalty, PD::defaults::exterior_penalty)                                \
+  X(double, coverage_target, PD::defaults::coverage_target)                                  \
+  X(double, roi_radius, PD::defaults::roi_radius)                                            \
+  X(PD::Interior_weight_mode, interior_weight_mode, PD::defaults::interior_weight_mode)      \
+  X(std::size_t, maximum_number_of_primitives, PD::defaults::maximum_number_of_primitives)   \
+  X(bool, use_freeze_zone, PD::defaults::use_freeze_zone)                                    \
+  X(bool, use_tsdf_guidance, PD::defaults::use_tsdf_guidance)                                \
+  X(bool, use_body_seeds, PD::defaults::use_body_seeds)                                      \
+  X(int, fitting_resolution_cap, PD::defaults::fitting_resolution_cap)                       \
+  X(bool, use_exterior_band_samples, PD::defaults::use_exterior_band_samples)                \
+  X(bool, use_reachable_regions, PD::defaults::use_reachable_regions)                        \
+  X(bool, use_seed_exclusion, PD::defaults::use_seed_exclusion)                              \
+  X(int, maximum_solver_evaluations, PD::defaults::maximum_solver_evaluations)               \
+  X(std::size_t, maximum_rejections_in_a_row, PD::defaults::maximum_rejections_in_a_row)     \
+  X(bool, merge_primitives, PD::defaults::merge_primitives)                                  \
+  X(double, minimum_merge_iou, PD::defaults::minimum_merge_iou)                              \
+  X(double, dihedral_percentile, PD::defaults::dihedral_percentile)                          \
+  X(unsigned int, smoothing_iterations, PD::defaults::smoothing_iterations)                  \
+  X(double, minimum_patch_size, PD::defaults::minimum_patch_size)                            \
+  X(double, patch_split_size, PD::defaults::patch_split_size)                                \
+  X(double, vote_temperature, PD::defaults::vote_temperature)                                \
+  X(double, boundary_smoothness, PD::defaults::boundary_smoothness)                          \
+  X(bool, keep_residual_patches, PD::defaults::keep_residual_patches)                        \
+  X(double, residual_tolerance, PD::defaults::residual_tolerance)                            \
+  X(bool, merge_thin_sheets, PD::defaults::merge_thin_sheets)                                \
+  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)                            \
+  X(int, thin_part_resolution, PD::defaults::thin_part_resolution)
+
+typedef std::array<double, 4> PD_cue_weights; // a macro argument cannot hold the comma
+
 struct Decomposition_settings
 {
-  std::vector<int> voxel_resolutions = PD::defaults::voxel_resolutions();
+#define PART_DECOMPOSITION_TOOLS_FIELD(TYPE, NAME, DEFAULT) TYPE NAME = DEFAULT;
+  PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_FIELD)
+#undef PART_DECOMPOSITION_TOOLS_FIELD
+  // CGAL's own named parameters
   unsigned int number_of_points_per_face = PD::defaults::number_of_points_per_face;
-  unsigned int number_of_neighbors = PD::defaults::number_of_neighbors;
-  double curvature_percentile = PD::defaults::curvature_percentile;
-  std::array<double, 4> cue_weights = PD::defaults::cue_weights;
-  double freeze_ratio = PD::defaults::freeze_ratio;
-  bool use_density = PD::defaults::use_density;
-  int prior_resolution_cap = PD::defaults::prior_resolution_cap;
-  double normalization_margin = PD::defaults::normalization_margin;
-  double tsdf_truncation = PD::defaults::tsdf_truncation;
-  PD::Tsdf_sign_method tsdf_sign_method = PD::defaults::tsdf_sign_method;
-  double flow_zone_tolerance = PD::defaults::flow_zone_tolerance;
-  std::vector<double> trust_region_scales = PD::defaults::trust_region_scales();
-  double body_seed_threshold = PD::defaults::body_seed_threshold;
-  double minimum_body_volume = PD::defaults::minimum_body_volume;
-  double minimum_surface_volume = PD::defaults::minimum_surface_volume;
-  double exterior_penalty = PD::defaults::exterior_penalty;
-  double coverage_target = PD::defaults::coverage_target;
-  double roi_radius = PD::defaults::roi_radius;
-  PD::Interior_weight_mode interior_weight_mode = PD::defaults::interior_weight_mode;
-  std::size_t maximum_number_of_primitives = PD::defaults::maximum_number_of_primitives;
-  bool use_freeze_zone = PD::defaults::use_freeze_zone;
-  bool use_tsdf_guidance = PD::defaults::use_tsdf_guidance;
-  bool use_body_seeds = PD::defaults::use_body_seeds;
-  int fitting_resolution_cap = PD::defaults::fitting_resolution_cap;
-  bool use_exterior_band_samples = PD::defaults::use_exterior_band_samples;
-  bool use_reachable_regions = PD::defaults::use_reachable_regions;
-  bool use_seed_exclusion = PD::defaults::use_seed_exclusion;
-  int maximum_solver_evaluations = PD::defaults::maximum_solver_evaluations;
-  std::size_t maximum_rejections_in_a_row = PD::defaults::maximum_rejections_in_a_row;
-  double dihedral_percentile = PD::defaults::dihedral_percentile;
-  unsigned int smoothing_iterations = PD::defaults::smoothing_iterations;
-  double minimum_patch_size = PD::defaults::minimum_patch_size;
-  double patch_split_size = PD::defaults::patch_split_size;
-  double vote_temperature = PD::defaults::vote_temperature;
-  double boundary_smoothness = PD::defaults::boundary_smoothness;
-  bool merge_primitives = PD::defaults::merge_primitives;
-  double minimum_merge_iou = PD::defaults::minimum_merge_iou;
-  bool merge_thin_sheets = PD::defaults::merge_thin_sheets;
-  bool use_pieces = PD::defaults::use_pieces;
-  double crease_angle = PD::defaults::crease_angle;
-  double minimum_part_area = PD::defaults::minimum_part_area;
-  double maximum_merge_cost = PD::defaults::maximum_merge_cost;
-  bool keep_residual_patches = PD::defaults::keep_residual_patches;
-  double residual_tolerance = PD::defaults::residual_tolerance;
-  int thin_part_resolution = PD::defaults::thin_part_resolution;
   bool verbose = false;
 };
+
+// Calls f(name, member pointer) for every field of Decomposition_settings, in table order.
+template <typename F>
+void for_each_setting(F&& f)
+{
+#define PART_DECOMPOSITION_TOOLS_VISIT(TYPE, NAME, DEFAULT) f(#NAME, &Decomposition_settings::NAME);
+  PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_VISIT)
+#undef PART_DECOMPOSITION_TOOLS_VISIT
+  f("number_of_points_per_face", &Decomposition_settings::number_of_points_per_face);
+  f("verbose", &Decomposition_settings::verbose);
+}
 
 // All the settings as one pack; the caller chains its own parameters (outputs, timings) after it
 // with PD::parameters::combine().
 inline auto named_parameters(const Decomposition_settings& s)
 {
   namespace PDP = PD::parameters;
+#define PART_DECOMPOSITION_TOOLS_PASS(TYPE, NAME, DEFAULT) , PDP::NAME(s.NAME)
   return PDP::combine(
-    CGAL::parameters::number_of_points_per_face(s.number_of_points_per_face).verbose(s.verbose),
-    PDP::voxel_resolutions(s.voxel_resolutions), PDP::number_of_neighbors(s.number_of_neighbors),
-    PDP::curvature_percentile(s.curvature_percentile), PDP::cue_weights(s.cue_weights),
-    PDP::freeze_ratio(s.freeze_ratio), PDP::use_density(s.use_density),
-    PDP::prior_resolution_cap(s.prior_resolution_cap),
-    PDP::normalization_margin(s.normalization_margin), PDP::tsdf_truncation(s.tsdf_truncation),
-    PDP::tsdf_sign_method(s.tsdf_sign_method), PDP::flow_zone_tolerance(s.flow_zone_tolerance),
-    PDP::trust_region_scales(s.trust_region_scales), PDP::body_seed_threshold(s.body_seed_threshold),
-    PDP::minimum_body_volume(s.minimum_body_volume), PDP::minimum_surface_volume(s.minimum_surface_volume),
-    PDP::exterior_penalty(s.exterior_penalty), PDP::coverage_target(s.coverage_target),
-    PDP::roi_radius(s.roi_radius), PDP::interior_weight_mode(s.interior_weight_mode),
-    PDP::maximum_number_of_primitives(s.maximum_number_of_primitives), PDP::use_freeze_zone(s.use_freeze_zone),
-    PDP::use_tsdf_guidance(s.use_tsdf_guidance), PDP::use_body_seeds(s.use_body_seeds),
-    PDP::fitting_resolution_cap(s.fitting_resolution_cap),
-    PDP::use_exterior_band_samples(s.use_exterior_band_samples), PDP::use_reachable_regions(s.use_reachable_regions),
-    PDP::use_seed_exclusion(s.use_seed_exclusion), PDP::maximum_solver_evaluations(s.maximum_solver_evaluations),
-    PDP::maximum_rejections_in_a_row(s.maximum_rejections_in_a_row), PDP::dihedral_percentile(s.dihedral_percentile),
-    PDP::smoothing_iterations(s.smoothing_iterations), PDP::minimum_patch_size(s.minimum_patch_size),
-    PDP::patch_split_size(s.patch_split_size), PDP::vote_temperature(s.vote_temperature),
-    PDP::boundary_smoothness(s.boundary_smoothness), PDP::merge_primitives(s.merge_primitives),
-    PDP::minimum_merge_iou(s.minimum_merge_iou), PDP::merge_thin_sheets(s.merge_thin_sheets),
-    PDP::use_pieces(s.use_pieces), PDP::crease_angle(s.crease_angle), PDP::minimum_part_area(s.minimum_part_area),
-    PDP::maximum_merge_cost(s.maximum_merge_cost),
-    PDP::keep_residual_patches(s.keep_residual_patches), PDP::residual_tolerance(s.residual_tolerance),
-    PDP::thin_part_resolution(s.thin_part_resolution));
+    CGAL::parameters::number_of_points_per_face(s.number_of_points_per_face).verbose(s.verbose)
+    PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_PASS));
+#undef PART_DECOMPOSITION_TOOLS_PASS
+}
+
+// The names of the enumerators: the lower-case name of the enumerator first, then the short names
+// that hitops took before (still accepted).
+template <typename E>
+struct Enumerator_name
+{
+  const char* name;
+  E value;
+};
+
+inline const std::vector<Enumerator_name<PD::Tsdf_sign_method> >& enumerator_names(PD::Tsdf_sign_method)
+{
+  typedef PD::Tsdf_sign_method M;
+  static const std::vector<Enumerator_name<M> > names = {
+    {"automatic", M::AUTOMATIC}, {"inside_test", M::INSIDE_TEST}, {"winding_number", M::WINDING_NUMBER},
+    {"flood_fill", M::FLOOD_FILL}, {"ray_votes", M::RAY_VOTES}, {"auto", M::AUTOMATIC}, {"inside", M::INSIDE_TEST},
+    {"winding", M::WINDING_NUMBER}, {"flood", M::FLOOD_FILL}, {"votes", M::RAY_VOTES}};
+  return names;
+}
+
+inline const std::vector<Enumerator_name<PD::Interior_weight_mode> >& enumerator_names(PD::Interior_weight_mode)
+{
+  typedef PD::Interior_weight_mode M;
+  static const std::vector<Enumerator_name<M> > names = {
+    {"one_shot", M::ONE_SHOT}, {"mps_reestimated", M::MPS_REESTIMATED}, {"one-shot", M::ONE_SHOT},
+    {"mps", M::MPS_REESTIMATED}};
+  return names;
+}
+
+// Values as text, as hitops reads and prints them; parse_value() throws std::invalid_argument with
+// what it expects.
+
+inline std::string format_value(double v)
+{
+  // the fewest digits that read back as v (0.15, not 0.14999999999999999), with all the digits of
+  // the integer part (60, not 6e+01): as Python prints a float
+  const int integer_digits = v == 0. ? 1 : int(std::floor(std::log10(std::fabs(v)))) + 1;
+  for(int digits = 1;; ++digits)
+  {
+    std::ostringstream out;
+    out.precision((std::min)(17, (std::max)(digits, integer_digits)));
+    out << v;
+    if(std::stod(out.str()) == v || digits >= 17) return out.str();
+  }
+}
+inline std::string format_value(bool v) { return v ? "true" : "false"; }
+template <typename T>
+std::enable_if_t<std::is_integral<T>::value, std::string> format_value(T v) { return std::to_string(v); }
+template <typename E>
+std::enable_if_t<std::is_enum<E>::value, std::string> format_value(E v)
+{
+  for(const auto& n : enumerator_names(v))
+    if(n.value == v) return n.name;
+  return "?";
+}
+template <typename Range>
+auto format_value(const Range& r) -> decltype(std::begin(r), std::string())
+{
+  std::string out;
+  for(const auto& x : r) out += (out.empty() ? "" : ",") + format_value(x);
+  return out;
+}
+
+inline void parse_value(const std::string& text, double& v)
+{
+  std::istringstream in(text);
+  char extra;
+  if(!(in >> v) || (in >> extra) || !std::isfinite(v)) throw std::invalid_argument("a number");
+}
+inline void parse_value(const std::string& text, bool& v)
+{
+  if(text == "true") v = true;
+  else if(text == "false") v = false;
+  else throw std::invalid_argument("true or false");
+}
+template <typename T>
+std::enable_if_t<std::is_integral<T>::value> parse_value(const std::string& text, T& v)
+{
+  double x;
+  parse_value(text, x);
+  if(x < 0 || x != std::floor(x) || x > 1e9) throw std::invalid_argument("a non-negative integer");
+  v = T(x);
+}
+template <typename E>
+std::enable_if_t<std::is_enum<E>::value> parse_value(const std::string& text, E& v)
+{
+  std::string choices;
+  for(const auto& n : enumerator_names(v))
+  {
+    if(text == n.name) { v = n.value; return; }
+    choices += std::string(choices.empty() ? "" : ", ") + n.name;
+  }
+  throw std::invalid_argument("one of " + choices);
+}
+template <typename T>
+void parse_value(const std::string& text, std::vector<T>& v)
+{
+  std::vector<T> out;
+  std::stringstream in(text);
+  for(std::string item; std::getline(in, item, ',');)
+  {
+    out.emplace_back();
+    try { parse_value(item, out.back()); }
+    catch(const std::invalid_argument& e) { throw std::invalid_argument("a comma-separated list of " + std::string(e.what()) + "s"); }
+  }
+  if(out.empty()) throw std::invalid_argument("a comma-separated list");
+  v = out;
+}
+template <typename T, std::size_t N>
+void parse_value(const std::string& text, std::array<T, N>& v)
+{
+  std::vector<T> out;
+  parse_value(text, out);
+  if(out.size() != N) throw std::invalid_argument(std::to_string(N) + " comma-separated values");
+  std::copy(out.begin(), out.end(), v.begin());
 }
 
 } // namespace Part_decomposition_tools

@@ -881,7 +881,8 @@ The stages, each also available on its own: `segment_pieces()`, `compute_flow_fr
 `fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`, then
 the part hierarchy (`build_part_hierarchy()`), whose merges go on from the assigned parts as long
 as they cost less than `maximum_merge_cost`; `Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
-and passed to the stage that reads it; the table below lists them all. The normalization is
+and passed to the stage that reads it; the table below lists them all, as does
+`parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
 
@@ -955,12 +956,22 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, in \f$(0,1)\f$}
     \cgalParamDefault{`0.15`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_density}
+    \cgalParamDescription{if `false` (ablation), the topology score is not weighted by the density term \f$\sqrt{n_i}\f$}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{prior_resolution_cap}
     \cgalParamDescription{the finest resolution of the topology score; finer `voxel_resolutions` only
                           refine the grid of the distance field, the zones and the claims, with the
                           classes of the cap (see `compute_flow_freeze_prior()`). 0: every resolution}
     \cgalParamType{`int`, 0 or one of `voxel_resolutions`}
     \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalization}
+    \cgalParamDescription{the normalization of the mesh into the unit cube; it must be the one `compute_normalization()` computes from `normalization_margin`}
+    \cgalParamType{`Normalization`}
+    \cgalParamDefault{computed by `compute_normalization()`}
   \cgalParamNEnd
   \cgalParamNBegin{normalization_margin}
     \cgalParamDescription{the free margin left on each side of the normalized cube (see `compute_normalization()`)}
@@ -1041,6 +1052,36 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{if `false` (ablation "w/o Body"), only surface seeds are used}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{fitting_resolution_cap}
+    \cgalParamDescription{the cap of the fitting resolution, \f$r_{fit} = \min(r, cap)\f$; 0 stands for the resolution before the finest (see `fitting_resolutions()`)}
+    \cgalParamType{`int`, non-negative}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_exterior_band_samples}
+    \cgalParamDescription{if `false` (ablation), the exterior voxels of the thin outer band are not samples of the fit (\ref PD_Deviations)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_reachable_regions}
+    \cgalParamDescription{if `false` (ablation), regions of interest and claims do not stop at Freeze walls (\ref PD_Deviations)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{use_seed_exclusion}
+    \cgalParamDescription{if `false` (ablation), a rejected seed does not exclude a ball around it from later seeds of its stage (\ref PD_Deviations)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_solver_evaluations}
+    \cgalParamDescription{the residual evaluations of one least-squares solve}
+    \cgalParamType{`int`, positive}
+    \cgalParamDefault{`40`}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_rejections_in_a_row}
+    \cgalParamDescription{the rejected seeds in a row that end a fitting stage (0: never)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`4`}
   \cgalParamNEnd
   \cgalParamNBegin{dihedral_percentile}
     \cgalParamDescription{\f$q\f$: the percentile of the dihedral angles above which edges are cut}

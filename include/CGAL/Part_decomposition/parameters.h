@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -260,6 +261,209 @@ constexpr double residual_tolerance = 2.;
 constexpr double weld_tolerance = 5e-6;
 } // namespace defaults
 
+/*!
+\ingroup PkgPartDecompositionRef
+The stage of the decomposition that reads a named parameter, in the order `decompose()` runs them;
+the programs group their options by it.
+*/
+enum class Parameter_stage
+{
+  READING,           ///< the mesh reader, `IO::read_triangle_mesh()`
+  PIECES,            ///< the pieces and their creases, `segment_pieces()`
+  PRIOR,             ///< the Flow/Freeze prior, `compute_flow_freeze_prior()`
+  DISTANCE_FIELD,    ///< the normalization and the distance field, `compute_tsdf()`
+  FITTING,           ///< the superquadrics, `fit_superquadrics()`
+  OVER_SEGMENTATION, ///< the patches, `over_segment()`
+  ASSIGNMENT,        ///< the parts, `assign_parts()`
+  HIERARCHY,         ///< the part hierarchy and the granularity, `decompose()`
+  OUTPUT             ///< what `decompose()` reports
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+One named parameter of the package, as listed by `parameter_table`.
+*/
+struct Parameter_description
+{
+  const char* name;          ///< the named-parameter function, e.g.\ `"freeze_ratio"`
+  const char* type;          ///< the value type
+  const char* default_value; ///< the default of `defaults`, as the programs print it
+  const char* range;         ///< the rule of the range check ("NAME must be RULE"); empty if none
+  Parameter_stage stage;     ///< the stage that reads it
+  const char* read_by;       ///< the functions that read it
+  bool is_value;             ///< `false` for objects (outputs, a normalization): no option of the programs
+  bool is_ablation;          ///< exists only to undo a documented choice or to reproduce the paper literally
+  const char* meaning;       ///< one line
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+Every named parameter that `decompose()` reads, the package's own and \cgal's
+(`number_of_points_per_face`, `verbose`), and the reader's `weld_tolerance`, in the order of their
+stages. The command-line tool `hitops`, the Python module and the manual's table of parameters
+are made from it; a test checks that they list every entry with the same default.
+*/
+constexpr Parameter_description parameter_table[] = {
+  // name, type, default, range, stage, read by, value, ablation, meaning
+  {"weld_tolerance", "double", "5e-06", "in [0, 0.01]", Parameter_stage::READING,
+   "IO::read_triangle_mesh(), IO::triangle_mesh_from_polygon_soup()", true, false,
+   "border vertices closer than this fraction of the bounding box diagonal are welded; 0: none"},
+  {"use_pieces", "bool", "true", "", Parameter_stage::PIECES, "decompose(), Part_decomposer::assign_parts()", true, true,
+   "the parts follow the pieces of the mesh and their concave creases; false: the paper's volumetric parts alone"},
+  {"crease_angle", "double", "60", "in (0, 180]", Parameter_stage::PIECES, "segment_pieces()", true, false,
+   "the dihedral angle, in degrees, from which a concave edge separates two regions of a piece"},
+  {"minimum_part_area", "double", "0.005", "in [0, 1]", Parameter_stage::PIECES,
+   "decompose(), Part_decomposer::assign_parts()", true, false,
+   "a smaller part (fraction of the mesh area) joins a neighbour"},
+  {"voxel_resolutions", "std::vector<int>", "16,32,64",
+   "a non-empty list of powers of two from 1 to 256, each twice the previous", Parameter_stage::PRIOR,
+   "compute_flow_freeze_prior(), compute_tsdf()", true, false,
+   "R: the grids of the prior, coarse to fine; the finest serves every volume stage"},
+  {"number_of_points_per_face", "unsigned int", "36", "a positive perfect square", Parameter_stage::PRIOR,
+   "compute_topology_score()", true, false, "N_face: the barycentric samples per face"},
+  {"number_of_neighbors", "unsigned int", "8", "a positive integer", Parameter_stage::PRIOR,
+   "compute_face_normal_deviation()", true, false, "k: the nearest faces of the normal deviation cue"},
+  {"curvature_percentile", "double", "99.5", "in [0, 100]", Parameter_stage::PRIOR, "compute_face_curvature_cue()",
+   true, false, "the percentile at which the vertex curvatures are clipped"},
+  {"cue_weights", "std::array<double, 4>", "1,1,1,1", "4 finite numbers", Parameter_stage::PRIOR,
+   "compute_topology_score()", true, false,
+   "lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score"},
+  {"freeze_ratio", "double", "0.15", "in (0, 1)", Parameter_stage::PRIOR, "compute_topology_score()", true, false,
+   "alpha: the fraction of the active voxels frozen at each resolution"},
+  {"use_density", "bool", "true", "", Parameter_stage::PRIOR,
+   "compute_topology_score(), compute_flow_freeze_prior()", true, true,
+   "the topology score is weighted by the density sqrt(n_i); false: the paper's ablation"},
+  {"prior_resolution_cap", "int", "0", "0 or one of voxel_resolutions", Parameter_stage::PRIOR,
+   "compute_flow_freeze_prior()", true, false,
+   "the finest resolution of the topology score (finer ones only refine the grid); 0: every resolution"},
+  {"normalization", "Normalization", "compute_normalization()", "", Parameter_stage::DISTANCE_FIELD,
+   "every stage on the mesh", false, false, "the normalization of the mesh into the unit cube"},
+  {"normalization_margin", "double", "0.03125", "in [0, 0.25]", Parameter_stage::DISTANCE_FIELD,
+   "compute_normalization()", true, false,
+   "the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)"},
+  {"tsdf_truncation", "double", "8", "in (0, 4 * resolution]", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()",
+   true, false, "tau: the truncation of the distance field, in voxels of the finest grid"},
+  {"tsdf_sign_method", "Tsdf_sign_method", "automatic", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true,
+   false, "how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill"},
+  {"flow_zone_tolerance", "double", "2", "non-negative and finite", Parameter_stage::FITTING,
+   "compute_fitting_zones(), fit_superquadrics()", true, false,
+   "the dilation of the Flow zone, in voxels of the fitting resolution"},
+  {"trust_region_scales", "std::vector<double>", "1,0.5,0.25", "a non-empty list of positive numbers",
+   Parameter_stage::FITTING, "fit_superquadrics()", true, false, "eta: the semi-axis trust-region scales of the retries"},
+  {"body_seed_threshold", "double", "1.5", "positive and finite", Parameter_stage::FITTING, "fit_superquadrics()", true,
+   false, "the depth, in voxels of the fitting resolution, below which seeds switch from body to surface"},
+  {"minimum_body_volume", "double", "5", "non-negative and finite", Parameter_stage::FITTING, "fit_superquadrics()",
+   true, false, "V_min of body seeds, in voxels of the fitting resolution"},
+  {"minimum_surface_volume", "double", "3", "non-negative and finite", Parameter_stage::FITTING,
+   "fit_superquadrics()", true, false, "V_min of surface seeds, in voxels of the fitting resolution"},
+  {"exterior_penalty", "double", "5", "non-negative and finite", Parameter_stage::FITTING, "fit_superquadrics()", true,
+   false, "mu_ext: the exterior intrusion penalty"},
+  {"coverage_target", "double", "0.999", "in (0, 1]", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
+   "the claimed fraction of the valid volume that ends a fitting stage"},
+  {"roi_radius", "double", "8", "positive and finite", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
+   "the radius of the region of interest of a seed, in voxels of the fitting resolution"},
+  {"interior_weight_mode", "Interior_weight_mode", "one_shot", "", Parameter_stage::FITTING, "fit_superquadrics()",
+   true, true, "the variance of the interior inlier weight: one_shot, or mps_reestimated as MPS"},
+  {"maximum_number_of_primitives", "std::size_t", "256", "positive", Parameter_stage::FITTING, "fit_superquadrics()",
+   true, false, "a safety cap on the number of fitted superquadrics"},
+  {"use_freeze_zone", "bool", "true", "", Parameter_stage::FITTING, "compute_fitting_zones(), fit_superquadrics()",
+   true, true, "false: the paper's ablation w/o Freeze, Freeze voxels are Flow to the fitter"},
+  {"use_tsdf_guidance", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "false: the paper's ablation w/o TSDF, the fit sees the occupancy only"},
+  {"use_body_seeds", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "false: the paper's ablation w/o Body, surface seeds only"},
+  {"fitting_resolution_cap", "int", "0", "non-negative", Parameter_stage::FITTING,
+   "fitting_resolutions(), fit_superquadrics()", true, false,
+   "r_fit = min(r, cap); 0: the resolution before the finest"},
+  {"use_exterior_band_samples", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "the exterior voxels of the thin outer band are samples of the fit"},
+  {"use_reachable_regions", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "regions of interest and claims stop at Freeze walls"},
+  {"use_seed_exclusion", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "a rejected seed excludes a ball around it from later seeds of its stage"},
+  {"maximum_solver_evaluations", "int", "40", "positive", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
+   "the residual evaluations of one least-squares solve"},
+  {"maximum_rejections_in_a_row", "std::size_t", "4", "non-negative", Parameter_stage::FITTING, "fit_superquadrics()",
+   true, false, "the rejected seeds in a row that end a fitting stage; 0: never"},
+  {"merge_primitives", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
+   "adjacent primitives that one superquadric explains are merged after the fit (not in the paper)"},
+  {"minimum_merge_iou", "double", "0.6", "in (0, 1]", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
+   "the voxel intersection over union from which one superquadric explains two primitives"},
+  {"dihedral_percentile", "double", "90", "in [0, 100]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
+   false, "q: edges whose dihedral angle is above this percentile are cut"},
+  {"smoothing_iterations", "unsigned int", "1", "non-negative", Parameter_stage::OVER_SEGMENTATION, "over_segment()",
+   true, false, "the boundary-smoothing passes of the over-segmentation"},
+  {"minimum_patch_size", "double", "0.001", "in [0, 1]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
+   false, "a smaller patch (fraction of the mesh area) is merged into a neighbour"},
+  {"patch_split_size", "double", "0.0005", "in (0, 1]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
+   false, "a larger patch of smooth surface (fraction of the mesh area) is split"},
+  {"vote_temperature", "double", "1", "positive and finite", Parameter_stage::ASSIGNMENT, "assign_parts()", true,
+   false, "tau_v: the temperature of the patch vote, in voxels of the finest grid"},
+  {"boundary_smoothness", "double", "10", "non-negative and finite", Parameter_stage::ASSIGNMENT, "assign_parts()",
+   true, false, "the cost of a part boundary across smooth surface in the final labelling; 0: the paper's patch vote"},
+  {"keep_residual_patches", "bool", "false", "", Parameter_stage::ASSIGNMENT,
+   "decompose(), Part_decomposer::assign_parts()", true, true,
+   "true: the paper's residual patches, Freeze-dominant patches no primitive explains, are parts of their own"},
+  {"residual_tolerance", "double", "2", "non-negative and finite", Parameter_stage::ASSIGNMENT,
+   "decompose(), Part_decomposer::assign_parts()", true, false,
+   "the mean distance to its primitive, in voxels of the finest grid, from which a patch is residual"},
+  {"merge_thin_sheets", "bool", "true", "", Parameter_stage::ASSIGNMENT,
+   "decompose(), Part_decomposer::assign_parts()", true, true,
+   "adjacent thin, flat parts that meet along smooth edges are merged (not in the paper)"},
+  {"maximum_merge_cost", "double", "0.003", "non-negative and finite", Parameter_stage::HIERARCHY, "decompose()", true,
+   false, "the parts go on merging in the part hierarchy while a merge costs less; 0: none"},
+  {"number_of_parts", "std::size_t", "none", "at least 1", Parameter_stage::HIERARCHY, "decompose()", true, false,
+   "exactly this many parts, a level of the part hierarchy (at most its leaves); none: the default granularity"},
+  {"thin_part_resolution", "int", "0", "0, or a power of two up to 256 at least twice the finest voxel resolution",
+   Parameter_stage::HIERARCHY, "decompose()", true, false,
+   "a finer pass at this resolution whose thin parts replace the default ones; 0: none"},
+  {"part_hierarchy", "Part_hierarchy<GeomTraits>*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false,
+   false, "receives the part hierarchy"},
+  {"primitive_output_iterator", "an output iterator", "none", "", Parameter_stage::OUTPUT, "decompose()", false, false,
+   "receives the superquadric of each part"},
+  {"stage_timings", "Stage_timings*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false, false,
+   "receives the time of each stage"},
+  {"verbose", "bool", "false", "", Parameter_stage::OUTPUT, "decompose()", true, false,
+   "print what each stage does on std::cerr"}};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+constexpr bool same_name(const char* a, const char* b)
+{
+  return *a == *b && (*a == '\0' || same_name(a + 1, b + 1));
+}
+
+// The entry of `name` in parameter_table, or nullptr.
+constexpr const Parameter_description* find_parameter(const char* name)
+{
+  for(const Parameter_description& p : parameter_table)
+    if(same_name(p.name, name)) return &p;
+  return nullptr;
+}
+
+// The rule of the range check of `name`, as the table states it.
+constexpr const char* range_rule(const char* name)
+{
+  return find_parameter(name) == nullptr ? "" : find_parameter(name)->range;
+}
+
+} // namespace internal
+
+// The table cannot miss a named parameter, nor list one that does not exist: it has one entry per
+// tag plus the three of CGAL and of the reader that it adds.
+#define CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY(TYPE, VALUE, FUNCTION)                       \
+  static_assert(internal::find_parameter(#FUNCTION) != nullptr, "parameter_table misses " #FUNCTION);
+CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
+#undef CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY
+#define CGAL_PART_DECOMPOSITION_COUNT_TAG(TYPE, VALUE, FUNCTION) +1
+static_assert(std::size(parameter_table) == 2 CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_COUNT_TAG),
+              "parameter_table lists a parameter that has no tag");
+#undef CGAL_PART_DECOMPOSITION_COUNT_TAG
+static_assert(internal::find_parameter("number_of_points_per_face") && internal::find_parameter("verbose"),
+              "parameter_table misses a parameter of CGAL");
+/// \endcond
+
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {
 #define CGAL_PART_DECOMPOSITION_DECLARE_TAG(TYPE, VALUE, FUNCTION) enum TYPE { VALUE };
@@ -282,62 +486,9 @@ PD::decompose(mesh, part_map,
 \endcode
 
 Which parameter a function reads, its type, range and default are listed in that function's
-documentation; `decompose()` accepts them all and passes each to the stage that reads it. The
-package's parameters are:
-
-| Function | Type | Default | Read by |
-| :------- | :--- | :------ | :------ |
-| `voxel_resolutions()` | `std::vector<int>` | `{16, 32, 64}` | `compute_flow_freeze_prior()`, `compute_tsdf()` |
-| `number_of_neighbors()` | `unsigned int` | 8 | `compute_face_normal_deviation()` |
-| `curvature_percentile()` | `double` | 99.5 | `compute_face_curvature_cue()` |
-| `cue_weights()` | `std::array<double, 4>` | `{1, 1, 1, 1}` | `compute_topology_score()` |
-| `freeze_ratio()` | `double` | 0.15 | `compute_topology_score()` |
-| `use_density()` | `bool` | `true` | `compute_topology_score()`, `compute_flow_freeze_prior()` |
-| `prior_resolution_cap()` | `int` | 0 (every resolution) | `compute_flow_freeze_prior()` |
-| `normalization()` | `Normalization` | `compute_normalization()` | every stage on the mesh |
-| `normalization_margin()` | `double` | 2/64 | `compute_normalization()` |
-| `tsdf_truncation()` | `double` | 8 | `compute_tsdf()` |
-| `tsdf_sign_method()` | `Tsdf_sign_method` | `AUTOMATIC` | `compute_tsdf()` |
-| `flow_zone_tolerance()` | `double` | 2 | `compute_fitting_zones()`, `fit_superquadrics()` |
-| `trust_region_scales()` | `std::vector<double>` | `{1, 0.5, 0.25}` | `fit_superquadrics()` |
-| `body_seed_threshold()` | `double` | 1.5 | `fit_superquadrics()` |
-| `minimum_body_volume()` | `double` | 5 | `fit_superquadrics()` |
-| `minimum_surface_volume()` | `double` | 3 | `fit_superquadrics()` |
-| `exterior_penalty()` | `double` | 5 | `fit_superquadrics()` |
-| `coverage_target()` | `double` | 0.999 | `fit_superquadrics()` |
-| `roi_radius()` | `double` | 8 | `fit_superquadrics()` |
-| `interior_weight_mode()` | `Interior_weight_mode` | `ONE_SHOT` | `fit_superquadrics()` |
-| `maximum_number_of_primitives()` | `std::size_t` | 256 | `fit_superquadrics()` |
-| `use_freeze_zone()` | `bool` | `true` | `compute_fitting_zones()`, `fit_superquadrics()` |
-| `use_tsdf_guidance()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_body_seeds()` | `bool` | `true` | `fit_superquadrics()` |
-| `fitting_resolution_cap()` | `int` | 0 (the resolution before the finest) | `fitting_resolutions()`, `fit_superquadrics()` |
-| `use_exterior_band_samples()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_reachable_regions()` | `bool` | `true` | `fit_superquadrics()` |
-| `use_seed_exclusion()` | `bool` | `true` | `fit_superquadrics()` |
-| `maximum_solver_evaluations()` | `int` | 40 | `fit_superquadrics()` |
-| `maximum_rejections_in_a_row()` | `std::size_t` | 4 | `fit_superquadrics()` |
-| `merge_primitives()` | `bool` | `true` | `fit_superquadrics()` |
-| `minimum_merge_iou()` | `double` | 0.6 | `fit_superquadrics()` |
-| `dihedral_percentile()` | `double` | 90 | `over_segment()` |
-| `smoothing_iterations()` | `unsigned int` | 1 | `over_segment()` |
-| `minimum_patch_size()` | `double` | 0.001 | `over_segment()` |
-| `patch_split_size()` | `double` | 0.0005 | `over_segment()` |
-| `vote_temperature()` | `double` | 1 | `assign_parts()` |
-| `boundary_smoothness()` | `double` | 10 | `assign_parts()` |
-| `merge_thin_sheets()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` (which then call `merge_thin_sheet_parts()`) |
-| `use_pieces()` | `bool` | `true` | `decompose()`, `Part_decomposer::assign_parts()` |
-| `crease_angle()` | `double` | 60 | `segment_pieces()` |
-| `minimum_part_area()` | `double` | 0.005 | `decompose()`, `Part_decomposer::assign_parts()` |
-| `number_of_parts()` | `std::size_t` | none (the default granularity) | `decompose()` |
-| `maximum_merge_cost()` | `double` | 0.003 | `decompose()` |
-| `part_hierarchy()` | `Part_hierarchy<GeomTraits>*` | `nullptr` | `decompose()` |
-| `thin_part_resolution()` | `int` | 0 (no finer pass) | `decompose()` |
-| `keep_residual_patches()` | `bool` | `false` | `decompose()`, `Part_decomposer::assign_parts()` |
-| `residual_tolerance()` | `double` | 2 | `decompose()`, `Part_decomposer::assign_parts()` |
-| `weld_tolerance()` | `double` | \f$5 \cdot 10^{-6}\f$ | `IO::read_triangle_mesh()`, `IO::triangle_mesh_from_polygon_soup()` |
-| `primitive_output_iterator()` | an output iterator | none | `decompose()` |
-| `stage_timings()` | `Stage_timings*` | `nullptr` | `decompose()` |
+documentation; `decompose()` accepts them all and passes each to the stage that reads it. Every
+parameter, with its type, default, range, meaning and the functions that read it, is in
+`parameter_table`, from which the manual's table (\ref PD_Parameters) is made.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
 `dihedral_quantile()` and `maximum_patch_size()`, the former names of `dihedral_percentile()` and

@@ -1,0 +1,127 @@
+"""The parameters cannot drift apart: every entry of the library's parameter_table (as
+`hitops --list-parameters` prints it) has a hitops option of its name in `hitops --help` and a
+Python keyword with the same default, decompose()'s reference documents it, and the manual's
+table is the one doc/Part_decomposition/tools/parameter_table.py makes. Needs PD_HITOPS."""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import pytest
+
+import part_decomposition as pd
+
+HITOPS = os.environ.get("PD_HITOPS")
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+DATA = os.environ.get("PD_EXAMPLE_DATA_DIR", os.path.join(ROOT, "examples", "Part_decomposition", "data"))
+
+pytestmark = pytest.mark.skipif(not HITOPS, reason="PD_HITOPS (the hitops tool) not given")
+
+
+def run(*arguments):
+    return subprocess.run([HITOPS] + list(arguments), check=True, stdout=subprocess.PIPE,
+                          universal_newlines=True).stdout
+
+
+@pytest.fixture(scope="module")
+def table():
+    lines = run("--list-parameters").rstrip("\n").split("\n")
+    header = lines[0].split("\t")
+    rows = [dict(zip(header, line.split("\t"))) for line in lines[1:]]
+    assert len(rows) >= 50
+    return rows
+
+
+@pytest.fixture(scope="module")
+def help_options():
+    """option -> the default that `hitops --help` shows for it, from the lines '  --option DEFAULT  meaning'."""
+    options = {}
+    for line in run("--help").split("\n"):
+        m = re.match(r"^  (--[a-z0-9-]+) (\S+)\s{2,}\S", line)
+        if m:
+            assert m.group(1) not in options, "%s is listed twice" % m.group(1)
+            options[m.group(1)] = m.group(2)
+    return options
+
+
+def python_value(row, text):
+    """The Python keyword value of the text of a hitops option."""
+    if text == "none":
+        return None
+    if row["type"] == "bool":
+        return {"true": True, "false": False}[text]
+    if row["type"] in ("Tsdf_sign_method", "Interior_weight_mode"):
+        return text
+    if row["type"].startswith("std::vector") or row["type"].startswith("std::array"):
+        return [float(x) for x in text.split(",")]
+    return float(text)
+
+
+def test_every_parameter_has_an_option_named_as_it_with_its_default(table, help_options):
+    values = [row for row in table if row["option"]]
+    for row in values:
+        assert row["option"] == "--" + row["name"].replace("_", "-")
+        assert row["option"] in help_options, "hitops --help does not list " + row["option"]
+        assert help_options[row["option"]] == row["default"], row["name"]
+        # the library's table states the default that the programs use
+        assert row["table_default"] == row["default"], row["name"]
+    # the objects (outputs, a normalization) are the only parameters without an option
+    assert {row["name"] for row in table if not row["option"]} == {
+        "normalization", "part_hierarchy", "primitive_output_iterator", "stage_timings"}
+
+
+def test_every_parameter_is_a_python_keyword_with_the_same_default(table, help_options):
+    values = [row for row in table if row["option"]]
+    for row in values:
+        assert row["name"] in pd.DEFAULTS, "no Python keyword " + row["name"]
+        default = pd.DEFAULTS[row["name"]]
+        expected = python_value(row, help_options[row["option"]])
+        if isinstance(default, (list, tuple)):
+            default = [float(x) for x in default]
+        assert default == expected, row["name"]
+    # the module's own keyword is the only one outside the table
+    assert set(pd.DEFAULTS) - {row["name"] for row in values} == {"threads"}
+
+
+def test_decompose_documents_every_parameter(table):
+    with open(os.path.join(ROOT, "include", "CGAL", "Part_decomposition", "decompose.h"), encoding="utf-8") as f:
+        reference = f.read()
+    for row in table:
+        if row["name"] != "weld_tolerance":  # read by the mesh reader, not by decompose()
+            assert "\\cgalParamNBegin{%s}" % row["name"] in reference, row["name"]
+
+
+def test_the_manual_has_the_generated_table(table):
+    script = os.path.join(ROOT, "doc", "Part_decomposition", "tools", "parameter_table.py")
+    subprocess.run([sys.executable, script, HITOPS, "--check"], check=True)
+    with open(os.path.join(ROOT, "doc", "Part_decomposition", "Part_decomposition.txt"), encoding="utf-8") as f:
+        manual = f.read()
+    for row in table:
+        assert "| `%s` |" % row["name"] in manual, row["name"]
+
+
+def test_former_spellings_give_the_same_labels():
+    path = os.path.join(DATA, "dumbbell.off")
+    labels = []
+    with tempfile.TemporaryDirectory() as d:
+        for k, options in enumerate([
+                ["--no-pieces", "--max-merge-cost", "0.01", "--resolutions", "16,32", "--sign-method", "flood"],
+                ["--use-pieces", "false", "--maximum-merge-cost", "0.01", "--voxel-resolutions", "16,32",
+                 "--tsdf-sign-method", "flood_fill"]]):
+            seg = os.path.join(d, "%d.seg" % k)
+            run(path, "--labels", seg, "--threads", "2", *options)
+            labels.append(np.loadtxt(seg, dtype=np.int64))
+    assert (labels[0] == labels[1]).all()
+
+
+def test_bad_option_values_name_the_option():
+    for options, message in [(["--use-pieces", "no"], "--use-pieces expects true or false"),
+                             (["--tsdf-sign-method", "ray"], "--tsdf-sign-method expects one of automatic"),
+                             (["--cue-weights", "1,1"], "--cue-weights expects 4 comma-separated values"),
+                             (["--parts", "0"], "--parts expects at least 1")]:
+        r = subprocess.run([HITOPS, os.path.join(DATA, "dumbbell.off")] + options, stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, universal_newlines=True)
+        assert r.returncode == 1 and message in r.stderr, (options, r.stderr)
