@@ -94,10 +94,10 @@ def test_decompose_documents_every_parameter(table):
             assert "\\cgalParamNBegin{%s}" % row["name"] in reference, row["name"]
 
 
-def test_the_manual_has_the_generated_table(table):
+def test_the_reference_page_has_the_generated_table(table):
     script = os.path.join(ROOT, "doc", "Part_decomposition", "tools", "parameter_table.py")
     subprocess.run([sys.executable, script, HITOPS, "--check"], check=True)
-    with open(os.path.join(ROOT, "doc", "Part_decomposition", "Part_decomposition.txt"), encoding="utf-8") as f:
+    with open(os.path.join(ROOT, "doc", "Part_decomposition", "parameter_table.txt"), encoding="utf-8") as f:
         manual = f.read()
     for row in table:
         assert "| `%s` |" % row["name"] in manual, row["name"]

@@ -1,19 +1,19 @@
 #!/usr/bin/env python3
-"""Writes the table of parameters of the manual (section PD_Parameters of Part_decomposition.txt)
+"""Writes the table of parameters of the reference page PD_ParameterTable (parameter_table.txt)
 from the library's parameter_table, as `hitops --list-parameters` prints it.
 
-    parameter_table.py HITOPS           rewrites the table in the manual
-    parameter_table.py HITOPS --check   exits with status 1 if the manual's table is not the one made
+    parameter_table.py HITOPS           rewrites the table of the page
+    parameter_table.py HITOPS --check   exits with status 1 if the page's table is not the one made
 
-The table lies between two HTML comments of the manual (MARK_BEGIN, MARK_END); nothing else changes.
-The pytest suite runs the check, so that the manual cannot drift from the library.
+The table lies between two HTML comments of the page (MARK_BEGIN, MARK_END); nothing else changes.
+The pytest suite runs the check, so that the page cannot drift from the library.
 """
 
 import os
 import subprocess
 import sys
 
-MANUAL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Part_decomposition.txt")
+PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "parameter_table.txt")
 MARK_BEGIN = "<!-- parameter table: made by tools/parameter_table.py from parameter_table, do not edit -->"
 MARK_END = "<!-- end of the parameter table -->"
 
@@ -56,16 +56,16 @@ def make_table(rows):
 def main(argv):
     if len(argv) not in (2, 3) or (len(argv) == 3 and argv[2] != "--check"):
         sys.exit(__doc__)
-    with open(MANUAL, encoding="utf-8") as f:
+    with open(PAGE, encoding="utf-8") as f:
         manual = f.read()
     begin, end = manual.index(MARK_BEGIN) + len(MARK_BEGIN) + 1, manual.index(MARK_END)
     made = manual[:begin] + make_table(read_rows(argv[1])) + manual[end:]
     if len(argv) == 3:
         if made != manual:
             sys.exit("the parameter table of %s is not the one made from the library: run %s %s" %
-                     (os.path.normpath(MANUAL), sys.argv[0], argv[1]))
+                     (os.path.normpath(PAGE), sys.argv[0], argv[1]))
         return
-    with open(MANUAL, "w", encoding="utf-8") as f:
+    with open(PAGE, "w", encoding="utf-8") as f:
         f.write(made)
 
 
