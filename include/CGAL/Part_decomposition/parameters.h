@@ -488,7 +488,7 @@ PD::decompose(mesh, part_map,
 Which parameter a function reads, its type, range and default are listed in that function's
 documentation; `decompose()` accepts them all and passes each to the stage that reads it. Every
 parameter, with its type, default, range, meaning and the functions that read it, is in
-`parameter_table`, from which the manual's table (\ref PD_Parameters) is made.
+`parameter_table`, from which the reference page \ref PD_ParameterTable is made.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
 `dihedral_quantile()` and `maximum_patch_size()`, the former names of `dihedral_percentile()` and
