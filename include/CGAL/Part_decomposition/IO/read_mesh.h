@@ -26,7 +26,6 @@
 
 #include <CGAL/IO/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
