@@ -901,6 +901,32 @@ TEST_CASE("OBJ: every statement but v and f skipped, also a group name holding f
   CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(6.));
 }
 
+TEST_CASE("a UTF-8 byte-order mark before an OFF, OBJ or PLY file is skipped", "[io][off][obj][ply]")
+{
+  const std::string bom = "\xEF\xBB\xBF";
+  std::ostringstream off, obj, ply;
+  off << "OFF\n4 4 0\n";
+  ply << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  for(const auto& p : tet_points)
+  {
+    off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    obj << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    ply << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  }
+  for(const auto& f : tet_faces)
+  {
+    off << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+    obj << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+    ply << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+  }
+  check_tetrahedron(write_temp("bom.off", bom + off.str()));
+  check_tetrahedron(write_temp("bom.obj", bom + obj.str()));
+  check_tetrahedron(write_temp("bom.ply", bom + ply.str()));
+  // only at the start: a mark in the middle is still an error, with its line
+  CHECK(read_message(write_temp("bom_middle.obj", obj.str() + bom + "v 0 0 0\n")).find("line 9") != std::string::npos);
+}
+
 TEST_CASE("OBJ: a statement continued on the next line after a backslash", "[io][obj]")
 {
   // a box of six quads, as Rhino writes long faces: "f 1 2 \" then "3 4"

@@ -32,6 +32,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Dynamic_property_map.h>
 
+#include <cstring>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_sort.h>
 #endif
@@ -237,9 +239,13 @@ inline void parse_polygon_soup(const std::string& filename, Polygon_soup_arrays&
     // CGAL's OFF and PLY parsers have undefined behaviour or allocate without bound on some
     // broken files, its STL reader looks every corner up in a std::map, and its OBJ reader
     // refuses valid files and reads a stream: every format is read by our own parsers.
-    if(extension == "off") Off_soup_reader(contents.begin(), contents.end()).read(soup);
-    else if(extension == "obj") Obj_soup_reader(contents.begin(), contents.end()).read(soup);
-    else if(extension == "ply") Ply_soup_reader(contents.begin(), contents.end()).read(soup);
+    // Windows tools may start a text file with a UTF-8 byte-order mark (not STL: its binary
+    // header is any 80 bytes; JSON skips it itself)
+    const char* text = contents.begin();
+    if(contents.size >= 3 && std::memcmp(text, "\xEF\xBB\xBF", 3) == 0) text += 3;
+    if(extension == "off") Off_soup_reader(text, contents.end()).read(soup);
+    else if(extension == "obj") Obj_soup_reader(text, contents.end()).read(soup);
+    else if(extension == "ply") Ply_soup_reader(text, contents.end()).read(soup);
     else if(extension == "stl") Stl_soup_reader(contents.begin(), contents.end()).read(soup);
     else read_gltf_soup(filename, contents, soup);
   }
