@@ -456,9 +456,10 @@ Result run(const Mesh& mesh, const Options& o)
   return r;
 }
 
-void write_labels(std::ostream& out, const PD::IO::Mesh_file_info& info, const Result& r)
+// `file_labels`: the part of each face of the file, in its order (labels_in_file_order()).
+void write_labels(std::ostream& out, const std::vector<std::size_t>& file_labels)
 {
-  for(std::size_t label : PD::IO::labels_in_file_order(info, r.face_part)) out << label << '\n';
+  for(std::size_t label : file_labels) out << label << '\n';
 }
 
 void write_colored(std::ostream& out, const Mesh& mesh, const Result& r)
@@ -578,20 +579,20 @@ int single(const Options& o)
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Result r = run(mesh, o);
 
+  const std::vector<std::size_t> file_labels = PD::IO::labels_in_file_order(info, r.face_part);
   Atomic_outputs outputs;
-  if(!o.labels.empty()) write_labels(outputs.open(o.labels), info, r);
+  if(!o.labels.empty()) write_labels(outputs.open(o.labels), file_labels);
   if(!o.colored.empty()) write_colored(outputs.open(o.colored), mesh, r);
   if(!o.primitives.empty()) write_primitives(outputs.open(o.primitives), r);
   if(!o.primitive_mesh.empty()) write_primitive_mesh(outputs.open(o.primitive_mesh), r);
   if(!o.hierarchy.empty()) write_hierarchy(outputs.open(o.hierarchy), info, r);
   const std::vector<Superquadric> glb_primitives = o.parts_glb_primitives ? r.primitives : std::vector<Superquadric>();
   if(!o.parts_glb.empty() && PD::internal::is_gltf_file(o.input))
-    PD::IO::write_gltf_parts_glb(outputs.open(o.parts_glb), o.input, PD::IO::labels_in_file_order(info, r.face_part),
-                                 r.parts, glb_primitives);
+    PD::IO::write_gltf_parts_glb(outputs.open(o.parts_glb), o.input, file_labels, r.parts, glb_primitives);
   else if(!o.parts_glb.empty())
     PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts, glb_primitives);
   if(!o.labels_glb.empty())
-    PD::IO::write_labels_glb(outputs.open(o.labels_glb), o.input, PD::IO::labels_in_file_order(info, r.face_part), r.parts);
+    PD::IO::write_labels_glb(outputs.open(o.labels_glb), o.input, file_labels, r.parts);
   outputs.commit();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);
@@ -655,7 +656,7 @@ Mesh_outcome decompose_one(const Options& o, const std::string& path, const std:
     if(o.decomposition.verbose) print_reading(info);
     const Result r = run(mesh, o);
     Atomic_outputs outputs;
-    write_labels(outputs.open(seg), info, r);
+    write_labels(outputs.open(seg), PD::IO::labels_in_file_order(info, r.face_part));
     write_primitives(outputs.open(json), r);
     outputs.commit();
     if(o.timings) print_timings(path, mesh, r, 0.);
