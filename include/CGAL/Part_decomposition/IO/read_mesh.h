@@ -145,11 +145,22 @@ inline void read_gltf_soup(const std::string& filename, const File_contents& con
 #endif
 }
 
+// The format of a file extension, as the messages name it; empty if the package reads none.
+inline std::string format_of_extension(const std::string& extension)
+{
+  if(extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
+  {
+    std::string name = extension;
+    for(char& c : name) c = char(c - 'a' + 'A');
+    return name;
+  }
+  return extension == "gltf" || extension == "glb" ? "glTF" : std::string();
+}
+
 // Whether the file is read as glTF.
 inline bool is_gltf_file(const std::string& filename)
 {
-  const std::string extension = CGAL::IO::internal::get_file_extension(filename);
-  return extension == "gltf" || extension == "glb";
+  return format_of_extension(CGAL::IO::internal::get_file_extension(filename)) == "glTF";
 }
 
 #ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
@@ -205,18 +216,6 @@ inline void check_file_labels(const std::vector<std::size_t>& labels, std::size_
     if(k >= number_of_labels)
       throw std::invalid_argument(std::string(what) + ": label " + std::to_string(k) + " is not below the number of labels, " +
                                   std::to_string(number_of_labels));
-}
-
-// The format of a file extension, as the messages name it; empty if the package reads none.
-inline std::string format_of_extension(const std::string& extension)
-{
-  if(extension == "off" || extension == "obj" || extension == "ply" || extension == "stl")
-  {
-    std::string name = extension;
-    for(char& c : name) c = char(c - 'a' + 'A');
-    return name;
-  }
-  return extension == "gltf" || extension == "glb" ? "glTF" : std::string();
 }
 
 // Parses the file into `soup`; throws UNREADABLE_FILE, saying where and why, if it cannot.
