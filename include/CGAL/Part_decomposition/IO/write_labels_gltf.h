@@ -54,12 +54,9 @@ inline void labelled_soup_document(const std::string& filename, const std::vecto
   std::vector<float> positions;
   for(std::size_t j = 0; j < v.label.size(); ++j)
     for(double x : soup.points[j < soup.points.size() ? j : v.duplicated[j - soup.points.size()]]) positions.push_back(float(x));
-  std::vector<std::uint32_t> indices;
-  for(const std::array<std::size_t, 3>& c : v.corners)
-    for(std::size_t k : c) indices.push_back(std::uint32_t(k));
   Json primitive = {{"attributes", {{"POSITION", out.add_floats(positions, 3, true)},
                                     {"_FEATURE_ID_0", out.add_feature_ids(v.label, number_of_labels)}}},
-                    {"indices", out.add_indices(indices)}, {"mode", 4},
+                    {"indices", out.add_indices(corner_indices(v))}, {"mode", 4},
                     {"extensions", {{"EXT_mesh_features", {{"featureIds", Json::array({Json{{"featureCount", number_of_labels}, {"attribute", 0}}})}}}}}};
   out.gltf["asset"] = output_asset(nullptr);
   out.gltf["scene"] = 0;

@@ -69,6 +69,16 @@ inline Labelled_vertices label_vertices(std::size_t number_of_vertices,
   return out;
 }
 
+// The corners of the triangles of `v`, three per triangle, as glTF indices.
+inline std::vector<std::uint32_t> corner_indices(const Labelled_vertices& v)
+{
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * v.corners.size());
+  for(const std::array<std::size_t, 3>& c : v.corners)
+    for(std::size_t k : c) indices.push_back(std::uint32_t(k));
+  return indices;
+}
+
 #ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
 
 // Accessor `i` of the source extended to the vertices and duplicates of `v`, in a buffer view of
@@ -99,11 +109,7 @@ inline void add_duplicated_vertices(const Gltf_source& source, std::size_t numbe
   extend(primitive["attributes"]);
   if(primitive.contains("targets") && primitive["targets"].is_array())
     for(Glb_builder::Json& target : primitive["targets"]) extend(target);
-  std::vector<std::uint32_t> indices;
-  indices.reserve(3 * v.corners.size());
-  for(const std::array<std::size_t, 3>& c : v.corners)
-    for(std::size_t k : c) indices.push_back(std::uint32_t(k));
-  primitive["indices"] = out.add_indices(indices);
+  primitive["indices"] = out.add_indices(corner_indices(v));
   primitive["mode"] = 4;
 }
 
