@@ -90,15 +90,11 @@ Gltf_triangles superquadric_triangles(const Superquadric<GeomTraits>& q, int res
 template <typename T>
 std::size_t append_aligned(std::string& bin, const std::vector<T>& v)
 {
-  static_assert(sizeof(T) == 4, "32-bit components");
   while(bin.size() % 4) bin += '\0';
   const std::size_t offset = bin.size();
-  for(const T& x : v)
-  {
-    std::uint32_t u;
-    std::memcpy(&u, &x, 4);
-    for(int k = 0; k < 4; ++k) bin += char((u >> (8 * k)) & 0xff);
-  }
+  std::vector<unsigned char> bytes(4 * v.size());
+  store_le32(v.data(), v.size(), bytes.data());
+  bin.append(bytes.begin(), bytes.end());
   return offset;
 }
 

@@ -26,6 +26,19 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
+// 32-bit values (floats or integers) as little-endian bytes, glTF's byte order whatever the host's.
+template <typename T>
+void store_le32(const T* v, std::size_t n, unsigned char* out)
+{
+  static_assert(sizeof(T) == 4, "32-bit values");
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    std::uint32_t u;
+    std::memcpy(&u, v + i, 4);
+    for(int k = 0; k < 4; ++k) out[4 * i + std::size_t(k)] = (unsigned char)((u >> (8 * k)) & 0xff);
+  }
+}
+
 // A GLB file: the header, the JSON chunk (padded with spaces) and the BIN chunk (padded with
 // zeros, left out if empty), little-endian whatever the host's byte order.
 inline void write_glb_container(std::ostream& out, std::string json, std::string bin)
@@ -114,7 +127,7 @@ public:
       accessor["max"] = hi;
     }
     return add_vertex_attribute(std::move(accessor), v.size() / components, 4 * components,
-                                [&](std::size_t i, unsigned char* out) { store_le(v.data() + i * components, components, out); });
+                                [&](std::size_t i, unsigned char* out) { store_le32(v.data() + i * components, components, out); });
   }
 
   // Triangle indices, as 16-bit unsigned integers if they fit (half the bytes), else 32-bit.
@@ -141,7 +154,7 @@ public:
                                   if(type == 5126)
                                   {
                                     const float f = float(ids[i]);
-                                    store_le(&f, 1, out);
+                                    store_le32(&f, 1, out);
                                   }
                                   else
                                     for(std::size_t k = 0; k < size; ++k) out[k] = (unsigned char)((ids[i] >> (8 * k)) & 0xff);
@@ -162,19 +175,6 @@ public:
   {
     if(!m_bin.empty()) gltf["buffers"] = Json::array({Json{{"byteLength", m_bin.size()}}});
     write_glb_container(out, gltf.dump(), m_bin);
-  }
-
-  // 32-bit values (floats or integers) as little-endian bytes.
-  template <typename T>
-  static void store_le(const T* v, std::size_t n, unsigned char* out)
-  {
-    static_assert(sizeof(T) == 4, "32-bit values");
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      std::uint32_t u;
-      std::memcpy(&u, v + i, 4);
-      for(int k = 0; k < 4; ++k) out[4 * i + std::size_t(k)] = (unsigned char)((u >> (8 * k)) & 0xff);
-    }
   }
 
 private:
