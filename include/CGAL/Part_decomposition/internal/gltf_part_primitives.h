@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/internal/gltf_source.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -60,8 +61,10 @@ inline std::vector<float> world_attribute(Part_attribute kind, const Gltf_soup_r
     for(std::size_t c = 0; c < a.components; ++c) x[c] = R::component(a, v, c);
     std::array<double, 4> y = x;
     if(kind == Part_attribute::POSITION || kind == Part_attribute::TANGENT)
-      for(int r = 0; r < 3; ++r)
-        y[r] = w[r] * x[0] + w[4 + r] * x[1] + w[8 + r] * x[2] + (kind == Part_attribute::POSITION ? w[12 + r] : 0.);
+    {
+      const std::array<double, 3> q = R::apply(w, x[0], x[1], x[2], kind == Part_attribute::POSITION ? 1. : 0.);
+      std::copy(q.begin(), q.end(), y.begin());
+    }
     if(kind == Part_attribute::NORMAL && det != 0.)
       for(int r = 0; r < 3; ++r) y[r] = (cof[0][r] * x[0] + cof[1][r] * x[1] + cof[2][r] * x[2]) * (det < 0. ? -1. : 1.);
     if(kind == Part_attribute::NORMAL || kind == Part_attribute::TANGENT)

@@ -280,6 +280,13 @@ public:
     }
   }
 
+  // m (x, y, z, h): a point for h = 1, a direction (the linear part alone) for h = 0.
+  static std::array<double, 3> apply(const Matrix& m, double x, double y, double z, double h)
+  {
+    return {{m[0] * x + m[4] * y + m[8] * z + m[12] * h, m[1] * x + m[5] * y + m[9] * z + m[13] * h,
+             m[2] * x + m[6] * y + m[10] * z + m[14] * h}};
+  }
+
   // The determinant of the linear part of a transform.
   static double determinant(const Matrix& m)
   {
@@ -634,9 +641,9 @@ private:
     const std::size_t base = soup.number_of_points();
     for(std::size_t i = 0; i < p.positions.count; ++i)
     {
-      const double x = component(p.positions, i, 0), y = component(p.positions, i, 1), z = component(p.positions, i, 2);
-      soup.add_point(w[0] * x + w[4] * y + w[8] * z + w[12], w[1] * x + w[5] * y + w[9] * z + w[13],
-                     w[2] * x + w[6] * y + w[10] * z + w[14]);
+      const std::array<double, 3> q =
+        apply(w, component(p.positions, i, 0), component(p.positions, i, 1), component(p.positions, i, 2), 1.);
+      soup.add_point(q[0], q[1], q[2]);
     }
     for(std::array<std::uint64_t, 3> c : p.triangles)
     {
