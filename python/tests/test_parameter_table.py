@@ -94,6 +94,45 @@ def test_decompose_documents_every_parameter(table):
             assert "\\cgalParamNBegin{%s}" % row["name"] in reference, row["name"]
 
 
+def violating_value(row):
+    """A value outside the row's range that the option parser accepts, or None for rules not of this form."""
+    rule, integer = row["range"], row["type"] in ("int", "unsigned int", "std::size_t")
+    m = re.fullmatch(r"in ([\[(])(-?[0-9.]+), ([0-9.]+)([\])])", rule)
+    if m:
+        low, high = float(m.group(2)), float(m.group(3))
+        value = low if m.group(1) == "(" else (high * 2 + 1 if m.group(4) == "]" else high)
+    elif rule.startswith("positive"):
+        value = 0
+    elif rule.startswith("non-negative") and not integer:
+        value = -1
+    else:
+        return None
+    return str(int(value)) if integer else repr(float(value))
+
+
+def test_the_range_checks_state_the_ranges_of_the_table(table):
+    """The library's range checks take their rule from the table: "NAME must be RANGE"."""
+    checked = 0
+    for row in table:
+        value = violating_value(row) if row["option"] else None
+        if value is None:
+            continue
+        r = subprocess.run([HITOPS, os.path.join(DATA, "dumbbell.off"), row["option"], value],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        message = "%s must be %s" % (row["name"], row["range"])
+        assert r.returncode == 1 and message in r.stderr, (row["name"], value, r.stderr)
+        checked += 1
+    assert checked >= 20
+
+
+def test_the_defaults_are_made_from_the_table():
+    script = os.path.join(ROOT, "doc", "Part_decomposition", "tools", "parameter_table.py")
+    subprocess.run([sys.executable, script, HITOPS, "--check"], check=True)
+    with open(os.path.join(ROOT, "include", "CGAL", "Part_decomposition", "parameters.h"), encoding="utf-8") as f:
+        header = f.read()
+    assert "constexpr double freeze_ratio = 0.15;" in header
+
+
 def test_the_reference_page_has_the_generated_table(table):
     script = os.path.join(ROOT, "doc", "Part_decomposition", "tools", "parameter_table.py")
     subprocess.run([sys.executable, script, HITOPS, "--check"], check=True)

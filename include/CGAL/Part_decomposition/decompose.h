@@ -486,7 +486,7 @@ public:
     CGAL_precondition(m_has_hierarchy);
     if(!m_has_hierarchy)
       throw std::logic_error("Part_decomposer::parts_at_level() needs the hierarchy");
-    internal::check_parameter(k >= 1, "number_of_parts", "at least 1");
+    internal::check_parameter(k >= 1, "number_of_parts");
     k = (std::min)(k, m_hierarchy.number_of_leaves());
     internal::put_face_values(m_tm, m_fim, m_hierarchy.labels(k), face_part_map);
     for(std::size_t n : m_hierarchy.level(k)) *primitives++ = m_hierarchy.nodes[n].primitive;
@@ -859,7 +859,7 @@ int read_thin_part_resolution(const NamedParameters& np)
   const int r = choose_parameter(get_parameter(np, internal_np::thin_part_resolution), defaults::thin_part_resolution);
   if(r == 0) return 0;
   check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * read_voxel_resolutions(np).back(),
-                  "thin_part_resolution", "0, or a power of two up to 256 at least twice the finest voxel resolution");
+                  "thin_part_resolution");
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   check_parameter(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::number_of_parts_t>::value &&
                     choose_parameter(get_parameter(np, internal_np::part_hierarchy),

@@ -34,7 +34,7 @@ namespace internal {
 // half the only resolution.
 inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolutions, int cap = 0)
 {
-  check_parameter(cap >= 0, "fitting_resolution_cap", "non-negative");
+  check_parameter(cap >= 0, "fitting_resolution_cap");
   std::vector<int> out;
   if(resolutions.empty()) return out;
   if(cap == 0)

@@ -333,7 +333,7 @@ Prior_parameters read_prior_parameters(const NamedParameters& np)
   Prior_parameters p{read_voxel_resolutions(np), read_cue_parameters(np), read_topology_score_parameters(np), {}};
   const int cap = int(choose_parameter(get_parameter(np, internal_np::prior_resolution_cap), defaults::prior_resolution_cap));
   check_parameter(cap == 0 || std::find(p.resolutions.begin(), p.resolutions.end(), cap) != p.resolutions.end(),
-                  "prior_resolution_cap", "0 or one of voxel_resolutions");
+                  "prior_resolution_cap");
   for(int r : p.resolutions)
     if(cap == 0 || r <= cap) p.scored_resolutions.push_back(r);
   return p;

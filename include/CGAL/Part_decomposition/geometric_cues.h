@@ -58,9 +58,9 @@ Cue_parameters read_cue_parameters(const NamedParameters& np)
   Cue_parameters p;
   p.curvature_percentile =
     double(choose_parameter(get_parameter(np, internal_np::curvature_percentile), defaults::curvature_percentile));
-  check_parameter(p.curvature_percentile >= 0. && p.curvature_percentile <= 100., "curvature_percentile", "in [0, 100]");
+  check_parameter(p.curvature_percentile >= 0. && p.curvature_percentile <= 100., "curvature_percentile");
   const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), defaults::number_of_neighbors));
-  check_parameter(k >= 1. && k <= 1e6 && k == std::floor(k), "number_of_neighbors", "a positive integer");
+  check_parameter(k >= 1. && k <= 1e6 && k == std::floor(k), "number_of_neighbors");
   p.number_of_neighbors = std::size_t(k);
   return p;
 }

@@ -97,7 +97,7 @@ Normalization_parameters read_normalization_parameters(const NamedParameters& np
   using CGAL::parameters::get_parameter;
   Normalization_parameters p;
   p.margin = double(choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin));
-  check_parameter(p.margin >= 0. && p.margin <= 0.25, "normalization_margin", "in [0, 0.25]");
+  check_parameter(p.margin >= 0. && p.margin <= 0.25, "normalization_margin");
   return p;
 }
 

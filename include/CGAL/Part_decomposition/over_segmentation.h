@@ -115,10 +115,10 @@ Over_segmentation_parameters read_over_segmentation_parameters(const NamedParame
   p.minimum_patch_size = choose_parameter(get_parameter(np, inp::minimum_patch_size), p.minimum_patch_size);
   p.patch_split_size = choose_parameter(get_parameter(np, inp::patch_split_size), p.patch_split_size);
   p.smoothing_iterations = choose_parameter(get_parameter(np, inp::smoothing_iterations), p.smoothing_iterations);
-  check_parameter(p.dihedral_percentile >= 0. && p.dihedral_percentile <= 100., "dihedral_percentile", "in [0, 100]");
-  check_parameter(p.minimum_patch_size >= 0. && p.minimum_patch_size <= 1., "minimum_patch_size", "in [0, 1]");
-  check_parameter(p.patch_split_size > 0. && p.patch_split_size <= 1., "patch_split_size", "in (0, 1]");
-  check_parameter(p.smoothing_iterations >= 0, "smoothing_iterations", "non-negative");
+  check_parameter(p.dihedral_percentile >= 0. && p.dihedral_percentile <= 100., "dihedral_percentile");
+  check_parameter(p.minimum_patch_size >= 0. && p.minimum_patch_size <= 1., "minimum_patch_size");
+  check_parameter(p.patch_split_size > 0. && p.patch_split_size <= 1., "patch_split_size");
+  check_parameter(p.smoothing_iterations >= 0, "smoothing_iterations");
   return p;
 }
 

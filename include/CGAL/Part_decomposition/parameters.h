@@ -158,107 +158,109 @@ enum class Interior_weight_mode
 \ingroup PkgPartDecompositionRef
 The default value of each named parameter of the package: the paper's Table A.1 where
 it gives one, the choices of this implementation (documented with the functions that read them)
-elsewhere. Every function of the package takes its defaults from here.
+elsewhere. Every function of the package takes its defaults from here. The namespace is made from
+`parameter_table` (by `doc/Part_decomposition/tools/parameter_table.py`), a list as a function
+that returns it.
 */
 namespace defaults {
-/// \f$R\f$, the resolutions of the prior
-inline std::vector<int> voxel_resolutions() { return {16, 32, 64}; }
-/// \f$N_{face}\f$, barycentric samples per face
-constexpr unsigned int number_of_points_per_face = 36;
-/// \f$k\f$, the neighbours of the normal deviation cue
-constexpr unsigned int number_of_neighbors = 8;
-/// the percentile at which the vertex curvature is clipped
-constexpr double curvature_percentile = 99.5;
-/// \f$\lambda\f$, the cue weights of the topology score
-constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
-/// \f$\alpha\f$, the Freeze ratio
-constexpr double freeze_ratio = 0.15;
-/// whether the topology score is weighted by the density term \f$\sqrt{n_i}\f$
-constexpr bool use_density = true;
-/// the finest resolution of the topology score, 0: every resolution of the prior
-constexpr int prior_resolution_cap = 0;
-/// the free margin of the normalization, two voxels of the \f$64^3\f$ grid
-constexpr double normalization_margin = 2. / 64.;
-/// \f$\tau\f$, the truncation of the distance field, in voxels of the finest grid
-constexpr double tsdf_truncation = 8.;
-/// how the sign of the distance field is decided
-constexpr Tsdf_sign_method tsdf_sign_method = Tsdf_sign_method::AUTOMATIC;
-/// the dilation of the Flow zone, in voxels of the fitting resolution
-constexpr double flow_zone_tolerance = 2.;
-/// \f$\{\eta\}\f$, the semi-axis trust-region scales of the retries
-inline std::vector<double> trust_region_scales() { return {1., 0.5, 0.25}; }
-/// the body-to-surface seed switch, in voxels of the fitting resolution
-constexpr double body_seed_threshold = 1.5;
-/// \f$V_{min}\f$ of body seeds, in voxels of the fitting resolution \f$r_{fit}\f$
-constexpr double minimum_body_volume = 5.;
-/// \f$V_{min}\f$ of surface seeds, in voxels of the fitting resolution \f$r_{fit}\f$
-constexpr double minimum_surface_volume = 3.;
-/// \f$\mu_{ext}\f$, the exterior intrusion penalty
-constexpr double exterior_penalty = 5.;
-/// the coverage of the valid volume that ends a fitting stage (the paper's 0.95 leaves thin
-/// limbs without a primitive: see `benchmark/Part_decomposition/RESULTS.md`)
-constexpr double coverage_target = 0.999;
-/// the radius of the region of interest of a seed, in voxels of the fitting resolution
-constexpr double roi_radius = 8.;
-/// the most primitives a fit may accept
-constexpr std::size_t maximum_number_of_primitives = 256;
-/// how the variance of the interior weight of FitSDF is set
-constexpr Interior_weight_mode interior_weight_mode = Interior_weight_mode::ONE_SHOT;
-/// whether the Freeze zone, TSDF guidance and body seeds are used (the paper's full method)
-constexpr bool use_freeze_zone = true;
-/// see `use_freeze_zone`
-constexpr bool use_tsdf_guidance = true;
-/// see `use_freeze_zone`
-constexpr bool use_body_seeds = true;
-/// the cap of the fitting resolution, \f$r_{fit} = \min(r, cap)\f$; 0 stands for the resolution
-/// before the finest (the paper's 32 for its resolutions 16, 32, 64)
-constexpr int fitting_resolution_cap = 0;
-/// whether the exterior voxels of the thin outer band are samples of the fit
-constexpr bool use_exterior_band_samples = true;
-/// whether regions of interest and claims stop at Freeze walls
-constexpr bool use_reachable_regions = true;
-/// whether a rejected seed excludes a ball around it from later seeds of its stage
-constexpr bool use_seed_exclusion = true;
-/// the residual evaluations of one least-squares solve
-constexpr int maximum_solver_evaluations = 40;
-/// the rejected seeds in a row that end a fitting stage (0: never)
-constexpr std::size_t maximum_rejections_in_a_row = 4;
-/// whether adjacent primitives that one superquadric explains are merged after the fit
-constexpr bool merge_primitives = true;
-/// the voxel intersection over union from which one superquadric explains two primitives
-constexpr double minimum_merge_iou = 0.6;
-/// \f$q\f$, the dihedral percentile of the over-segmentation cut
-constexpr double dihedral_percentile = 90.;
-/// the boundary-smoothing iterations of the over-segmentation
-constexpr unsigned int smoothing_iterations = 1;
-/// the area below which a patch is merged into a neighbour, as a fraction of the mesh area
-constexpr double minimum_patch_size = 0.001;
-/// the area above which a patch of smooth surface is split, as a fraction of the mesh area
-constexpr double patch_split_size = 0.0005;
-/// \f$\tau_v\f$, the temperature of the patch vote, in voxels of the finest grid
-constexpr double vote_temperature = 1.;
-/// the cost of a part boundary per unit of length across smooth surface against the primitives'
-/// vote, in the final labelling of the faces (0: the paper's vote of the patches)
-constexpr double boundary_smoothness = 10.;
-/// whether adjacent thin, flat parts that meet along smooth edges are merged into one part
-constexpr bool merge_thin_sheets = true;
-/// whether the parts follow the pieces of the mesh and their concave creases (`segment_pieces()`)
+// defaults: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit
+/// border vertices closer than this fraction of the bounding box diagonal are welded; 0: none
+constexpr double weld_tolerance = 5e-06;
+/// the parts follow the pieces of the mesh and their concave creases; false: the paper's volumetric parts alone
 constexpr bool use_pieces = true;
 /// the dihedral angle, in degrees, from which a concave edge separates two regions of a piece
 constexpr double crease_angle = 60.;
-/// the area below which a part is merged into a neighbour, as a fraction of the mesh area
+/// a smaller part (fraction of the mesh area) joins a neighbour
 constexpr double minimum_part_area = 0.005;
-/// the merge cost of the part hierarchy below which the default parts go on merging
-constexpr double maximum_merge_cost = 0.003;
-/// the finest resolution of the finer pass whose thin parts replace those of the default grid (0: none)
-constexpr int thin_part_resolution = 0;
-/// whether Freeze-dominant patches that no primitive explains are kept as residual parts
+/// R: the grids of the prior, coarse to fine; the finest serves every volume stage
+inline std::vector<int> voxel_resolutions() { return {16, 32, 64}; }
+/// N_face: the barycentric samples per face
+constexpr unsigned int number_of_points_per_face = 36;
+/// k: the nearest faces of the normal deviation cue
+constexpr unsigned int number_of_neighbors = 8;
+/// the percentile at which the vertex curvatures are clipped
+constexpr double curvature_percentile = 99.5;
+/// lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score
+constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
+/// alpha: the fraction of the active voxels frozen at each resolution
+constexpr double freeze_ratio = 0.15;
+/// the topology score is weighted by the density sqrt(n_i); false: the paper's ablation
+constexpr bool use_density = true;
+/// the finest resolution of the topology score (finer ones only refine the grid); 0: every resolution
+constexpr int prior_resolution_cap = 0;
+/// the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)
+constexpr double normalization_margin = 0.03125;
+/// tau: the truncation of the distance field, in voxels of the finest grid
+constexpr double tsdf_truncation = 8.;
+/// how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill
+constexpr Tsdf_sign_method tsdf_sign_method = Tsdf_sign_method::AUTOMATIC;
+/// the dilation of the Flow zone, in voxels of the fitting resolution
+constexpr double flow_zone_tolerance = 2.;
+/// eta: the semi-axis trust-region scales of the retries
+inline std::vector<double> trust_region_scales() { return {1., 0.5, 0.25}; }
+/// the depth, in voxels of the fitting resolution, below which seeds switch from body to surface
+constexpr double body_seed_threshold = 1.5;
+/// V_min of body seeds, in voxels of the fitting resolution
+constexpr double minimum_body_volume = 5.;
+/// V_min of surface seeds, in voxels of the fitting resolution
+constexpr double minimum_surface_volume = 3.;
+/// mu_ext: the exterior intrusion penalty
+constexpr double exterior_penalty = 5.;
+/// the claimed fraction of the valid volume that ends a fitting stage
+constexpr double coverage_target = 0.999;
+/// the radius of the region of interest of a seed, in voxels of the fitting resolution
+constexpr double roi_radius = 8.;
+/// the variance of the interior inlier weight: one_shot, or mps_reestimated as MPS
+constexpr Interior_weight_mode interior_weight_mode = Interior_weight_mode::ONE_SHOT;
+/// a safety cap on the number of fitted superquadrics
+constexpr std::size_t maximum_number_of_primitives = 256;
+/// false: the paper's ablation w/o Freeze, Freeze voxels are Flow to the fitter
+constexpr bool use_freeze_zone = true;
+/// false: the paper's ablation w/o TSDF, the fit sees the occupancy only
+constexpr bool use_tsdf_guidance = true;
+/// false: the paper's ablation w/o Body, surface seeds only
+constexpr bool use_body_seeds = true;
+/// r_fit = min(r, cap); 0: the resolution before the finest
+constexpr int fitting_resolution_cap = 0;
+/// the exterior voxels of the thin outer band are samples of the fit
+constexpr bool use_exterior_band_samples = true;
+/// regions of interest and claims stop at Freeze walls
+constexpr bool use_reachable_regions = true;
+/// a rejected seed excludes a ball around it from later seeds of its stage
+constexpr bool use_seed_exclusion = true;
+/// the residual evaluations of one least-squares solve
+constexpr int maximum_solver_evaluations = 40;
+/// the rejected seeds in a row that end a fitting stage; 0: never
+constexpr std::size_t maximum_rejections_in_a_row = 4;
+/// adjacent primitives that one superquadric explains are merged after the fit (not in the paper)
+constexpr bool merge_primitives = true;
+/// the voxel intersection over union from which one superquadric explains two primitives
+constexpr double minimum_merge_iou = 0.6;
+/// q: edges whose dihedral angle is above this percentile are cut
+constexpr double dihedral_percentile = 90.;
+/// the boundary-smoothing passes of the over-segmentation
+constexpr unsigned int smoothing_iterations = 1;
+/// a smaller patch (fraction of the mesh area) is merged into a neighbour
+constexpr double minimum_patch_size = 0.001;
+/// a larger patch of smooth surface (fraction of the mesh area) is split
+constexpr double patch_split_size = 0.0005;
+/// tau_v: the temperature of the patch vote, in voxels of the finest grid
+constexpr double vote_temperature = 1.;
+/// the cost of a part boundary across smooth surface in the final labelling; 0: the paper's patch vote
+constexpr double boundary_smoothness = 10.;
+/// true: the paper's residual patches, Freeze-dominant patches no primitive explains, are parts of their own
 constexpr bool keep_residual_patches = false;
-/// the distance, in voxels of the finest grid, from which a patch is not explained by its primitive
+/// the mean distance to its primitive, in voxels of the finest grid, from which a patch is residual
 constexpr double residual_tolerance = 2.;
-/// the distance, as a fraction of the bounding box diagonal, within which the reader welds border
-/// vertices: above the float32 round-off of a seam, below the gaps between distinct vertices
-constexpr double weld_tolerance = 5e-6;
+/// adjacent thin, flat parts that meet along smooth edges are merged (not in the paper)
+constexpr bool merge_thin_sheets = true;
+/// the parts go on merging in the part hierarchy while a merge costs less; 0: none
+constexpr double maximum_merge_cost = 0.003;
+/// a finer pass at this resolution whose thin parts replace the default ones; 0: none
+constexpr int thin_part_resolution = 0;
+/// print what each stage does on std::cerr
+constexpr bool verbose = false;
+// end of the defaults
 } // namespace defaults
 
 /*!

@@ -50,7 +50,7 @@ Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
   Hierarchy_parameters p;
   p.has_number_of_parts = !CGAL::parameters::is_default_parameter<NamedParameters, inp::number_of_parts_t>::value;
   p.number_of_parts = choose_parameter(get_parameter(np, inp::number_of_parts), std::size_t(0));
-  if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts", "at least 1");
+  if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts");
   p.maximum_merge_cost = choose_parameter(get_parameter(np, inp::maximum_merge_cost), defaults::maximum_merge_cost);
   check_non_negative(p.maximum_merge_cost, "maximum_merge_cost");
   return p;

@@ -43,8 +43,8 @@ Piece_parameters read_piece_parameters(const NamedParameters& np)
   p.use_pieces = choose_parameter(get_parameter(np, inp::use_pieces), p.use_pieces);
   p.crease_angle = choose_parameter(get_parameter(np, inp::crease_angle), p.crease_angle);
   p.minimum_part_area = choose_parameter(get_parameter(np, inp::minimum_part_area), p.minimum_part_area);
-  check_parameter(p.crease_angle > 0. && p.crease_angle <= 180., "crease_angle", "in (0, 180]");
-  check_parameter(p.minimum_part_area >= 0. && p.minimum_part_area <= 1., "minimum_part_area", "in [0, 1]");
+  check_parameter(p.crease_angle > 0. && p.crease_angle <= 180., "crease_angle");
+  check_parameter(p.minimum_part_area >= 0. && p.minimum_part_area <= 1., "minimum_part_area");
   return p;
 }
 

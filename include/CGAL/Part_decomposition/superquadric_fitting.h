@@ -58,12 +58,12 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
     choose_parameter(get_parameter(np, internal_np::interior_weight_mode), defaults::interior_weight_mode);
   p.maximum_number_of_primitives = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_primitives), defaults::maximum_number_of_primitives),
-    1, "maximum_number_of_primitives", "positive");
+    1, "maximum_number_of_primitives");
   p.use_tsdf_guidance = choose_parameter(get_parameter(np, internal_np::use_tsdf_guidance), defaults::use_tsdf_guidance);
   p.use_body_seeds = choose_parameter(get_parameter(np, internal_np::use_body_seeds), defaults::use_body_seeds);
   p.fitting_resolution_cap = checked_integer<int>(
     choose_parameter(get_parameter(np, internal_np::fitting_resolution_cap), defaults::fitting_resolution_cap),
-    0, "fitting_resolution_cap", "non-negative");
+    0, "fitting_resolution_cap");
   p.use_exterior_band_samples =
     choose_parameter(get_parameter(np, internal_np::use_exterior_band_samples), defaults::use_exterior_band_samples);
   p.use_reachable_regions =
@@ -71,23 +71,23 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   p.use_seed_exclusion = choose_parameter(get_parameter(np, internal_np::use_seed_exclusion), defaults::use_seed_exclusion);
   p.maximum_solver_evaluations = checked_integer<int>(
     choose_parameter(get_parameter(np, internal_np::maximum_solver_evaluations), defaults::maximum_solver_evaluations),
-    1, "maximum_solver_evaluations", "positive");
+    1, "maximum_solver_evaluations");
   p.maximum_rejections_in_a_row = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_rejections_in_a_row), defaults::maximum_rejections_in_a_row),
-    0, "maximum_rejections_in_a_row", "non-negative");
+    0, "maximum_rejections_in_a_row");
   p.merge_primitives = choose_parameter(get_parameter(np, internal_np::merge_primitives), defaults::merge_primitives);
   p.minimum_merge_iou = choose_parameter(get_parameter(np, internal_np::minimum_merge_iou), defaults::minimum_merge_iou);
-  p.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  p.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), defaults::verbose);
 
-  check_parameter(!p.trust_region_scales.empty(), "trust_region_scales", "a non-empty list");
+  check_parameter(!p.trust_region_scales.empty(), "trust_region_scales");
   for(double eta : p.trust_region_scales) check_positive(eta, "trust_region_scales");
   check_positive(p.body_seed_threshold, "body_seed_threshold");
   check_non_negative(p.minimum_body_volume, "minimum_body_volume");
   check_non_negative(p.minimum_surface_volume, "minimum_surface_volume");
   check_non_negative(p.exterior_penalty, "exterior_penalty");
-  check_parameter(p.coverage_target > 0. && p.coverage_target <= 1., "coverage_target", "in (0, 1]");
+  check_parameter(p.coverage_target > 0. && p.coverage_target <= 1., "coverage_target");
   check_positive(p.roi_radius, "roi_radius");
-  check_parameter(p.minimum_merge_iou > 0. && p.minimum_merge_iou <= 1., "minimum_merge_iou", "in (0, 1]");
+  check_parameter(p.minimum_merge_iou > 0. && p.minimum_merge_iou <= 1., "minimum_merge_iou");
   return p;
 }
 

@@ -77,7 +77,7 @@ inline void make_score_field(const Voxel_sums& vs, const std::array<double, 4>& 
 
 inline void check_freeze_ratio(double alpha)
 {
-  check_parameter(alpha > 0. && alpha < 1., "freeze_ratio", "in (0, 1)");
+  check_parameter(alpha > 0. && alpha < 1., "freeze_ratio");
 }
 
 // The Flow/Freeze cut of a field whose `sample_count` and `score` are set.
@@ -194,7 +194,7 @@ inline std::vector<std::array<double, 3> > barycentric_sample_grid(std::size_t n
 {
   std::size_t n = std::size_t(std::llround(std::sqrt(double(number_of_points_per_face))));
   internal::check_parameter(number_of_points_per_face != 0 && n * n == number_of_points_per_face,
-                            "number_of_points_per_face", "a positive perfect square");
+                            "number_of_points_per_face");
   std::vector<std::array<double, 3> > samples;
   samples.reserve(number_of_points_per_face);
   const double dn = double(n);
@@ -261,7 +261,7 @@ std::array<double, 4> to_cue_weights(const Range& range)
     w[n] = double(*it);
     finite = finite && std::isfinite(w[n]);
   }
-  check_parameter(four && finite, "cue_weights", "4 finite numbers");
+  check_parameter(four && finite, "cue_weights");
   return w;
 }
 
@@ -274,7 +274,7 @@ Topology_score_parameters read_topology_score_parameters(const NamedParameters& 
   Topology_score_parameters p;
   const double n = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_points_per_face),
                                            defaults::number_of_points_per_face));
-  check_parameter(n >= 1. && n <= 1e7 && n == std::floor(n), "number_of_points_per_face", "a positive perfect square");
+  check_parameter(n >= 1. && n <= 1e7 && n == std::floor(n), "number_of_points_per_face");
   p.barycentric = barycentric_sample_grid(std::size_t(n));
   p.cue_weights = to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights), defaults::cue_weights));
   p.freeze_ratio = double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), defaults::freeze_ratio));

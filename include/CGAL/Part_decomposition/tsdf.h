@@ -295,8 +295,7 @@ Tsdf_parameters read_tsdf_parameters(const NamedParameters& np)
   Tsdf_parameters p;
   p.resolution = read_voxel_resolutions(np).back();
   p.truncation_voxels = double(choose_parameter(get_parameter(np, internal_np::tsdf_truncation), defaults::tsdf_truncation));
-  check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation",
-                  "in (0, 4 * resolution]");
+  check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation");
   p.sign_method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method), defaults::tsdf_sign_method);
   if(p.sign_method == Tsdf_sign_method::AUTOMATIC) p.sign_method = Tsdf_sign_method::RAY_VOTES;
   return p;

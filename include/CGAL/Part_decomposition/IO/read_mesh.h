@@ -388,7 +388,7 @@ double read_weld_tolerance(const NamedParameters& np)
 {
   const double t = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::weld_tolerance), defaults::weld_tolerance);
-  check_parameter(t >= 0. && t <= 0.01, "weld_tolerance", "in [0, 0.01]");
+  check_parameter(t >= 0. && t <= 0.01, "weld_tolerance");
   return t;
 }
 
