@@ -1074,3 +1074,42 @@ TEST_CASE("whether a piece bounds a volume is decided by the distance field, not
   open_decomposer.compute_distance_field();
   CHECK(open_decomposer.needs_volumetric_stages());
 }
+namespace {
+
+// An L of two plates, a horizontal one and a lower vertical one standing on its edge, and a tall
+// pin standing on the horizontal plate, all closed boxes that touch. One box explains the L better
+// than the plate and its pin, but the pin is small: attached to its plate, it joins it first.
+// Returns the box of each face (0: horizontal plate, 1: vertical plate, 2: pin).
+Mesh make_pinned_plates(std::vector<std::size_t>& box)
+{
+  Mesh m;
+  const std::pair<Point, Point> boxes[3] = {{Point(0, 0, 0), Point(2, 2, 0.1)},
+                                            {Point(0, 0, 0.1), Point(2, 0.1, 1)},
+                                            {Point(0.9, 0.9, 0.1), Point(1.1, 1.1, 1.9)}};
+  for(std::size_t b = 0; b < 3; ++b)
+  {
+    test_shapes::append(m, test_shapes::make_box(boxes[b].first, boxes[b].second, int(b) + 2));
+    box.resize(num_faces(m), b);
+  }
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("above the default parts a small attached part joins its neighbour before large parts merge", "[hierarchy]")
+{
+  std::vector<std::size_t> box;
+  const Mesh m = make_pinned_plates(box);
+  // no merge is cheap: the default parts are the three boxes
+  std::vector<std::size_t> part(num_faces(m));
+  CHECK(PD::decompose(m, CGAL::make_property_map(part)) == 3);
+  // two parts: the pin with its plate, not the two plates (whose box is the cheaper merge)
+  CHECK(PD::decompose(m, CGAL::make_property_map(part), PDP::number_of_parts(2)) == 2);
+  for(std::size_t i = 0; i < part.size(); ++i)
+    for(std::size_t j = 0; j < part.size(); ++j)
+      if((part[i] == part[j]) != ((box[i] == 1) == (box[j] == 1))) FAIL("faces " << i << " and " << j);
+  const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(box));
+  REQUIRE(h.nodes.size() == 5);
+  const std::array<std::size_t, 2> first = h.nodes[3].children;
+  CHECK(std::set<std::size_t>(first.begin(), first.end()) == std::set<std::size_t>{0, 2});
+}

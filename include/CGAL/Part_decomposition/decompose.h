@@ -435,10 +435,10 @@ public:
   that the parts of `assign_parts()` are a level of the tree (level `part_primitives().size()`, its
   `default_number_of_parts`), with their primitives; the other nodes get their box-like
   superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_below_cost()`
-  (named parameter `maximum_merge_cost`).
+  (named parameter `maximum_merge_cost`), from which merges are ordered by size first.
   \pre `assign_parts()` was called.
   */
-  const Part_hierarchy<Geom_traits>& build_hierarchy()
+  const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
   {
     CGAL_precondition(m_has_parts);
     if(!m_has_parts)
@@ -464,7 +464,7 @@ public:
     internal::index_of_keys(key, subgroup);
     const internal::Face_corners corners(m_tm, m_fim, m_vpm);
     m_hierarchy = internal::hierarchy_of_leaves<Geom_traits>(adj, corners, leaf, number_of_leaves, subgroup, m_parts,
-                                                             m_part_primitives, piece, orientation);
+                                                             m_part_primitives, piece, orientation, maximum_merge_cost);
     m_has_hierarchy = true;
     return m_hierarchy;
   }
@@ -786,7 +786,7 @@ void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameter
   std::size_t K = assigned;
   if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
     internal::add_seconds(timings.hierarchy, [&] {
-      decomposer.build_hierarchy();
+      decomposer.build_hierarchy(hp.maximum_merge_cost);
       const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
       K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
       if(hierarchy_out != nullptr)

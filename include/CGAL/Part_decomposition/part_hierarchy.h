@@ -63,6 +63,10 @@ constexpr double contact_fraction = 0.01;
 constexpr double merge_crease_weight = 0.05;
 // The dihedral angle (degrees) from which a concave edge counts fully in that concavity.
 constexpr double merge_crease_angle = 60.;
+// Above the default parts, the weight of the smaller part's area fraction in the cost: large
+// enough that size orders these merges (tuned on half A of the development and CAD-style sets
+// told their part counts: 3 and 10 equal, 1 and 0.3 below; see RESULTS.md).
+constexpr double merge_attachment_weight = 10.;
 
 // The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`.
 template <typename Corner>
@@ -101,7 +105,8 @@ inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& 
 
 // The hierarchy of the leaves of a mesh given by its face graph `adj` and the corners of its faces
 // (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
-// whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face.
+// whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face;
+// merges from `maximum_merge_cost` on are ordered by size first.
 template <typename GeomTraits, typename Corner>
 Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const Corner& corner,
                                                const std::vector<std::size_t>& leaf, std::size_t number_of_leaves,
@@ -109,7 +114,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
                                                const std::vector<std::size_t>& group,
                                                const std::vector<Superquadric<GeomTraits> >& group_primitive,
                                                const std::vector<std::size_t>& piece,
-                                               const std::vector<int>& orientation)
+                                               const std::vector<int>& orientation, double maximum_merge_cost)
 {
   typedef Part_hierarchy_node<GeomTraits> Node;
   const std::size_t none = Node::no_node, nf = adj.number_of_faces;
@@ -128,6 +133,8 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
   p.contact_distance = contact_fraction * diagonal;
   p.thickness = contact_fraction * diagonal;
   p.crease_weight = merge_crease_weight;
+  p.attachment_from = maximum_merge_cost;
+  p.attachment_weight = merge_attachment_weight;
   double total_volume = 1.;
   for(int d = 0; d < 3; ++d) total_volume *= (std::max)(hi[d] - lo[d], 2. * p.thickness);
 
@@ -235,6 +242,12 @@ plate, a knob on a door, the two parts of a limb that is straight), late when th
 leave much space empty (a leg and the seat, two perpendicular plates). The box of a merged node
 holds the boxes of its two children.
 
+A merge that costs at least `maximum_merge_cost`, i.e.\ one above the default parts, and is not
+between parts of one assigned part costs \f$c(a, b) + 10\,\min(A(a), A(b)) / A(M)\f$ instead, with
+\f$A\f$ the area of a part's surface and \f$A(M)\f$ that of the mesh: above the default parts, a
+small part joins the part it is attached to (a handle its door, a pin its plate) before large parts
+merge, while the cheaper merges keep their order, and with it the default parts.
+
 `Part_decomposer::build_hierarchy()` builds the hierarchy of a decomposition, whose default parts
 are a level of the tree.
 
@@ -268,6 +281,11 @@ are a level of the tree.
     \cgalParamType{a model of `PartDecompositionTraits`}
     \cgalParamDefault{the kernel of the point type of the vertex point map}
   \cgalParamNEnd
+  \cgalParamNBegin{maximum_merge_cost}
+    \cgalParamDescription{the cost from which merges are ordered by the size of the smaller part first}
+    \cgalParamType{`double`, non-negative and finite}
+    \cgalParamDefault{`0.003`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \pre `CGAL::is_triangle_mesh(tm)` and the values of `face_part_map` are `0` to `K - 1`, each used.
@@ -279,7 +297,8 @@ primitive is its box-like superquadric. The result does not depend on the number
 \f$O(F \log F)\f$ for \f$F\f$ faces, plus \f$O(E \log E)\f$ for the \f$E\f$ pairs of parts that
 are linked.
 
-\throws Invalid_input (`INVALID_PARAMETER`) if a part id is not below the number of faces.
+\throws Invalid_input (`INVALID_PARAMETER`) if a part id is not below the number of faces or
+`maximum_merge_cost` is out of its range.
 */
 template <typename TriangleMesh, typename FacePartMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -306,7 +325,7 @@ build_part_hierarchy(const TriangleMesh& tm, FacePartMap face_part_map,
   const internal::Face_corners corners(tm, fim, vpm);
   return internal::hierarchy_of_leaves<GT>(adj, corners, leaf, number_of_leaves, std::vector<std::size_t>(),
                                            std::vector<std::size_t>(), std::vector<Superquadric<GT> >(), pieces.piece,
-                                           pieces.orientation);
+                                           pieces.orientation, internal::read_hierarchy_parameters(np).maximum_merge_cost);
 }
 
 } // namespace Part_decomposition

@@ -180,6 +180,12 @@ struct Merge_parameters
   double contact_distance = 0.; // surfaces of two pieces closer than this touch
   double thickness = 0.;        // the smallest half extent of a box's volume
   double crease_weight = 0.;    // weight of the concavity of the common boundary in the cost
+  // Merges of parts of one piece or of several that cost at least `attachment_from` (the default
+  // parts' maximum_merge_cost) add `attachment_weight` times the area fraction of the smaller part:
+  // above the default parts, small parts join the part they are attached to before large parts
+  // merge, and the merges below keep their order.
+  double attachment_from = std::numeric_limits<double>::infinity();
+  double attachment_weight = 0.;
 };
 
 // The pairs of leaves of different pieces whose surfaces come within about `distance` of each
@@ -268,6 +274,9 @@ public:
     m_children.assign(n, {{none, none}});
     m_kind.assign(n, Merge_kind::NONE);
     m_cost.assign(n, 0.);
+    double area = 0.;
+    for(const Part_box& b : m_box) area += b.area;
+    m_area = (std::max)(area, std::numeric_limits<double>::min());
   }
 
   // `length`: of the common boundary; `concave`: its length weighted by concavity (0 to 1).
@@ -364,7 +373,11 @@ private:
 
   void push(std::size_t a, const Link& l)
   {
-    m_queue.push(Entry{kind_of(a, l.node, l.contact), cost(a, l), (std::min)(a, l.node), (std::max)(a, l.node)});
+    const Merge_kind kind = kind_of(a, l.node, l.contact);
+    double c = cost(a, l);
+    if(int(kind) >= int(Merge_kind::SAME_PIECE) && c >= m_p.attachment_from)
+      c += m_p.attachment_weight * (std::min)(m_box[a].area, m_box[l.node].area) / m_area;
+    m_queue.push(Entry{kind, c, (std::min)(a, l.node), (std::max)(a, l.node)});
   }
 
   // Links the living nodes that must merge before the merges of the next kind but are not
@@ -459,7 +472,7 @@ private:
   std::vector<Part_box> m_box;
   std::vector<std::size_t> m_subgroup, m_group, m_piece;
   Merge_parameters m_p;
-  double m_volume;
+  double m_volume, m_area; // of the bounding box of the mesh, of its surface
   std::vector<std::vector<Link> > m_links;
   std::vector<std::uint8_t> m_alive;
   std::vector<std::array<std::size_t, 2> > m_children;
