@@ -54,7 +54,7 @@ struct Stage_timings
   double fitting = 0.;           ///< fitting zones and superquadric fitting
   double fitting_zones = 0.;     ///< of which the fitting zones
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
-  double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
+  double assignment = 0.;        ///< assignment, thin-sheet merge and composition with the pieces
   double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
   double thin_parts = 0.;        ///< the finer pass of `thin_part_resolution` and its thin parts (0 without it)
   double total = 0.;             ///< the whole call, input checks included
@@ -344,7 +344,9 @@ public:
   /// \name Stages
   /// @{
 
-  /// splits the mesh into its pieces and their regions with `Part_decomposition::segment_pieces()`.
+  /// splits the mesh into its pieces and their regions with `Part_decomposition::segment_pieces()`;
+  /// once the distance field is computed too, an open piece that bounds a volume of it faces out
+  /// of it (`volumetric_pieces()`).
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
@@ -354,6 +356,7 @@ public:
     m_s.volumetric_pieces.clear();
     m_has_pieces = true;
     drop_parts();
+    if(m_has_tsdf) volumetric_pieces(np);
     return m_s.pieces;
   }
 
@@ -684,11 +687,15 @@ writes the part id of every face, from 0 to `K-1`, to `face_part_map`. Each part
 one superquadric, optionally written to an output iterator. The same input and parameters give
 the same output, whatever the number of threads.
 
-The stages, each also available on its own: `segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`,
-`fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`, then
-the part hierarchy (`build_part_hierarchy()`), whose merges go on from the assigned parts as long
-as they cost less than `maximum_merge_cost`; `Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
-and passed to the stage that reads it; the table below lists them all, as does
+It is the sequence of the stage functions, which give the same parts when called in this
+order with the same named parameters (see the user manual): `segment_pieces()` and
+`splittable_pieces()`; if a piece is splittable, `compute_flow_freeze_prior()`, `compute_tsdf()`
+and `volumetric_pieces()`; if a piece is volumetric, `compute_fitting_zones()`,
+`fit_superquadrics()`, `over_segment()`, `assign_parts()`, `separate_residual_patches()` (with
+`keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
+hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
+cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. Every named
+parameter of these functions is accepted here and passed to the stage that reads it; the table below lists them all, as does
 `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
@@ -941,7 +948,7 @@ are chained with `parameters::combine()`)
                           voxels of the prior and whose faces are on average farther than
                           `residual_tolerance` from the primitive they were assigned to. Each
                           edge-connected set of them is one part, without fitted primitive, flagged by
-                          `Part_decomposer::residual_parts()`; like any part, it joins a neighbour if it
+                          `Composed_parts::residual_parts` (`separate_residual_patches()`); like any part, it joins a neighbour if it
                           is smaller than `minimum_part_area`.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
@@ -966,7 +973,7 @@ are chained with `parameters::combine()`)
                           creases (`segment_pieces()`): the volumetric stages decompose only the
                           non-convex pieces that bound a volume, closed or not, whose parts are cut by the regions of
                           `segment_pieces()`; every other piece is decomposed into its regions (see
-                          `Part_decomposer::needs_volumetric_stages()`). If `false`, the parts are
+                          `volumetric_pieces()`). If `false`, the parts are
                           those of the volumetric stages alone, as in the paper. This step is not
                           in the paper.}
     \cgalParamType{`bool`}
@@ -1003,14 +1010,14 @@ are chained with `parameters::combine()`)
   \cgalParamNEnd
   \cgalParamNBegin{number_of_parts}
     \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
-                          hierarchy (`Part_decomposer::build_hierarchy()`), each with the superquadric
+                          hierarchy (`build_part_hierarchy()`), each with the superquadric
                           of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
                           leaves. Without it, the parts are those of the default granularity.}
     \cgalParamType{`std::size_t`, at least 1}
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_merge_cost}
-    \cgalParamDescription{the default granularity: the parts of `Part_decomposer::assign_parts()` go on
+    \cgalParamDescription{the default granularity: the parts of `compose_parts()` go on
                           merging in the order of the part hierarchy as long as each merge costs less
                           than this (`Part_hierarchy::level_below_cost()`; the cost is that of
                           `build_part_hierarchy()`: the volume one box of the union adds to the boxes
@@ -1023,7 +1030,7 @@ are chained with `parameters::combine()`)
     \cgalParamDefault{`0.003`}
   \cgalParamNEnd
   \cgalParamNBegin{part_hierarchy}
-    \cgalParamDescription{if not null, receives the part hierarchy (`Part_decomposer::build_hierarchy()`),
+    \cgalParamDescription{if not null, receives the part hierarchy (`build_part_hierarchy()`),
                           built after the parts; its `default_number_of_parts` is the number of
                           parts of the default granularity (after the merges below
                           `maximum_merge_cost`)}

@@ -381,8 +381,10 @@ ignored if `parts.parts` is empty
 \param fitting the primitives of `parts.part_to_primitive` (unused if `parts.parts` is empty)
 \param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`, `use_pieces`
 and `minimum_part_area`, as for `decompose()`
-\pre `parts.parts` is not empty with `use_pieces(false)`.
-\throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range.
+\throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range, if a vector
+of `parts` or `pieces` indexed by face does not have one value per face, if `volumetric` does not
+have one flag per piece while `parts.parts` is not empty, or if `parts.parts` is empty with
+`use_pieces(false)`.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -394,6 +396,13 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
   const internal::Piece_parameters p = internal::read_piece_parameters(np);
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const bool has_volume = !parts.parts.empty();
+  const std::size_t nf = num_faces(tm);
+  internal::check_parameter(parts.parts.empty() || parts.parts.size() == nf, "parts.parts", "one part per face");
+  internal::check_parameter(!p.use_pieces || (pieces.piece.size() == nf && pieces.region.size() == nf), "pieces",
+                            "the pieces of the mesh, with use_pieces");
+  internal::check_parameter(!p.use_pieces || !has_volume || volumetric.size() == pieces.number_of_pieces,
+                            "volumetric", "one flag per piece, with parts of the volumetric stages");
+  internal::check_parameter(p.use_pieces || has_volume, "parts.parts", "the parts of assign_parts() with use_pieces(false)");
   Composed_parts<GeomTraits> c;
   std::vector<std::size_t> volume_part;
   std::vector<double> face_area;
@@ -416,7 +425,6 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
   }
   else
   {
-    CGAL_precondition(has_volume);
     c.parts = parts.parts;
     c.part_to_primitive = parts.part_to_primitive;
     face_area = internal::face_adjacency_of<ConcurrencyTag>(tm, maps.fim, np).area;

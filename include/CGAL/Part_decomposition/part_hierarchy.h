@@ -235,7 +235,7 @@ plate, a knob on a door, the two parts of a limb that is straight), late when th
 leave much space empty (a leg and the seat, two perpendicular plates). The box of a merged node
 holds the boxes of its two children.
 
-`Part_decomposer::build_hierarchy()` builds the hierarchy of a decomposition, whose default parts
+`build_part_hierarchy(tm, pieces, parts, np)` builds the hierarchy of a decomposition, whose default parts
 are a level of the tree.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
