@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/decompose.h>
+#include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
@@ -235,13 +236,98 @@ TEST_CASE("the parts are written once to a write-only map, by decompose() and Pa
   pd.over_segment();
   std::fill(part.begin(), part.end(), std::size_t(-1));
   std::fill(writes.begin(), writes.end(), 0);
-  CHECK(pd.assign_parts(Write_only_part_map{&part, &writes}) == K_parts);
+  CHECK(pd.compose_parts(Write_only_part_map{&part, &writes}) == K_parts);
   CHECK(part == reference);
   CHECK(pd.parts() == reference);
   CHECK(std::set<int>(writes.begin(), writes.end()) == std::set<int>{1});
 }
 
-TEST_CASE("the thin-sheet merge is a step of its own of Part_decomposer", "[decompose][sheet_merge][data]")
+// decompose() rebuilt from the documented stage functions, called in their documented order with
+// the same named parameters; `use_pieces` and `keep_residual_patches` are those of `np`.
+template <typename NamedParameters>
+std::size_t decompose_by_stages(const Mesh& m, bool use_pieces, bool keep_residual_patches, const NamedParameters& np,
+                                std::vector<std::size_t>& labels, std::vector<PD::Superquadric<K> >& primitives)
+{
+  const auto any = [](const std::vector<std::uint8_t>& flags) { return std::count(flags.begin(), flags.end(), 1) > 0; };
+  const std::size_t nf = num_faces(m);
+  PD::Piece_segmentation pieces;
+  bool volume = true;
+  if(use_pieces)
+  {
+    pieces = PD::segment_pieces(m, np);
+    volume = any(PD::splittable_pieces(m, pieces, np));
+  }
+  PD::Hierarchical_prior prior;
+  PD::Truncated_signed_distance_field tsdf;
+  std::vector<std::uint8_t> volumetric;
+  if(volume)
+  {
+    prior = PD::compute_flow_freeze_prior(m, np);
+    tsdf = PD::compute_tsdf(m, np);
+    if(use_pieces) volume = any(volumetric = PD::volumetric_pieces(m, pieces, tsdf, np));
+  }
+  PD::Superquadric_fitting_result<K> fitting;
+  PD::Volumetric_parts parts;
+  if(volume)
+  {
+    const PD::Fitting_zones zones =
+      PD::compute_fitting_zones(prior.classes, tsdf, PD::fitting_resolutions(prior.resolutions), np);
+    fitting = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, zones, np);
+    parts.patches.resize(nf);
+    PD::over_segment(m, CGAL::make_property_map(parts.patches), np);
+    parts.parts.resize(nf);
+    parts.part_to_primitive = PD::assign_parts(m, CGAL::make_property_map(parts.patches), fitting.labels,
+                                               fitting.normalization, CGAL::make_property_map(parts.parts), np);
+    if(keep_residual_patches) PD::separate_residual_patches(m, parts, prior, fitting, np);
+    PD::merge_thin_sheet_parts(m, CGAL::make_property_map(parts.parts), parts.part_to_primitive, fitting, tsdf, np);
+  }
+  const PD::Composed_parts<K> composed = PD::compose_parts(m, pieces, volumetric, parts, fitting, np);
+  const PD::Part_hierarchy<K> hierarchy = PD::build_part_hierarchy(m, pieces, composed, np);
+  const std::size_t k = hierarchy.level_below_cost(composed.number_of_parts(), PD::defaults::maximum_merge_cost);
+  labels = hierarchy.labels(k);
+  primitives.clear();
+  for(std::size_t n : hierarchy.level(k)) primitives.push_back(hierarchy.nodes[n].primitive);
+  return k;
+}
+
+template <typename NamedParameters>
+void check_stages_give_decompose(const Mesh& m, bool use_pieces, bool keep_residual_patches, const NamedParameters& np)
+{
+  std::vector<std::size_t> expected(num_faces(m)), labels;
+  std::vector<PD::Superquadric<K> > expected_primitives, primitives;
+  const std::size_t K_expected = PD::decompose(
+    m, CGAL::make_property_map(expected),
+    PDP::combine(np, PDP::primitive_output_iterator(std::back_inserter(expected_primitives))));
+  CHECK(decompose_by_stages(m, use_pieces, keep_residual_patches, np, labels, primitives) == K_expected);
+  CHECK(labels == expected);
+  REQUIRE(primitives.size() == expected_primitives.size());
+  for(std::size_t k = 0; k < primitives.size(); ++k)
+  {
+    CHECK(primitives[k].scales() == expected_primitives[k].scales());
+    CHECK(primitives[k].center() == expected_primitives[k].center());
+  }
+}
+
+TEST_CASE("the stage functions in their documented order give the parts of decompose()", "[decompose][stages][data]")
+{
+  for(const std::string name : {"animal", "table", "dumbbell"})
+  {
+    CAPTURE(name);
+    Mesh m;
+    test_shapes::read_shipped_shape(name, m);
+    check_stages_give_decompose(m, true, false, CGAL::parameters::default_values());
+  }
+  Mesh animal;
+  test_shapes::read_shipped_shape("animal", animal);
+  check_stages_give_decompose(animal, false, true,
+                              PDP::combine(PDP::use_pieces(false), PDP::keep_residual_patches(true)));
+  // generated: a bracket the volumetric stages decompose, a sheet that bounds no volume
+  check_stages_give_decompose(test_shapes::make_l_bracket(1., 0.7, 0.1, 0.4, 0.02), true, false,
+                              CGAL::parameters::default_values());
+  check_stages_give_decompose(test_shapes::make_wavy_sheet(24, 0.15), true, false, CGAL::parameters::default_values());
+}
+
+TEST_CASE("the thin-sheet merge is a step of Part_decomposer::compose_parts()", "[decompose][sheet_merge][data]")
 {
   // The table: its top is a thin slab.
   Mesh m;
@@ -252,25 +338,21 @@ TEST_CASE("the thin-sheet merge is a step of its own of Part_decomposer", "[deco
     PD::decompose(m, CGAL::make_property_map(merged), PDP::combine(PDP::use_pieces(false), PDP::maximum_merge_cost(0.)));
 
   PD::Part_decomposer<Mesh> pd(m);
-  pd.compute_prior();
-  pd.compute_distance_field();
-  pd.fit_primitives();
-  pd.over_segment();
-  const std::size_t K_unmerged = pd.assign_parts(CGAL::make_property_map(unmerged),
-                                                  PDP::combine(PDP::merge_thin_sheets(false), PDP::use_pieces(false)));
+  const std::size_t K_unmerged = pd.compose_parts(CGAL::make_property_map(unmerged),
+                                                   PDP::combine(PDP::merge_thin_sheets(false), PDP::use_pieces(false)));
   CHECK(pd.parts() == unmerged);
   CHECK(K_unmerged >= K_merged);
-  // the free function on the parts before the merge, with its own face graph
-  std::vector<std::size_t> part_to_primitive = pd.part_to_primitive();
+  // the free function on the parts before the merge
+  std::vector<std::size_t> part_to_primitive = pd.volumetric_parts().part_to_primitive;
   std::vector<std::size_t> by_function = unmerged;
   const std::size_t K_function = PD::merge_thin_sheet_parts(m, CGAL::make_property_map(by_function),
                                                             part_to_primitive, pd.fitting(), pd.distance_field());
-  // the step, on the face graph of the over-segmentation
-  CHECK(pd.merge_thin_sheets() == K_merged);
-  CHECK(pd.parts() == merged);
-  CHECK(pd.part_primitives().size() == K_merged);
   CHECK(K_function == K_merged);
   CHECK(by_function == merged);
+  // the step, on the cached stages
+  CHECK(pd.compose_parts(boost::dummy_property_map(), PDP::use_pieces(false)) == K_merged);
+  CHECK(pd.parts() == merged);
+  CHECK(pd.part_primitives().size() == K_merged);
   CHECK(part_to_primitive == pd.part_to_primitive());
 }
 
@@ -832,7 +914,7 @@ TEST_CASE("residual patches are parts of their own, without a fitted primitive",
   d.compute_distance_field(np);
   d.fit_primitives(np);
   d.over_segment(np);
-  const std::size_t K_parts = d.assign_parts(CGAL::make_property_map(part), np);
+  const std::size_t K_parts = d.compose_parts(CGAL::make_property_map(part), np);
   REQUIRE(d.residual_parts().size() == K_parts);
   // with a tolerance of 0 every Freeze-dominant patch is residual: some part is, and has no primitive
   std::size_t residual = 0;
@@ -845,9 +927,9 @@ TEST_CASE("residual patches are parts of their own, without a fitted primitive",
   CHECK(residual > 0);
   // off by default
   std::vector<std::size_t> plain(num_faces(m));
-  d.assign_parts(CGAL::make_property_map(plain));
+  d.compose_parts(CGAL::make_property_map(plain));
   CHECK(std::count(d.residual_parts().begin(), d.residual_parts().end(), 1) == 0);
-  CHECK(error_of([&] { d.assign_parts(CGAL::make_property_map(plain), PDP::residual_tolerance(-1.)); }) ==
+  CHECK(error_of([&] { d.compose_parts(CGAL::make_property_map(plain), PDP::residual_tolerance(-1.)); }) ==
         PD::Input_error::INVALID_PARAMETER);
 }
 

@@ -356,7 +356,7 @@ int main(int argc, char** argv)
   const PD::Superquadric_fitting_result<K>& fit = decomposer.fit_primitives<Concurrency>(np);
   const std::size_t number_of_patches = decomposer.over_segment<Concurrency>(np);
   std::vector<std::size_t> part(num_faces(mesh), 0);
-  const std::size_t number_of_parts = decomposer.assign_parts<Concurrency>(CGAL::make_property_map(part), np);
+  const std::size_t number_of_parts = decomposer.compose_parts<Concurrency>(CGAL::make_property_map(part), np);
 
   bool ok = write_level_cubes(o.dir, prior) && write_fused_leaves(o.dir, prior);
   const int slice = write_slices(o, prior, tsdf, ok);

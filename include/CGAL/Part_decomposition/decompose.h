@@ -14,6 +14,7 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
+#include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/part_hierarchy.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
@@ -21,17 +22,13 @@
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/bounded_volume.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
-#include <CGAL/Part_decomposition/internal/residual_patches.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#include <Eigen/Dense>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -40,8 +37,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
-#include <limits>
-#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -59,7 +54,7 @@ struct Stage_timings
   double fitting = 0.;           ///< fitting zones and superquadric fitting
   double fitting_zones = 0.;     ///< of which the fitting zones
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
-  double assignment = 0.;        ///< superquadric-to-mesh assignment and primitive output
+  double assignment = 0.;        ///< assignment, thin-sheet merge and composition with the pieces
   double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
   double thin_parts = 0.;        ///< the finer pass of `thin_part_resolution` and its thin parts (0 without it)
   double total = 0.;             ///< the whole call, input checks included
@@ -69,53 +64,6 @@ struct Stage_timings
 };
 
 namespace internal {
-
-// A piece bounds a volume of the distance field if at least this fraction of its area separates
-// the field's inside from its outside, probed at this depth, in voxels of the field, on both sides
-// of each face: an open sheet has the outside on both sides, a piece thinner than a voxel too.
-constexpr double bounding_probe_depth = 1.;
-constexpr double minimum_bounding_fraction = 0.5;
-// A piece whose non-manifold junctions (edges of three faces or more) make up at least this
-// fraction of the length of its edges is an assembly of sheets (walls and shelves glued along
-// lines), whose parts are its sheets; a scan's few non-manifold edges make up far less. The CAD-style
-// set gives the same parts from 0.0003 to 0.01 (benchmark/Part_decomposition/RESULTS.md).
-constexpr double maximum_junction_fraction = 0.001;
-
-// The box-like superquadric of the principal-axis bounding box of a surface given as triangles
-// (`points` holds three corners per triangle): what a part gets when no primitive was fitted to
-// it (a flat sheet has no volume to fit). The axes are those of the surface's second moments, so
-// that a plate of two large triangles gets the axes of its rectangle, not of its diagonal.
-template <typename GeomTraits>
-Superquadric<GeomTraits> bounding_superquadric(const std::vector<std::array<double, 3> >& points)
-{
-  CGAL_precondition(points.size() % 3 == 0);
-  // moments relative to a corner: far-off meshes stay accurate
-  const Eigen::Vector3d origin =
-    points.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(points[0][0], points[0][1], points[0][2]);
-  std::vector<Eigen::Vector3d> relative;
-  relative.reserve(points.size());
-  for(const std::array<double, 3>& p : points) relative.push_back(Eigen::Vector3d(p[0], p[1], p[2]) - origin);
-  Part_box box;
-  for(std::size_t t = 0; t + 2 < relative.size(); t += 3)
-    add_triangle_moments(box, relative[t], relative[t + 1], relative[t + 2]);
-  fit_box_to_points(box, relative);
-  return box_superquadric<GeomTraits>(box, origin);
-}
-
-// The mean absolute radial distance from the points to the surface of `sq`, over the points at a
-// fixed stride that leaves at most `samples` of them: a large part costs no more than a small one.
-template <typename GeomTraits>
-double mean_surface_distance(const Superquadric<GeomTraits>& sq, const std::vector<std::array<double, 3> >& points,
-                             std::size_t samples = 30000)
-{
-  typedef typename GeomTraits::Point_3 Point_3;
-  const std::size_t stride = (points.size() + samples - 1) / samples;
-  double sum = 0.;
-  std::size_t n = 0;
-  for(std::size_t k = 0; k < points.size(); k += stride, ++n)
-    sum += std::abs(sq.signed_distance(Point_3(points[k][0], points[k][1], points[k][2])));
-  return n == 0 ? 0. : sum / double(n);
-}
 
 // Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
 // parameter out of its range is an error whatever the mesh.
@@ -133,23 +81,188 @@ void check_stage_parameters(const NamedParameters& np)
   read_hierarchy_parameters(np);
 }
 
+inline bool any_of_flags(const std::vector<std::uint8_t>& flags)
+{
+  return std::find(flags.begin(), flags.end(), std::uint8_t(1)) != flags.end();
+}
+
+// The results of the stages of one decomposition, as the stage functions return them.
+template <typename GeomTraits>
+struct Stage_results
+{
+  Piece_segmentation pieces;
+  std::vector<std::uint8_t> volumetric_pieces; // per piece; empty before the distance field
+  Hierarchical_prior prior;
+  Truncated_signed_distance_field tsdf;
+  Fitting_zones zones;
+  Superquadric_fitting_result<GeomTraits> fitting;
+  Volumetric_parts volumetric;
+  Composed_parts<GeomTraits> composed;
+  Part_hierarchy<GeomTraits> hierarchy;
+};
+
+// The volumetric stages; returns whether the primitives were fitted (not if the distance field
+// shows that no piece bounds a volume). The fitting's own loops are short (one primitive at a
+// time), so its sequential part is the longest of the pipeline: the over-segmentation runs next
+// to it, and the prior and the distance field next to each other before it.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces,
+                           Stage_results<GT>& s, Stage_timings& t)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  bool fitted = false;
+  s.volumetric.patches.assign(num_faces(tm), 0);
+  run_side_by_side<ConcurrencyTag>(
+    [&] {
+      run_side_by_side<ConcurrencyTag>(
+        [&] { add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); }); },
+        [&] { add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf<ConcurrencyTag>(tm, np); }); });
+      if(use_pieces)
+      {
+        s.volumetric_pieces = Part_decomposition::volumetric_pieces<ConcurrencyTag>(tm, s.pieces, s.tsdf, np);
+        if(!any_of_flags(s.volumetric_pieces)) return;
+      }
+      const int cap = read_fitting_parameters(np).fitting_resolution_cap;
+      add_seconds(t.fitting_zones, [&] {
+        s.zones = compute_fitting_zones<ConcurrencyTag>(s.prior.classes, s.tsdf,
+                                                        fitting_resolutions(s.prior.resolutions, cap), np);
+      });
+      add_seconds(t.fitting, [&] { s.fitting = fit_superquadrics<ConcurrencyTag, GT>(s.prior, s.tsdf, s.zones, np); });
+      t.fitting += t.fitting_zones;
+      fitted = true;
+    },
+    [&] {
+      add_seconds(t.over_segmentation, [&] {
+        over_segment<ConcurrencyTag>(tm, boost::make_iterator_property_map(s.volumetric.patches.begin(), fim), np);
+      });
+    });
+  return fitted;
+}
+
+// The parts of the primitives (assignment, residual patches, thin-sheet merge) and their
+// composition with the pieces.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fitted, Stage_results<GT>& s)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  Volumetric_parts& v = s.volumetric;
+  if(fitted)
+  {
+    v.parts.assign(num_faces(tm), 0);
+    const auto part_map = boost::make_iterator_property_map(v.parts.begin(), fim);
+    v.part_to_primitive = assign_parts<ConcurrencyTag>(
+      tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.fitting.normalization,
+      part_map, np);
+    if(read_assignment_parameters(np).keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
+    if(read_sheet_merging_parameters(np).merge_thin_sheets)
+      merge_thin_sheet_parts<ConcurrencyTag>(tm, part_map, v.part_to_primitive, s.fitting, s.tsdf, np);
+  }
+  s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
+}
+
+// The parts of one decomposition: per face index its part, per part its superquadric.
+template <typename GeomTraits>
+struct Decomposition_pass
+{
+  std::vector<std::size_t> parts;
+  std::vector<Superquadric<GeomTraits> > primitives;
+  std::size_t number_of_parts = 0;
+  double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
+};
+
+// The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
+// it is not that of the composed parts.
+template <typename GT, typename TriangleMesh, typename NamedParameters>
+void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
+                   Decomposition_pass<GT>& out, Stage_timings& t)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
+  Part_hierarchy<GT>* hierarchy_out =
+    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
+  const std::size_t composed = s.composed.number_of_parts();
+  std::size_t K = composed;
+  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && composed > 1))
+    add_seconds(t.hierarchy, [&] {
+      s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
+      const std::size_t default_parts = s.hierarchy.level_below_cost(composed, hp.maximum_merge_cost);
+      K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
+      if(hierarchy_out != nullptr)
+      {
+        *hierarchy_out = s.hierarchy;
+        hierarchy_out->default_number_of_parts = default_parts;
+      }
+    });
+  if(K == composed && !hp.has_number_of_parts)
+  {
+    out.parts = s.composed.parts;
+    out.primitives = s.composed.part_primitives;
+  }
+  else
+  {
+    K = (std::min)(K, s.hierarchy.number_of_leaves());
+    out.parts = s.hierarchy.labels(K);
+    out.primitives.clear();
+    for(std::size_t n : s.hierarchy.level(K)) out.primitives.push_back(s.hierarchy.nodes[n].primitive);
+  }
+  out.number_of_parts = K;
+}
+
+// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`: the
+// stage functions in their documented order. `np` holds the normalization.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposition_pass<GT>& out,
+                    Stage_timings& timings)
+{
+  timings.overlapping = is_parallel_tag<ConcurrencyTag>();
+  const bool use_pieces = read_piece_parameters(np).use_pieces;
+  Stage_results<GT> s;
+  // the stage times start at 0: each is added once
+  const bool needs_volume = add_seconds(timings.pieces, [&] {
+    if(!use_pieces) return true;
+    s.pieces = segment_pieces<ConcurrencyTag>(tm, np);
+    return any_of_flags(Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np));
+  });
+  const bool fitted = needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, s, timings);
+  add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
+  cut_hierarchy(tm, np, s, out, timings);
+  out.scale = read_normalization(tm, np).scale();
+}
+
+// The parameters of one pass: `np` with its resolutions, caps and normalization given explicitly,
+// so that both passes of `thin_part_resolution` have one type (one instantiation of the pipeline).
+template <typename NamedParameters>
+auto pass_parameters(const NamedParameters& np, const std::vector<int>& resolutions, int fitting_cap, int prior_cap,
+                     const Normalization& normalization)
+{
+  return parameters::combine(np, parameters::voxel_resolutions(resolutions),
+                             parameters::fitting_resolution_cap(fitting_cap),
+                             parameters::prior_resolution_cap(prior_cap), parameters::normalization(normalization));
+}
+
+// A part of the finer pass is thin if its superquadric's smallest semi-axis is below this length
+// of the normalized cube (5 voxels of the default 64^3 grid; tuned on half A of the development
+// shapes, see benchmark/Part_decomposition/RESULTS.md).
+constexpr double thin_part_semi_axis = 5. / 64.;
 } // namespace internal
 
 /*!
 \ingroup PkgPartDecompositionRef
-The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1):
-`segment_pieces()`, `compute_prior()`, `compute_distance_field()`, `fit_primitives()`,
-`over_segment()` and `assign_parts()` (which ends with the thin-sheet merge, `merge_thin_sheets()`,
-and the composition with the pieces), in this order, each keeping its result for inspection.
-`decompose()` runs them all in one call. The volumetric stages (prior to over-segmentation) may be
-left out when `needs_volumetric_stages()` is `false`.
-`compute_fitting_zones()`, between the distance field and the fit, is optional: it lets the
-zones of the fitter be inspected.
+The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1), keeping
+the result of each stage for inspection. Its constructor fixes the mesh, its maps and its
+normalization; each function runs one stage with the stage function of the same meaning
+(`segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`, `compute_fitting_zones()`,
+`fit_superquadrics()`, `over_segment()`, then `compose_parts()` for the parts and
+`build_part_hierarchy()`), with the named parameters given to it, to which the mesh, vertex point
+map, face index map and normalization of the decomposer are added.
 
-Every stage function takes its own named parameters (those of the function it calls, listed in
-its documentation); the mesh, vertex point map, face index map and normalization of the
-decomposer are added to them. A `normalization` or `normalization_margin` given to a stage must be
-the decomposer's.
+A stage computes the earlier stages it needs that are missing, with its own named parameters, and
+drops the results that depended on an earlier result it replaces: the stages may be called in
+any order, and `compose_parts()` alone gives the parts of `decompose()` without the hierarchy's
+merges. The results of a stage not computed yet are empty. A named parameter out of its range,
+and a `normalization` or `normalization_margin` other than the decomposer's, throw
+`Invalid_input` (`INVALID_PARAMETER`).
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam GeomTraits a model of `PartDecompositionTraits`; `CGAL::Default` means the kernel of the
@@ -231,53 +344,34 @@ public:
   /// \name Stages
   /// @{
 
-  /*!
-  splits the mesh into its pieces and their regions between concave creases with
-  `Part_decomposition::segment_pieces()` (its named parameters, and `minimum_part_area`).
-  `assign_parts()` calls it if it was not called, unless `use_pieces(false)` is given; afterwards
-  `needs_volumetric_stages()` tells whether the other stages are needed.
-  */
+  /// splits the mesh into its pieces and their regions with `Part_decomposition::segment_pieces()`;
+  /// once the distance field is computed too, an open piece that bounds a volume of it faces out
+  /// of it (`volumetric_pieces()`).
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_piece_adjacency = internal::piece_adjacency<ConcurrencyTag>(m_tm, m_fim, m_vpm, with_mesh(np));
-    const internal::Piece_parameters p = internal::read_piece_parameters(np);
-    m_pieces = internal::segment_pieces_of_graph(m_piece_adjacency, p);
-    m_crease_angle = p.crease_angle;
-    m_splittable_piece = internal::splittable_pieces(m_piece_adjacency, m_pieces.piece, m_pieces.number_of_pieces,
-                                                     p.minimum_part_area * m_pieces.area,
-                                                     internal::convexity_tolerance);
+    m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
     m_has_pieces = true;
-    mark_volumetric_pieces();
-    return m_pieces;
+    drop_parts();
+    if(m_has_tsdf) volumetric_pieces(np);
+    return m_s.pieces;
   }
 
-  /// whether `assign_parts()` with the named parameters `np` needs the volumetric stages (prior,
-  /// distance field, fit, over-segmentation): with `use_pieces(false)`, or if a piece can hold
-  /// several parts of which its surface does not show the boundaries. Such a piece is not convex
-  /// (an edge is concave by at least one degree as the mesh is oriented), has at
-  /// least twice `minimum_part_area`, and, once `compute_distance_field()` was called, bounds a
-  /// volume of the distance field, closed or not:
-  /// - at least half of its area separates the field's inside from its outside, probed one voxel
-  ///   away on both sides of each face (an open sheet has the outside on both sides, a piece
-  ///   thinner than a voxel too, a wall inside a volume the inside on both); this holds for a scan
-  ///   with holes and for each piece of a group that encloses space together;
-  /// - it is not an assembly of sheets: its non-manifold junctions (edges of three faces or more)
-  ///   make up less than 0.1% of the length of its edges, so that a few defective edges do not
-  ///   count but the walls and shelves of a cabinet do; the parts of an assembly of sheets are its
-  ///   regions.
-  ///
-  /// The volumetric parts are used in such pieces only. Before the distance field is known, this
-  /// function tells whether it is worth computing.
-  /// \pre `segment_pieces()` was called, or `use_pieces(false)` is given.
+  /// whether the parts of `compose_parts()` with the named parameters `np` need the volumetric
+  /// stages (prior, distance field, fit, over-segmentation): with `use_pieces(false)`, or if a
+  /// piece is splittable (`splittable_pieces()`) and, once the distance field is computed, the
+  /// volumetric stages decompose it (`volumetric_pieces()`). Before the distance field is known,
+  /// it tells whether it is worth computing. Segments the pieces if they are missing.
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values()) const
+  bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    if(!internal::read_piece_parameters(np).use_pieces || !m_has_pieces) return true;
-    for(std::uint8_t v : m_volumetric_piece)
-      if(v) return true;
-    return false;
+    if(!internal::read_piece_parameters(np).use_pieces) return true;
+    if(!m_has_pieces) segment_pieces(np);
+    if(m_has_tsdf) return internal::any_of_flags(volumetric_pieces(np));
+    return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
   }
 
   /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
@@ -285,252 +379,198 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_prior = true;
-    m_has_zones = false;
-    return m_prior;
+    drop_fitting();
+    return m_s.prior;
   }
 
-  /// computes the zones of the fitter from the prior and the distance field with
-  /// `compute_fitting_zones()` at the `fitting_resolutions()` of the prior with the
-  /// `fitting_resolution_cap` of `np`; `fit_primitives()` uses them (it computes them itself if
-  /// this function was not called after `compute_prior()` and `compute_distance_field()`). Pass the
-  /// same `flow_zone_tolerance`, `use_freeze_zone` and `fitting_resolution_cap` as to
-  /// `fit_primitives()`.
-  /// \pre `compute_prior()` and `compute_distance_field()` were called.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    CGAL_precondition(m_has_prior && m_has_tsdf);
-    if(!m_has_prior || !m_has_tsdf)
-      throw std::logic_error("Part_decomposer::compute_fitting_zones() needs the prior and the distance field");
-    const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
-    m_zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_prior.classes, m_tsdf, fitting_resolutions(m_prior.resolutions, cap), np);
-    m_has_zones = true;
-    return m_zones;
-  }
-
-  /// computes the truncated signed distance field with `compute_tsdf()`, on the finest grid of
-  /// the prior's resolutions (pass the same `voxel_resolutions` as to `compute_prior()`).
+  /// computes the truncated signed distance field with `compute_tsdf()`; once the pieces are
+  /// segmented too, an open piece that bounds a volume of it faces out of it (`volumetric_pieces()`).
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_tsdf = true;
-    m_has_zones = false;
-    if(m_has_pieces) mark_volumetric_pieces();
-    return m_tsdf;
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
+    drop_fitting();
+    if(m_has_pieces) volumetric_pieces(np);
+    return m_s.tsdf;
   }
 
-  /// fits the superquadrics with `fit_superquadrics()`.
-  /// \pre `compute_prior()` and `compute_distance_field()` were called.
+  /// computes the zones of the fitter with `Part_decomposition::compute_fitting_zones()` at the
+  /// `fitting_resolutions()` of the prior with the `fitting_resolution_cap` of `np`, computing the
+  /// prior and the distance field if missing. `fit_primitives()` computes them if missing.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
+    if(!m_has_tsdf) compute_distance_field<ConcurrencyTag>(np);
+    const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
+    m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
+      m_s.prior.classes, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
+    m_has_zones = true;
+    drop_fitting(false);
+    return m_s.zones;
+  }
+
+  /// fits the superquadrics with `fit_superquadrics()`, computing the zones (and the prior and the
+  /// distance field) if missing.
   /// \throws Invalid_input (`INVALID_PARAMETER`) if the prior and the distance field have different
-  /// resolutions or normalizations.
+  /// resolutions.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    CGAL_precondition(m_has_prior && m_has_tsdf);
-    if(!m_has_prior || !m_has_tsdf)
-      throw std::logic_error("Part_decomposer::fit_primitives() needs the prior and the distance field");
-    internal::check_parameter(m_tsdf.values.resolution() == m_prior.classes.resolution(),
-                              "the resolution of the distance field", "the finest resolution of the prior");
-    check_frame(m_prior.normalization, "the normalization of the prior");
-    check_frame(m_tsdf.normalization, "the normalization of the distance field");
     check_frame_parameters(np);
-    m_fitting = m_has_zones ? fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, m_zones, np)
-                            : fit_superquadrics<ConcurrencyTag, Geom_traits>(m_prior, m_tsdf, np);
+    if(!m_has_zones) compute_fitting_zones<ConcurrencyTag>(np);
+    m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
     m_has_fitting = true;
-    return m_fitting;
+    drop_parts();
+    return m_s.fitting;
   }
 
-  /// computes the curvature-aware over-segmentation with `Part_decomposition::over_segment()`
-  /// and returns the number of patches; its face graph and dihedral angles are kept for
-  /// `merge_thin_sheets()`.
+  /// computes the over-segmentation with `Part_decomposition::over_segment()` and returns the
+  /// number of patches.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_number_of_patches =
-      internal::over_segment_labels<ConcurrencyTag>(m_tm, m_fim, m_patches, with_mesh(np), nullptr, &m_adjacency);
+    m_s.volumetric.patches.assign(num_faces(m_tm), 0);
+    const std::size_t count = Part_decomposition::over_segment<ConcurrencyTag>(
+      m_tm, boost::make_iterator_property_map(m_s.volumetric.patches.begin(), m_fim), with_mesh(np));
     m_has_patches = true;
-    return m_number_of_patches;
+    drop_parts();
+    return count;
   }
 
   /*!
-  assigns every patch to a primitive with `Part_decomposition::assign_parts()`, merges the thin
-  sheets with `merge_thin_sheets()` unless the named parameter `merge_thin_sheets` is `false` (see
-  `decompose()`), composes these parts with the pieces and regions of `segment_pieces()` (calling
-  it if needed) unless `use_pieces` is `false`, writes the part id (0 to `K-1`) of every face to
-  `face_part_map`, once, and returns `K`. Part `k` is explained by `part_primitives()[k]`; its
-  fitted primitive, if any, is `part_to_primitive()[k]` (else `no_primitive`).
+  computes the parts as `decompose()` does before its part hierarchy, writes the part id (0 to
+  `K-1`) of every face to `face_part_map`, once, and returns `K`: if `needs_volumetric_stages(np)`,
+  the primitives are assigned to the patches (`assign_parts()`), the residual patches kept
+  (`separate_residual_patches()`) with `keep_residual_patches(true)` and the thin sheets merged
+  (`merge_thin_sheet_parts()`) unless `merge_thin_sheets(false)` is given; then the parts are
+  composed with the pieces (`Part_decomposition::compose_parts()`). The stages it needs are
+  computed if missing. Part `k` is explained by `part_primitives()[k]`.
   \tparam FacePartMap a model of `WritablePropertyMap` with
   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
-  \pre `fit_primitives()` and `over_segment()` were called, unless `needs_volumetric_stages(np)`
-  is `false`.
   */
   template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  std::size_t assign_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
+  std::size_t compose_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
   {
-    const internal::Piece_parameters pieces = internal::read_piece_parameters(np);
-    if(pieces.use_pieces && !m_has_pieces) segment_pieces<ConcurrencyTag>(np);
-    const bool volumetric = needs_volumetric_stages(np);
-    CGAL_precondition(!volumetric || (m_has_fitting && m_has_patches));
-    if(volumetric && (!m_has_fitting || !m_has_patches))
-      throw std::logic_error("Part_decomposer::assign_parts() needs the primitives and the patches");
-    check_frame_parameters(np);
-    // new parts: the residual faces and the hierarchy of an earlier call no longer hold
-    m_residual_face.clear();
-    m_has_hierarchy = false;
-    if(volumetric)
+    const auto mnp = with_mesh(np);
+    m_use_pieces = internal::read_piece_parameters(np).use_pieces;
+    bool fitted = needs_volumetric_stages(np);
+    // the distance field may show that no piece bounds a volume
+    if(fitted && m_use_pieces && !m_has_tsdf)
     {
-      check_frame(m_fitting.normalization, "the normalization of the fitting");
-      const internal::Assignment_parameters ap = internal::read_assignment_parameters(np);
-      m_part_to_primitive = internal::assign_patches_to_primitives<ConcurrencyTag>(
-        m_tm, m_fim, m_vpm, m_patches, m_fitting.labels, m_normalization, ap, m_adjacency, m_parts);
-      if(ap.keep_residual_patches && m_has_prior) keep_residual_patches(ap.residual_tolerance);
-      m_has_parts = true;
-      if(internal::read_sheet_merging_parameters(np).merge_thin_sheets)
-        merge_thin_sheet_parts<ConcurrencyTag>();
+      compute_distance_field<ConcurrencyTag>(np);
+      fitted = needs_volumetric_stages(np);
     }
+    if(fitted)
+    {
+      if(!m_has_fitting) fit_primitives<ConcurrencyTag>(np);
+      if(!m_has_patches) over_segment<ConcurrencyTag>(np);
+    }
+    m_s.volumetric.parts.clear();
+    m_s.volumetric.residual_faces.clear();
+    internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s);
     m_has_parts = true;
-    if(pieces.use_pieces) compose_with_pieces(volumetric, pieces.minimum_part_area);
-    else make_part_primitives();
-    mark_residual_parts();
-    internal::put_face_values(m_tm, m_fim, m_parts, face_part_map);
-    return m_part_to_primitive.size();
-  }
-
-  /*!
-  merges the parts that tile one thin sheet with `merge_thin_sheet_parts()`, on the face graph and
-  dihedral angles of the over-segmentation, and returns the new number of parts. `assign_parts()`
-  calls it unless `merge_thin_sheets(false)` is given; call it after such an `assign_parts()` to
-  compare `parts()` before and after.
-  \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (for the depth of the
-  claimed voxels); the result is the same
-  \pre `assign_parts()` was called.
-  */
-  template <typename ConcurrencyTag = CGAL::Sequential_tag>
-  std::size_t merge_thin_sheets()
-  {
-    CGAL_precondition(m_has_parts);
-    if(!m_has_parts)
-      throw std::logic_error("Part_decomposer::merge_thin_sheets() needs the parts");
-    merge_thin_sheet_parts<ConcurrencyTag>();
-    make_part_primitives();
-    mark_residual_parts(); // the parts were renumbered
     m_has_hierarchy = false;
-    return m_part_to_primitive.size();
+    internal::put_face_values(m_tm, m_fim, m_s.composed.parts, face_part_map);
+    return m_s.composed.number_of_parts();
+  }
+
+  /// \deprecated the former name of `compose_parts()`, whose name now clashes with the free
+  /// primitive assignment `Part_decomposition::assign_parts()`.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  CGAL_DEPRECATED std::size_t assign_parts(FacePartMap face_part_map,
+                                           const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    return compose_parts<ConcurrencyTag>(face_part_map, np);
   }
 
   /*!
-  builds the part hierarchy of the parts of `assign_parts()` with `build_part_hierarchy()`'s merge
-  order and returns it. Its leaves are the finest parts: the parts of `assign_parts()` cut by the
-  regions of `segment_pieces()` (before small parts were merged) and, in the pieces the volumetric
-  stages decomposed, by the patches of `over_segment()`. The merges inside a part come first, so
-  that the parts of `assign_parts()` are a level of the tree (level `part_primitives().size()`, its
-  `default_number_of_parts`), with their primitives; the other nodes get their box-like
-  superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_below_cost()`
-  (named parameter `maximum_merge_cost`), from which merges are ordered by size first.
-  \pre `assign_parts()` was called.
+  builds the part hierarchy of the parts of `compose_parts()` with
+  `Part_decomposition::build_part_hierarchy(tm, pieces, parts, np)` and returns it, composing the
+  parts with default named parameters if they are missing. The parts of `compose_parts()` are
+  level `part_primitives().size()` of the tree. `decompose()` goes on from that level with
+  `Part_hierarchy::level_below_cost()` (named parameter `maximum_merge_cost`), from which merges
+  are ordered by size first.
   */
   const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
   {
-    CGAL_precondition(m_has_parts);
-    if(!m_has_parts)
-      throw std::logic_error("Part_decomposer::build_hierarchy() needs the parts");
-    const internal::Face_adjacency& adj = m_has_pieces ? m_piece_adjacency : m_adjacency;
-    std::vector<std::size_t> piece;
-    std::vector<int> orientation;
-    if(m_has_pieces) { piece = m_pieces.piece; orientation = m_pieces.orientation; }
-    else orientation.assign(internal::label_pieces(adj, piece), 1);
-    // leaves: (part, volumetric part, region, patch); subgroups: (part, volumetric part)
-    const std::size_t nf = m_parts.size();
-    std::vector<std::array<std::size_t, 4> > key(nf);
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      const bool patch = m_has_patches && (!m_has_pieces || m_volumetric_piece[piece[i]]);
-      key[i] = {{m_parts[i], m_volume_part.empty() ? 0 : m_volume_part[i], m_has_pieces ? m_pieces.region[i] : 0,
-                 patch ? m_patches[i] : 0}};
-    }
-    std::vector<std::size_t> leaf, subgroup;
-    internal::index_of_keys(key, leaf);
-    const std::size_t number_of_leaves = internal::renumber_by_first_face(leaf); // the finest level's numbering
-    for(auto& k : key) k[2] = k[3] = 0;
-    internal::index_of_keys(key, subgroup);
-    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
-    m_hierarchy = internal::hierarchy_of_leaves<Geom_traits>(adj, corners, leaf, number_of_leaves, subgroup, m_parts,
-                                                             m_part_primitives, piece, orientation, maximum_merge_cost);
+    internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
+    if(!m_has_parts) compose_parts(boost::dummy_property_map());
+    m_s.hierarchy = build_part_hierarchy(
+      m_tm, m_s.pieces, m_s.composed,
+      with_mesh(parameters::combine(parameters::use_pieces(m_use_pieces), parameters::maximum_merge_cost(maximum_merge_cost))));
     m_has_hierarchy = true;
-    return m_hierarchy;
+    return m_s.hierarchy;
   }
 
   /*!
   writes the parts of level `k` of the hierarchy to `face_part_map` (ids `0` to `k - 1`, numbered
-  by smallest face index), their superquadrics to `primitives` in the same order, and returns `k`.
-  A `k` above the number of leaves is clamped to it: the finest level.
+  by smallest face index), their superquadrics to `primitives` in the same order, and returns `k`,
+  building the hierarchy if it is missing. A `k` above the number of leaves is clamped to it.
   \tparam FacePartMap a model of `WritablePropertyMap` with
   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
   \tparam OutputIterator a model of `OutputIterator` accepting `Superquadric<Geom_traits>`
-  \pre `build_hierarchy()` was called.
   \throws Invalid_input (`INVALID_PARAMETER`) if `k` is 0.
   */
   template <typename FacePartMap, typename OutputIterator = CGAL::Emptyset_iterator>
-  std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map,
-                             OutputIterator primitives = OutputIterator()) const
+  std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map, OutputIterator primitives = OutputIterator())
   {
-    CGAL_precondition(m_has_hierarchy);
-    if(!m_has_hierarchy)
-      throw std::logic_error("Part_decomposer::parts_at_level() needs the hierarchy");
     internal::check_parameter(k >= 1, "number_of_parts");
-    k = (std::min)(k, m_hierarchy.number_of_leaves());
-    internal::put_face_values(m_tm, m_fim, m_hierarchy.labels(k), face_part_map);
-    for(std::size_t n : m_hierarchy.level(k)) *primitives++ = m_hierarchy.nodes[n].primitive;
+    if(!m_has_hierarchy) build_hierarchy();
+    k = (std::min)(k, m_s.hierarchy.number_of_leaves());
+    internal::put_face_values(m_tm, m_fim, m_s.hierarchy.labels(k), face_part_map);
+    for(std::size_t n : m_s.hierarchy.level(k)) *primitives++ = m_s.hierarchy.nodes[n].primitive;
     return k;
   }
   /// @}
 
   /// \name Results
+  /// Each is empty until its stage has run.
   /// @{
 
-  /// the pieces and their regions; once `compute_distance_field()` was called, an open piece that
+  /// the pieces and their regions; once the distance field is computed, an open piece that
   /// bounds a volume faces out of it, and its regions are those of that orientation.
-  /// \pre `segment_pieces()` was called.
-  const Piece_segmentation& pieces() const { return m_pieces; }
+  const Piece_segmentation& pieces() const { return m_s.pieces; }
   /// the normalization of the mesh into the cube of the grids.
   const Normalization& normalization() const { return m_normalization; }
   /// the face index map that indexes `patches()` and `parts()`.
   const Face_index_map& face_index_map() const { return m_fim; }
-  /// the prior. \pre `compute_prior()` was called.
-  const Hierarchical_prior& prior() const { return m_prior; }
-  /// the zones of the fitter. \pre `compute_fitting_zones()` was called.
-  const Fitting_zones& fitting_zones() const { return m_zones; }
-  /// the distance field. \pre `compute_distance_field()` was called.
-  const Truncated_signed_distance_field& distance_field() const { return m_tsdf; }
-  /// the fitted primitives and claimed voxels. \pre `fit_primitives()` was called.
-  const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_fitting; }
-  /// the patch of each face, indexed by the face index map. \pre `over_segment()` was called.
-  const std::vector<std::size_t>& patches() const { return m_patches; }
-  /// the part of each face, indexed by the face index map. \pre `assign_parts()` was called.
-  const std::vector<std::size_t>& parts() const { return m_parts; }
-  /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`
-  /// when no primitive was fitted to it. \pre `assign_parts()` was called.
-  const std::vector<std::size_t>& part_to_primitive() const { return m_part_to_primitive; }
-  /// for each part, its superquadric in input coordinates: its fitted primitive if no other part
-  /// has the same one and it lies on average as close to the part's vertices, else (and for a
-  /// part without one) the box-like superquadric of its principal-axis bounding box.
-  /// \pre `assign_parts()` was called.
-  const std::vector<Primitive>& part_primitives() const { return m_part_primitives; }
-  /// per part, 1 if it is a residual part: surface details that no primitive explains (see the
-  /// named parameter `keep_residual_patches` of `decompose()`), whose superquadric is only the
-  /// box-like superquadric of its principal-axis bounding box. \pre `assign_parts()` was called.
-  const std::vector<std::uint8_t>& residual_parts() const { return m_residual_parts; }
-  /// the part hierarchy. \pre `build_hierarchy()` was called.
-  const Part_hierarchy<Geom_traits>& hierarchy() const { return m_hierarchy; }
+  /// the prior.
+  const Hierarchical_prior& prior() const { return m_s.prior; }
+  /// the zones of the fitter.
+  const Fitting_zones& fitting_zones() const { return m_s.zones; }
+  /// the distance field.
+  const Truncated_signed_distance_field& distance_field() const { return m_s.tsdf; }
+  /// the fitted primitives and claimed voxels.
+  const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_s.fitting; }
+  /// the patch of each face, indexed by the face index map.
+  const std::vector<std::size_t>& patches() const { return m_s.volumetric.patches; }
+  /// the parts of the volumetric stages, before their composition with the pieces.
+  const Volumetric_parts& volumetric_parts() const { return m_s.volumetric; }
+  /// the parts of `compose_parts()`.
+  const Composed_parts<Geom_traits>& composed_parts() const { return m_s.composed; }
+  /// the part of each face, indexed by the face index map.
+  const std::vector<std::size_t>& parts() const { return m_s.composed.parts; }
+  /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`.
+  const std::vector<std::size_t>& part_to_primitive() const { return m_s.composed.part_to_primitive; }
+  /// for each part, its superquadric in input coordinates (see `Composed_parts::part_primitives`).
+  const std::vector<Primitive>& part_primitives() const { return m_s.composed.part_primitives; }
+  /// per part, 1 if it is a residual part (see the named parameter `keep_residual_patches` of
+  /// `decompose()`), whose superquadric is only the box-like superquadric of its bounding box.
+  const std::vector<std::uint8_t>& residual_parts() const { return m_s.composed.residual_parts; }
+  /// the part hierarchy.
+  const Part_hierarchy<Geom_traits>& hierarchy() const { return m_s.hierarchy; }
   /// @}
 
 private:
@@ -543,151 +583,34 @@ private:
                                parameters::normalization(m_normalization));
   }
 
-  // A normalization computed in another frame than the decomposer's: its grids would not match.
-  void check_frame(const Normalization& n, const char* what) const
-  {
-    internal::check_parameter(internal::same_frame(n, m_normalization), what,
-                              "the decomposer's (same center and scale)");
-  }
-
   // A normalization or margin given to one stage would put its grids in another frame.
   template <typename NamedParameters>
   void check_frame_parameters(const NamedParameters& np) const
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    check_frame(choose_parameter(get_parameter(np, internal_np::normalization), m_normalization), "normalization");
+    internal::check_parameter(
+      internal::same_frame(choose_parameter(get_parameter(np, internal_np::normalization), m_normalization), m_normalization),
+      "normalization", "the decomposer's (same center and scale)");
     internal::check_parameter(choose_parameter(get_parameter(np, internal_np::normalization_margin), m_margin) == m_margin,
                               "normalization_margin", "the decomposer's (given to its constructor)");
   }
 
-  // The pieces the volumetric stages decompose: the splittable pieces, and once the distance field
-  // is known, those of them that bound a volume of it and are not assemblies of sheets.
-  void mark_volumetric_pieces()
+  // The volumetric pieces, computed once per pieces and distance field (they turn the pieces).
+  template <typename NamedParameters>
+  const std::vector<std::uint8_t>& volumetric_pieces(const NamedParameters& np)
   {
-    m_volumetric_piece = m_splittable_piece;
-    if(!m_has_tsdf) return;
-    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
-    // the triangles by face index, in the unit frame of the field
-    std::vector<internal::Triangle_points> triangles(num_faces(m_tm));
-    for(std::size_t i = 0; i < triangles.size(); ++i)
-      for(int c = 0; c < 3; ++c)
-        triangles[i][std::size_t(c)] = m_normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
-    const double depth = internal::bounding_probe_depth / double(m_tsdf.values.resolution());
-    const internal::Bounding_fractions sides = internal::bounding_area_fractions(
-      triangles, m_pieces.piece, m_pieces.number_of_pieces, m_tsdf.values, depth);
-    const std::vector<double> junction =
-      internal::junction_length_fractions(m_piece_adjacency, corners, m_pieces.piece, m_pieces.number_of_pieces);
-    bool reoriented = false;
-    for(std::size_t p = 0; p < m_pieces.number_of_pieces; ++p)
-    {
-      m_volumetric_piece[p] = m_splittable_piece[p] && sides.bounding[p] >= internal::minimum_bounding_fraction &&
-                              junction[p] < internal::maximum_junction_fraction;
-      // an open piece that bounds a volume faces out of it, as the reader turns closed ones: its
-      // concave creases are those of the solid
-      const int outward = sides.outward[p] < 0. ? -1 : 1;
-      if(m_volumetric_piece[p] && !m_pieces.closed[p] && m_pieces.orientation[p] != outward)
-      {
-        m_pieces.orientation[p] = outward;
-        reoriented = true;
-      }
-    }
-    if(reoriented)
-      m_pieces.number_of_regions = internal::crease_regions(m_piece_adjacency, m_pieces.piece, m_pieces.orientation,
-                                                            m_crease_angle, m_pieces.region);
+    if(m_s.volumetric_pieces.empty())
+      m_s.volumetric_pieces = Part_decomposition::volumetric_pieces(m_tm, m_s.pieces, m_s.tsdf, with_mesh(np));
+    return m_s.volumetric_pieces;
   }
 
-  // The patches no primitive explains (`internal::residual_faces()`) become parts of their own.
-  void keep_residual_patches(double tolerance_in_voxels)
+  void drop_parts() { m_has_parts = m_has_hierarchy = false; }
+  void drop_fitting(bool zones = true)
   {
-    const internal::Face_corners corners(m_tm, m_fim, m_vpm);
-    m_residual_face = internal::residual_faces<Geom_traits>(
-      m_adjacency, corners, m_patches, m_number_of_patches, m_parts, m_part_to_primitive, m_fitting.primitives,
-      m_prior.classes, m_normalization, tolerance_in_voxels / double(m_prior.classes.resolution()));
-    internal::split_residual_parts(m_adjacency, m_residual_face, m_parts, m_part_to_primitive, no_primitive);
-  }
-
-  // A part is residual if most of its area is residual faces; it keeps no fitted primitive.
-  void mark_residual_parts()
-  {
-    const std::size_t K = m_part_to_primitive.size();
-    m_residual_parts.assign(K, 0);
-    if(m_residual_face.empty()) return;
-    std::vector<double> area(K, 0.), residual(K, 0.);
-    for(std::size_t i = 0; i < m_parts.size(); ++i)
-    {
-      area[m_parts[i]] += m_adjacency.area[i];
-      if(m_residual_face[i]) residual[m_parts[i]] += m_adjacency.area[i];
-    }
-    for(std::size_t k = 0; k < K; ++k) m_residual_parts[k] = area[k] > 0. && 2. * residual[k] > area[k];
-  }
-
-  // The thin-sheet merge on the parts, without their primitives (the composition with the pieces
-  // makes them after it).
-  template <typename ConcurrencyTag>
-  void merge_thin_sheet_parts()
-  {
-    check_frame(m_tsdf.normalization, "the normalization of the distance field");
-    internal::merge_thin_sheets_on_faces<ConcurrencyTag>(m_tm, m_vpm, m_fim, m_adjacency, m_tsdf.values, m_fitting,
-                                                         m_parts, m_part_to_primitive);
-  }
-
-  // The parts of the pieces and regions (`internal::compose_parts()`), with the volumetric parts
-  // in the pieces that need them if they were computed; a part keeps the primitive of the
-  // volumetric part covering most of it, or gets its bounding superquadric.
-  void compose_with_pieces(bool volumetric, double minimum_part_area)
-  {
-    std::vector<std::size_t>& volume_part = m_volume_part;
-    volume_part.clear();
-    if(volumetric)
-    {
-      volume_part.swap(m_parts);
-      for(std::size_t i = 0; i < volume_part.size(); ++i)
-        if(!m_volumetric_piece[m_pieces.piece[i]]) volume_part[i] = no_primitive;
-      internal::keep_volume_parts_in_their_regions(m_piece_adjacency, m_pieces.region, volume_part, no_primitive);
-    }
-    const std::vector<std::size_t> source =
-      internal::compose_parts(m_piece_adjacency, m_pieces.region, volume_part,
-                              minimum_part_area * m_pieces.area, m_parts, no_primitive);
-    const std::vector<std::size_t> volume_primitive(m_part_to_primitive);
-    m_part_to_primitive.assign(source.size(), no_primitive);
-    for(std::size_t k = 0; k < source.size(); ++k)
-      if(source[k] != no_primitive) m_part_to_primitive[k] = volume_primitive[source[k]];
-    make_part_primitives();
-  }
-
-  // A part keeps its fitted primitive if no other part has it and it lies on the part's surface
-  // at least as closely as the box-like superquadric of the part's faces; parts that share one
-  // (a part cut by the regions of the pieces, a thin plate the fitter saw as one with its
-  // neighbour), parts without one and parts thinner than the fitting grid get that box.
-  void make_part_primitives()
-  {
-    const std::size_t K = m_part_to_primitive.size(), P = m_fitting.input_primitives.size();
-    std::vector<std::size_t> users(P, 0);
-    for(std::size_t k = 0; k < K; ++k)
-      if(m_part_to_primitive[k] < P) ++users[m_part_to_primitive[k]];
-    std::vector<std::vector<std::array<double, 3> > > points(K);
-    for(auto f : faces(m_tm))
-    {
-      const std::size_t k = m_parts[std::size_t(get(m_fim, f))];
-      if(k >= K) continue;
-      for(auto v : vertices_around_face(halfedge(f, m_tm), m_tm))
-      {
-        const auto& p = get(m_vpm, v);
-        points[k].push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-      }
-    }
-    m_part_primitives.clear();
-    for(std::size_t k = 0; k < K; ++k)
-    {
-      const Primitive box = internal::bounding_superquadric<Geom_traits>(points[k]);
-      const bool own = m_part_to_primitive[k] < P && users[m_part_to_primitive[k]] == 1;
-      if(own && internal::mean_surface_distance(m_fitting.input_primitives[m_part_to_primitive[k]], points[k]) <=
-                  internal::mean_surface_distance(box, points[k]))
-        m_part_primitives.push_back(m_fitting.input_primitives[m_part_to_primitive[k]]);
-      else
-        m_part_primitives.push_back(box);
-    }
+    if(zones) m_has_zones = false;
+    m_has_fitting = false;
+    drop_parts();
   }
 
   const TriangleMesh& m_tm;
@@ -695,124 +618,15 @@ private:
   Face_index_map m_fim;
   double m_margin;
   Normalization m_normalization;
-  Hierarchical_prior m_prior;
-  Truncated_signed_distance_field m_tsdf;
-  Fitting_zones m_zones;
-  Superquadric_fitting_result<Geom_traits> m_fitting;
-  internal::Face_adjacency m_adjacency; // of the over-segmentation, reused by the sheet merge
-  internal::Face_adjacency m_piece_adjacency; // of the pieces, reused by the part composition
-  Piece_segmentation m_pieces;
-  std::vector<std::uint8_t> m_splittable_piece; // per piece: non-convex, large enough to hold two parts
-  double m_crease_angle = defaults::crease_angle;  // of segment_pieces()
-  std::vector<std::uint8_t> m_volumetric_piece; // per piece: decomposed by the volumetric stages
-  std::vector<std::size_t> m_patches;
-  std::size_t m_number_of_patches = 0;
-  std::vector<std::size_t> m_parts;
-  std::vector<std::uint8_t> m_residual_face; // per face: in a residual patch (empty: none kept)
-  std::vector<std::uint8_t> m_residual_parts;
-  std::vector<std::size_t> m_volume_part; // per face: the volumetric part composed with the pieces, or empty
-  std::vector<std::size_t> m_part_to_primitive;
-  std::vector<Primitive> m_part_primitives;
-  Part_hierarchy<Geom_traits> m_hierarchy;
-  bool m_has_pieces = false, m_has_hierarchy = false;
-  bool m_has_prior = false, m_has_zones = false, m_has_tsdf = false, m_has_fitting = false, m_has_patches = false,
-       m_has_parts = false;
+  Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
+  internal::Stage_results<Geom_traits> m_s;
+  bool m_use_pieces = true; // of the last compose_parts(), for the hierarchy
+  // which results are up to date; the stages compute the missing ones
+  bool m_has_pieces = false, m_has_prior = false, m_has_tsdf = false, m_has_zones = false, m_has_fitting = false,
+       m_has_patches = false, m_has_parts = false, m_has_hierarchy = false;
 };
 
 namespace internal {
-
-// The parts of one decomposition: per face index its part, per part its superquadric.
-template <typename GeomTraits>
-struct Decomposition_pass
-{
-  std::vector<std::size_t> parts;
-  std::vector<Superquadric<GeomTraits> > primitives;
-  std::size_t number_of_parts = 0;
-  double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
-};
-
-// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`;
-// `out.parts` is indexed by `fim`, the face index map of both passes and of the final write.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename FIM, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const FIM& fim, const NamedParameters& np, Decomposition_pass<GT>& out,
-                    Stage_timings& timings)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-  const double margin = choose_parameter(get_parameter(np, internal_np::normalization_margin), defaults::normalization_margin);
-  Part_decomposer<TriangleMesh, GT, VPM, FIM> decomposer(tm, vpm, fim, margin);
-
-  internal::check_stage_parameters(np);
-  timings.overlapping = internal::is_parallel_tag<ConcurrencyTag>();
-  out.parts.assign(num_faces(tm), 0);
-  // the stage times start at 0: each is added once
-  internal::add_seconds(timings.pieces, [&] {
-    if(internal::read_piece_parameters(np).use_pieces) decomposer.template segment_pieces<ConcurrencyTag>(np);
-  });
-  // The fitting's own loops are short (one primitive at a time), so its sequential part is the
-  // longest of the pipeline: the over-segmentation runs next to it, and the prior and the
-  // distance field next to each other before it.
-  if(decomposer.needs_volumetric_stages(np))
-  internal::run_side_by_side<ConcurrencyTag>(
-    [&] {
-      internal::run_side_by_side<ConcurrencyTag>(
-        [&] { internal::add_seconds(timings.prior, [&] { decomposer.template compute_prior<ConcurrencyTag>(np); }); },
-        [&] {
-          internal::add_seconds(timings.tsdf, [&] { decomposer.template compute_distance_field<ConcurrencyTag>(np); });
-        });
-      // the distance field may show that no piece bounds a volume
-      if(!decomposer.needs_volumetric_stages(np)) return;
-      internal::add_seconds(timings.fitting_zones, [&] { decomposer.template compute_fitting_zones<ConcurrencyTag>(np); });
-      internal::add_seconds(timings.fitting, [&] { decomposer.template fit_primitives<ConcurrencyTag>(np); });
-      timings.fitting += timings.fitting_zones;
-    },
-    [&] {
-      internal::add_seconds(timings.over_segmentation, [&] { decomposer.template over_segment<ConcurrencyTag>(np); });
-    });
-
-  // the assignment (with the thin-sheet merge unless merge_thin_sheets(false)), then the hierarchy
-  // when it is asked for or its cheap merges may go on, and the level of the hierarchy if it is
-  // not the assignment's
-  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
-  Part_hierarchy<GT>* hierarchy_out =
-    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  const std::size_t assigned = internal::add_seconds(timings.assignment, [&] {
-    return decomposer.template assign_parts<ConcurrencyTag>(boost::dummy_property_map(), np);
-  });
-  std::size_t K = assigned;
-  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && assigned > 1))
-    internal::add_seconds(timings.hierarchy, [&] {
-      decomposer.build_hierarchy(hp.maximum_merge_cost);
-      const std::size_t default_parts = decomposer.hierarchy().level_below_cost(assigned, hp.maximum_merge_cost);
-      K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
-      if(hierarchy_out != nullptr)
-      {
-        *hierarchy_out = decomposer.hierarchy();
-        hierarchy_out->default_number_of_parts = default_parts;
-      }
-    });
-  out.primitives.clear();
-  if(K == assigned && !hp.has_number_of_parts)
-  {
-    out.parts = decomposer.parts();
-    out.primitives = decomposer.part_primitives();
-  }
-  else
-    K = decomposer.parts_at_level(K, boost::make_iterator_property_map(out.parts.begin(), decomposer.face_index_map()),
-                                  std::back_inserter(out.primitives));
-  out.number_of_parts = K;
-  out.scale = decomposer.normalization().scale();
-}
-
-
-// A part of the finer pass is thin if its superquadric's smallest semi-axis is below this length
-// of the normalized cube (5 voxels of the default 64^3 grid; tuned on half A of the development
-// shapes, see benchmark/Part_decomposition/RESULTS.md).
-constexpr double thin_part_semi_axis = 5. / 64.;
 
 // The thin parts of `finer` replace, face by face, the parts of `pass`, each with its superquadric:
 // the parts of `pass` keep their order (those left without faces are dropped), the thin parts
@@ -877,11 +691,15 @@ writes the part id of every face, from 0 to `K-1`, to `face_part_map`. Each part
 one superquadric, optionally written to an output iterator. The same input and parameters give
 the same output, whatever the number of threads.
 
-The stages, each also available on its own: `segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`,
-`fit_superquadrics()`, `over_segment()`, `assign_parts()` and `merge_thin_sheet_parts()`, then
-the part hierarchy (`build_part_hierarchy()`), whose merges go on from the assigned parts as long
-as they cost less than `maximum_merge_cost`; `Part_decomposer` runs them one by one. Every named parameter of these functions is accepted here
-and passed to the stage that reads it; the table below lists them all, as does
+It is the sequence of the stage functions, which give the same parts when called in this
+order with the same named parameters (see the user manual): `segment_pieces()` and
+`splittable_pieces()`; if a piece is splittable, `compute_flow_freeze_prior()`, `compute_tsdf()`
+and `volumetric_pieces()`; if a piece is volumetric, `compute_fitting_zones()`,
+`fit_superquadrics()`, `over_segment()`, `assign_parts()`, `separate_residual_patches()` (with
+`keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
+hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
+cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. Every named
+parameter of these functions is accepted here and passed to the stage that reads it; the table below lists them all, as does
 `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
@@ -1134,7 +952,7 @@ are chained with `parameters::combine()`)
                           voxels of the prior and whose faces are on average farther than
                           `residual_tolerance` from the primitive they were assigned to. Each
                           edge-connected set of them is one part, without fitted primitive, flagged by
-                          `Part_decomposer::residual_parts()`; like any part, it joins a neighbour if it
+                          `Composed_parts::residual_parts` (`separate_residual_patches()`); like any part, it joins a neighbour if it
                           is smaller than `minimum_part_area`.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
@@ -1159,7 +977,7 @@ are chained with `parameters::combine()`)
                           creases (`segment_pieces()`): the volumetric stages decompose only the
                           non-convex pieces that bound a volume, closed or not, whose parts are cut by the regions of
                           `segment_pieces()`; every other piece is decomposed into its regions (see
-                          `Part_decomposer::needs_volumetric_stages()`). If `false`, the parts are
+                          `volumetric_pieces()`). If `false`, the parts are
                           those of the volumetric stages alone, as in the paper. This step is not
                           in the paper.}
     \cgalParamType{`bool`}
@@ -1196,14 +1014,14 @@ are chained with `parameters::combine()`)
   \cgalParamNEnd
   \cgalParamNBegin{number_of_parts}
     \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
-                          hierarchy (`Part_decomposer::build_hierarchy()`), each with the superquadric
+                          hierarchy (`build_part_hierarchy()`), each with the superquadric
                           of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
                           leaves. Without it, the parts are those of the default granularity.}
     \cgalParamType{`std::size_t`, at least 1}
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_merge_cost}
-    \cgalParamDescription{the default granularity: the parts of `Part_decomposer::assign_parts()` go on
+    \cgalParamDescription{the default granularity: the parts of `compose_parts()` go on
                           merging in the order of the part hierarchy as long as each merge costs less
                           than this (`Part_hierarchy::level_below_cost()`; the cost is that of
                           `build_part_hierarchy()`: the volume one box of the union adds to the boxes
@@ -1216,7 +1034,7 @@ are chained with `parameters::combine()`)
     \cgalParamDefault{`0.003`}
   \cgalParamNEnd
   \cgalParamNBegin{part_hierarchy}
-    \cgalParamDescription{if not null, receives the part hierarchy (`Part_decomposer::build_hierarchy()`),
+    \cgalParamDescription{if not null, receives the part hierarchy (`build_part_hierarchy()`),
                           built after the parts; its `default_number_of_parts` is the number of
                           parts of the default granularity (after the merges below
                           `maximum_merge_cost`)}
@@ -1268,21 +1086,31 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
-  typedef typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type FIM;
   const auto t0 = std::chrono::steady_clock::now();
   const int fine = internal::read_thin_part_resolution<TriangleMesh>(np);
-  const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
+  check_input(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  // the normalization of both passes; a given one must be it
+  const Normalization normalization = compute_normalization(tm, np);
+  internal::check_parameter(
+    internal::same_frame(choose_parameter(get_parameter(np, internal_np::normalization), normalization), normalization),
+    "normalization", "the one computed from normalization_margin (same center and scale)");
+  internal::check_stage_parameters(np);
+  const int prior_cap =
+    int(choose_parameter(get_parameter(np, internal_np::prior_resolution_cap), defaults::prior_resolution_cap));
   Stage_timings timings;
   internal::Decomposition_pass<GT> pass;
-  internal::decompose_once<ConcurrencyTag>(tm, fim, np, pass, timings);
+  internal::decompose_once<ConcurrencyTag>(
+    tm, internal::pass_parameters(np, internal::read_voxel_resolutions(np),
+                                  internal::read_fitting_parameters(np).fitting_resolution_cap, prior_cap, normalization),
+    pass, timings);
   if(fine > 0)
     internal::add_seconds(timings.thin_parts, [&] {
       internal::Decomposition_pass<GT> finer;
       Stage_timings finer_timings;
       internal::decompose_once<ConcurrencyTag>(
-        tm, fim, parameters::combine(np, parameters::voxel_resolutions(std::vector<int>{fine / 4, fine / 2, fine}),
-                                parameters::fitting_resolution_cap(fine / 4), parameters::prior_resolution_cap(fine / 2)),
-        finer, finer_timings);
+        tm, internal::pass_parameters(np, {fine / 4, fine / 2, fine}, fine / 4, fine / 2, normalization), finer,
+        finer_timings);
       internal::carve_thin_parts(pass, finer);
     });
   internal::put_face_values(tm, fim, pass.parts, face_part_map);

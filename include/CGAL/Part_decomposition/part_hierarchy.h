@@ -248,7 +248,7 @@ between parts of one assigned part costs \f$c(a, b) + 10\,\min(A(a), A(b)) / A(M
 small part joins the part it is attached to (a handle its door, a pin its plate) before large parts
 merge, while the cheaper merges keep their order, and with it the default parts.
 
-`Part_decomposer::build_hierarchy()` builds the hierarchy of a decomposition, whose default parts
+`build_part_hierarchy(tm, pieces, parts, np)` builds the hierarchy of a decomposition, whose default parts
 are a level of the tree.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles

@@ -74,7 +74,7 @@ parts, which the volume-based stages cannot see. This stage is not in the paper.
    touch at a vertex or pass through each other are separate. A piece is <em>closed</em> if every
    edge of its faces has exactly two faces (no border edge, no edge of three faces or more).
    Whether a piece bounds a volume is not decided here but by the distance field (see
-   `Part_decomposer::needs_volumetric_stages()`): a scan with holes does, an open sheet does not.
+   `volumetric_pieces()`): a scan with holes does, an open sheet does not.
 2. <b>Orientation.</b> A closed piece keeps its orientation (the reader orients it outward). An
    open shell has no outside; it is taken in the orientation that makes most of its creases
    convex (the edges of dihedral angle at least `crease_angle`, each weighted by the area of the

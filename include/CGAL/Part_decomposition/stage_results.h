@@ -31,7 +31,7 @@ namespace Part_decomposition {
 /*!
 \ingroup PkgPartDecompositionRef
 The primitive index that `assign_parts()` returns for its single part when no voxel is claimed, and that
-`Part_decomposer::part_to_primitive()` gives a part without a fitted primitive.
+`Composed_parts::part_to_primitive` gives a part without a fitted primitive.
 */
 constexpr std::size_t no_primitive = (std::numeric_limits<std::size_t>::max)();
 
@@ -209,7 +209,7 @@ struct Piece_segmentation
   /// per piece: 1 if the piece is closed (no border edge and no edge of three faces or more).
   std::vector<std::uint8_t> closed;
   /// per piece: +1, or -1 for an open piece whose orientation was reversed to tell its concave
-  /// creases (see `segment_pieces()`; `Part_decomposer` turns an open piece that bounds a volume
+  /// creases (see `segment_pieces()`; `volumetric_pieces()` turns an open piece that bounds a volume
   /// to face out of it).
   std::vector<int> orientation;
   std::size_t number_of_pieces = 0;  ///< the number of pieces
@@ -274,9 +274,8 @@ struct Part_hierarchy_node
 
 /*!
 \ingroup PkgPartDecompositionRef
-A binary merge tree of the parts of a mesh (`build_part_hierarchy()`,
-`Part_decomposer::build_hierarchy()`): the leaves are the finest parts, each inner node is the
-union of two nodes, and the root is the whole mesh. Leaves are nodes `0` to
+A binary merge tree of the parts of a mesh (`build_part_hierarchy()`): the leaves are the finest
+parts, each inner node is the union of two nodes, and the root is the whole mesh. Leaves are nodes `0` to
 `number_of_leaves() - 1`; the merges follow in the order they were made, so that the `k` parts of
 level `k` are the nodes left after the first `number_of_leaves() - k` merges. Each level is a
 partition of the faces, and the parts of a level are unions of the parts of any finer level.

@@ -47,8 +47,8 @@ Sheet_merging_parameters read_sheet_merging_parameters(const NamedParameters& np
 
 /*!
 \ingroup PkgPartDecompositionRef
-merges the parts of a decomposition that tile one thin sheet: the last stage of `decompose()`,
-after `assign_parts()` (its named parameter `merge_thin_sheets` is the switch). This step is not
+merges the parts of a decomposition that tile one thin sheet: the stage of `decompose()` after
+`assign_parts()` and before `compose_parts()` (its named parameter `merge_thin_sheets` is the switch). This step is not
 in the paper.
 
 Thin shells (the wall of a cup, the skin of a wing, a table top a few voxels thick) are fitted by
