@@ -2,7 +2,7 @@
 # Compile cost of the package for a user: wall time and peak memory of compiling the decompose
 # example (one translation unit including decompose.h) and, in the same run and with the same flags
 # (CMake's Release flags and definitions of the examples), the reference program of CGAL's SDF
-# segmentation. Run on an idle machine:
+# segmentation. Run on an idle machine (each run prints the load average it started with):
 #
 #   benchmark/Part_decomposition/compile_cost/compile_cost.sh [RUNS]
 set -eu
@@ -14,9 +14,11 @@ flags="$flags -DPD_EXAMPLE_DATA_DIR=\"$top/examples/Part_decomposition/data\""
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 measure() { # name source
   for i in $(seq "$runs"); do
-    /usr/bin/time -f "%e %M" -o "$work/t" c++ $flags -c "$2" -o "$work/o.o"
-    read -r s kb < "$work/t"
-    echo "$1 run $i: $s s, $((kb / 1024)) MB"
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    /usr/bin/time -f "%e %U %M" -o "$work/t" c++ $flags -c "$2" -o "$work/o.o"
+    read -r s user kb < "$work/t"
+    # the CPU time is less sensitive than the wall time to other work on the machine
+    echo "$1 run $i: $s s ($user s CPU), $((kb / 1024)) MB, load $load before"
   done
 }
 echo "$(c++ --version | head -1); flags: $flags"
