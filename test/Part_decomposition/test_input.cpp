@@ -9,7 +9,6 @@
 #include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "sha256.h"
@@ -187,31 +186,6 @@ TEST_CASE("the reader merges STL corners and orients closed pieces outward", "[i
   CHECK(info.number_of_reversed_components == 1u);
   CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(1. / 6.));
   std::remove(path.c_str());
-}
-
-// The reader reverses inward components itself (not with orientation.h, costly to compile): the
-// halfedges must be those that PMP::reverse_face_orientations() leaves, which the stages read.
-TEST_CASE("the reader's face reversal leaves the halfedges of PMP's reverse_face_orientations()", "[io]")
-{
-  auto same = [](const Mesh& a, const Mesh& b) {
-    for(auto h : halfedges(a))
-      if(target(h, a) != target(h, b) || next(h, a) != next(h, b) || prev(h, a) != prev(h, b) ||
-         face(h, a) != face(h, b))
-        return false;
-    for(auto v : vertices(a))
-      if(halfedge(v, a) != halfedge(v, b)) return false;
-    return true;
-  };
-  // a closed mesh, and an open one (its border cycles follow the reversed faces)
-  for(const Mesh& m : {test_shapes::make_sphere(Point(0, 0, 0), 1., 2), test_shapes::make_wavy_sheet(6, 0.2)})
-  {
-    const std::vector<Mesh::Face_index> all(faces(m).begin(), faces(m).end());
-    Mesh a = m, b = m;
-    CGAL::Polygon_mesh_processing::reverse_face_orientations(all, a);
-    PD::internal::reverse_faces(all, b);
-    CHECK(same(a, b));
-    CHECK(b.is_valid(false));
-  }
 }
 
 TEST_CASE("unreadable or broken files give a clear error", "[io]")

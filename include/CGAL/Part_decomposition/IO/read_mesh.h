@@ -25,6 +25,7 @@
 
 #include <CGAL/IO/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/use.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -517,55 +518,6 @@ std::size_t soup_components(const std::vector<std::array<std::size_t, 3> >& tria
   return count;
 }
 
-// Reverses the cycle of halfedges starting at h: each halfedge now goes into the vertex that its
-// predecessor went into, and each of these vertices keeps the halfedge now going into it, set in
-// the order of the cycle from next(h). This is the mesh that
-// CGAL::Polygon_mesh_processing::reverse_face_orientations() leaves, without the cost of
-// compiling orientation.h (self intersections, AABB trees) for a few lines.
-template <typename TriangleMesh>
-void reverse_cycle(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, TriangleMesh& tm)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  std::vector<halfedge_descriptor> cycle;
-  std::vector<vertex_descriptor> into;
-  halfedge_descriptor g = h;
-  do
-  {
-    cycle.push_back(g);
-    into.push_back(target(g, tm));
-    g = next(g, tm);
-  } while(g != h);
-  const std::size_t n = cycle.size();
-  for(std::size_t i = 1; i <= n; ++i)
-  {
-    const std::size_t k = i % n; // halfedges 1, ..., n - 1, then 0
-    set_target(cycle[k], into[i - 1], tm);
-    set_halfedge(into[i - 1], cycle[k], tm);
-    set_next(cycle[k], cycle[i - 1], tm);
-  }
-}
-
-// Reverses the faces `to_reverse` and then, as their borders now run along their opposite border
-// halfedges, those border cycles.
-template <typename TriangleMesh>
-void reverse_faces(const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& to_reverse,
-                   TriangleMesh& tm)
-{
-  for(auto f : to_reverse) reverse_cycle(halfedge(f, tm), tm);
-  for(auto f : to_reverse)
-  {
-    const auto first = halfedge(f, tm);
-    auto h = first;
-    do
-    {
-      const auto o = opposite(h, tm);
-      if(is_border(o, tm) && target(h, tm) == target(o, tm)) reverse_cycle(o, tm);
-      h = next(h, tm);
-    } while(h != first);
-  }
-}
-
 // Orients every closed connected component outward (positive enclosed volume); returns how many
 // were reversed. Closedness is per component here, so not CGAL::is_closed().
 // `fcc` and `ncc`: the component of each face (by its index in `findex`) and their number.
@@ -599,7 +551,8 @@ std::size_t orient_closed_components_outward(TriangleMesh& tm, const FaceIndexMa
   std::size_t reversed = 0;
   for(std::size_t c = 0; c < ncc; ++c)
     if(closed[c] && volume[c] < 0.) ++reversed;
-  if(!to_reverse.empty()) reverse_faces(to_reverse, tm);
+  if(!to_reverse.empty())
+    CGAL::Polygon_mesh_processing::reverse_face_orientations(to_reverse, tm);
   return reversed;
 }
 
