@@ -360,24 +360,24 @@ private:
   }
 
   // The empty volume one box of the union adds to the two boxes, plus the concavity of the
-  // common boundary.
-  double cost(std::size_t a, const Link& l) const
+  // common boundary, plus the size of the smaller part for a merge of `kind` above the default
+  // parts (Merge_parameters::attachment_from).
+  double cost(std::size_t a, const Link& l, Merge_kind kind) const
   {
     const std::size_t b = l.node;
     const Part_box u = merge_boxes(m_box[a], m_box[b]);
     const double added = box_volume(u, m_p.thickness) - box_volume(m_box[a], m_p.thickness) -
                          box_volume(m_box[b], m_p.thickness);
     const double crease = l.length > 0. ? l.concave / l.length : 0.;
-    return (std::max)(added, 0.) / m_volume + m_p.crease_weight * crease;
+    const double c = (std::max)(added, 0.) / m_volume + m_p.crease_weight * crease;
+    if(int(kind) < int(Merge_kind::SAME_PIECE) || c < m_p.attachment_from) return c;
+    return c + m_p.attachment_weight * (std::min)(m_box[a].area, m_box[b].area) / m_area;
   }
 
   void push(std::size_t a, const Link& l)
   {
     const Merge_kind kind = kind_of(a, l.node, l.contact);
-    double c = cost(a, l);
-    if(int(kind) >= int(Merge_kind::SAME_PIECE) && c >= m_p.attachment_from)
-      c += m_p.attachment_weight * (std::min)(m_box[a].area, m_box[l.node].area) / m_area;
-    m_queue.push(Entry{kind, c, (std::min)(a, l.node), (std::max)(a, l.node)});
+    m_queue.push(Entry{kind, cost(a, l, kind), (std::min)(a, l.node), (std::max)(a, l.node)});
   }
 
   // Links the living nodes that must merge before the merges of the next kind but are not
