@@ -88,7 +88,7 @@ struct Decomposition_settings
 #undef PART_DECOMPOSITION_TOOLS_FIELD
   // CGAL's own named parameters
   unsigned int number_of_points_per_face = PD::defaults::number_of_points_per_face;
-  bool verbose = false;
+  bool verbose = PD::defaults::verbose;
 };
 
 // Calls f(name, member pointer) for every field of Decomposition_settings, in table order.
