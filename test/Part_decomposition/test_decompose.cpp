@@ -262,7 +262,6 @@ std::size_t decompose_by_stages(const Mesh& m, bool use_pieces, bool keep_residu
   std::vector<std::uint8_t> volumetric;
   if(volume)
   {
-    prior = PD::compute_flow_freeze_prior(m, np);
     tsdf = PD::compute_tsdf(m, np);
     if(use_pieces) volume = any(volumetric = PD::volumetric_pieces(m, pieces, tsdf, np));
   }
@@ -270,6 +269,7 @@ std::size_t decompose_by_stages(const Mesh& m, bool use_pieces, bool keep_residu
   PD::Volumetric_parts parts;
   if(volume)
   {
+    prior = PD::compute_flow_freeze_prior(m, np);
     const PD::Fitting_zones zones =
       PD::compute_fitting_zones(prior.classes, tsdf, PD::fitting_resolutions(prior.resolutions), np);
     fitting = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, zones, np);

@@ -104,24 +104,27 @@ struct Stage_results
 // The volumetric stages; returns whether the primitives were fitted (not if the distance field
 // shows that no piece bounds a volume). The fitting's own loops are short (one primitive at a
 // time), so its sequential part is the longest of the pipeline: the over-segmentation runs next
-// to it, and the prior and the distance field next to each other before it.
+// to it. The prior runs next to the distance field if `volume_expected`, else only once the field
+// shows a volume: an assembly of sheets then costs no prior. Either way the results are the same.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces,
+bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces, bool volume_expected,
                            Stage_results<GT>& s, Stage_timings& t)
 {
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   bool fitted = false;
   s.volumetric.patches.assign(num_faces(tm), 0);
+  auto prior = [&] { add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); }); };
+  auto tsdf = [&] { add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf<ConcurrencyTag>(tm, np); }); };
   run_side_by_side<ConcurrencyTag>(
     [&] {
-      run_side_by_side<ConcurrencyTag>(
-        [&] { add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); }); },
-        [&] { add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf<ConcurrencyTag>(tm, np); }); });
+      if(volume_expected) run_side_by_side<ConcurrencyTag>(prior, tsdf);
+      else tsdf();
       if(use_pieces)
       {
         s.volumetric_pieces = Part_decomposition::volumetric_pieces<ConcurrencyTag>(tm, s.pieces, s.tsdf, np);
         if(!any_of_flags(s.volumetric_pieces)) return;
       }
+      if(!volume_expected) prior();
       const int cap = read_fitting_parameters(np).fitting_resolution_cap;
       add_seconds(t.fitting_zones, [&] {
         s.zones = compute_fitting_zones<ConcurrencyTag>(s.prior.classes, s.tsdf,
@@ -219,12 +222,21 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposi
   const bool use_pieces = read_piece_parameters(np).use_pieces;
   Stage_results<GT> s;
   // the stage times start at 0: each is added once
-  const bool needs_volume = add_seconds(timings.pieces, [&] {
-    if(!use_pieces) return true;
+  std::vector<std::uint8_t> splittable;
+  add_seconds(timings.pieces, [&] {
+    if(!use_pieces) return;
     s.pieces = segment_pieces<ConcurrencyTag>(tm, np);
-    return any_of_flags(Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np));
+    splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
   });
-  const bool fitted = needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, s, timings);
+  // a closed piece or a single one (a scan with holes) most likely bounds a volume
+  bool needs_volume = !use_pieces, volume_expected = !use_pieces || s.pieces.number_of_pieces == 1;
+  for(std::size_t q = 0; q < splittable.size(); ++q)
+  {
+    needs_volume = needs_volume || splittable[q];
+    volume_expected = volume_expected || (splittable[q] && s.pieces.closed[q]);
+  }
+  const bool fitted =
+    needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);
   add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
   cut_hierarchy(tm, np, s, out, timings);
   out.scale = read_normalization(tm, np).scale();
@@ -693,8 +705,8 @@ the same output, whatever the number of threads.
 
 It is the sequence of the stage functions, which give the same parts when called in this
 order with the same named parameters (see the user manual): `segment_pieces()` and
-`splittable_pieces()`; if a piece is splittable, `compute_flow_freeze_prior()`, `compute_tsdf()`
-and `volumetric_pieces()`; if a piece is volumetric, `compute_fitting_zones()`,
+`splittable_pieces()`; if a piece is splittable, `compute_tsdf()` and `volumetric_pieces()`; if a
+piece is volumetric, `compute_flow_freeze_prior()`, `compute_fitting_zones()`,
 `fit_superquadrics()`, `over_segment()`, `assign_parts()`, `separate_residual_patches()` (with
 `keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
 hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
