@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -207,35 +208,44 @@ touching_leaves(std::size_t number_of_faces, const Corner& corner, const std::ve
     }
     return k;
   };
+  std::vector<std::uint64_t> face_cells;
   for(std::size_t i = 0; i < number_of_faces; ++i)
   {
     const Eigen::Vector3d a = corner(i, 0), b = corner(i, 1), c = corner(i, 2);
     const double longest = (std::max)({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     // at most 64 steps per edge: larger faces are rare and their corners and centre still count
     const int n = int((std::min)(64., std::ceil(longest / distance)));
+    face_cells.clear();
     for(int u = 0; u <= n; ++u)
       for(int v = 0; u + v <= n; ++v)
       {
         const double s = n > 0 ? double(u) / n : 1. / 3., t = n > 0 ? double(v) / n : 1. / 3.;
-        cells.emplace_back(key(a + s * (b - a) + t * (c - a)), leaf[i]);
+        face_cells.push_back(key(a + s * (b - a) + t * (c - a)));
       }
+    // a face's samples share cells: fewer entries to sort below
+    std::sort(face_cells.begin(), face_cells.end());
+    face_cells.erase(std::unique(face_cells.begin(), face_cells.end()), face_cells.end());
+    for(std::uint64_t k : face_cells) cells.emplace_back(k, leaf[i]);
   }
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
 
-  std::vector<std::pair<std::size_t, std::size_t> > pairs;
-  std::vector<std::size_t> here, there;
-  auto leaves_of = [&](std::uint64_t k, std::vector<std::size_t>& out) {
-    out.clear();
-    auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, std::size_t(0)));
-    for(; it != cells.end() && it->first == k; ++it) out.push_back(it->second);
+  // the first entry of each cell, by key
+  std::unordered_map<std::uint64_t, std::size_t> first;
+  first.reserve(cells.size());
+  for(std::size_t c = 0; c < cells.size(); ++c) first.emplace(cells[c].first, c);
+  auto leaves_of = [&](std::size_t c) {
+    std::size_t e = c;
+    while(e < cells.size() && cells[e].first == cells[c].first) ++e;
+    return std::make_pair(c, e);
   };
+  std::vector<std::pair<std::size_t, std::size_t> > pairs;
   const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
   for(std::size_t c = 0; c < cells.size();)
   {
     const std::uint64_t k = cells[c].first;
-    leaves_of(k, here);
-    c += here.size();
+    const std::pair<std::size_t, std::size_t> here = leaves_of(c);
+    c = here.second;
     for(int dx = -1; dx <= 1; ++dx)
       for(int dy = -1; dy <= 1; ++dy)
         for(int dz = -1; dz <= 1; ++dz)
@@ -244,10 +254,15 @@ touching_leaves(std::size_t number_of_faces, const Corner& corner, const std::ve
           if(x > mask || y > mask || z > mask) continue;
           const std::uint64_t nk = (x << 42) | (y << 21) | z;
           if(nk < k) continue; // each pair of cells once
-          leaves_of(nk, there);
-          for(std::size_t a : here)
-            for(std::size_t b : there)
+          const auto it = first.find(nk);
+          if(it == first.end()) continue;
+          const std::pair<std::size_t, std::size_t> there = leaves_of(it->second);
+          for(std::size_t i = here.first; i < here.second; ++i)
+            for(std::size_t j = there.first; j < there.second; ++j)
+            {
+              const std::size_t a = cells[i].second, b = cells[j].second;
               if(a != b && piece[a] != piece[b]) pairs.emplace_back((std::min)(a, b), (std::max)(a, b));
+            }
         }
   }
   std::sort(pairs.begin(), pairs.end());
