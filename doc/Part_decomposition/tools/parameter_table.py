@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Makes, from the library's parameter_table as `hitops --list-parameters` prints it, the table of
-the reference page PD_ParameterTable (parameter_table.txt) and the namespace `defaults` of
-parameters.h.
+the reference page PD_ParameterTable (parameter_table.txt), the namespace `defaults` of
+parameters.h and the list of settings of the tools (hitops, the benchmark, the Python module) in
+decomposition_settings.h.
 
-    parameter_table.py HITOPS           rewrites both
-    parameter_table.py HITOPS --check   exits with status 1 if either is not the one made
+    parameter_table.py HITOPS           rewrites all three
+    parameter_table.py HITOPS --check   exits with status 1 if one is not the one made
 
 Each lies between two marks of its file; nothing else changes. The pytest suite runs the check, so
-that neither the page nor the defaults can drift from the table.
+that none of them can drift from the table.
 """
 
 import os
@@ -23,6 +24,12 @@ HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".
 HEADER_BEGIN = "// defaults: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit"
 HEADER_END = "// end of the defaults"
 ENUMS = ("Tsdf_sign_method", "Interior_weight_mode")
+SETTINGS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "examples",
+                        "Part_decomposition", "include", "decomposition_settings.h")
+SETTINGS_BEGIN = "// settings: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit"
+SETTINGS_END = "// end of the settings"
+# CGAL's own named parameters, which the tools pass apart from the package's
+CGAL_PARAMETERS = ("number_of_points_per_face", "verbose")
 
 
 def read_rows(hitops):
@@ -84,8 +91,30 @@ def make_default(row):
 
 def make_defaults(rows):
     """The defaults of every value parameter that has one (not the outputs, nor `number_of_parts`)."""
-    return "".join(make_default(row) for row in rows
-                   if row["option"] and row["table_default"] not in ("none", "nullptr"))
+    return "".join(make_default(row) for row in rows if has_default(row))
+
+
+def has_default(row):
+    """Whether the row is a value parameter with a default (not an output, nor `number_of_parts`)."""
+    return bool(row["option"]) and row["table_default"] not in ("none", "nullptr")
+
+
+def make_settings(rows):
+    """The X-macro of the tools' settings: every value parameter of decompose() with a default,
+    in table order, but CGAL's own and the reader's."""
+    def setting_type(t):
+        if t.startswith("std::array"):
+            return "PD_cue_weights"  # a macro argument cannot hold the comma
+        return "PD::" + t if t in ENUMS else t
+
+    lines = ["#define PART_DECOMPOSITION_TOOLS_SETTINGS(X)"]
+    for row in rows:
+        if not has_default(row) or row["name"] in CGAL_PARAMETERS or row["stage"].startswith("reading"):
+            continue
+        default = "PD::defaults::" + row["name"] + ("()" if row["type"].startswith("std::vector") else "")
+        lines.append("  X(%s, %s, %s)" % (setting_type(row["type"]), row["name"], default))
+    width = max(len(line) for line in lines) + 1
+    return "".join(line.ljust(width) + "\\\n" for line in lines[:-1]) + lines[-1] + "\n"
 
 
 def remake(path, begin_mark, end_mark, made_text, check, hitops):
@@ -110,6 +139,7 @@ def main(argv):
     check = len(argv) == 3
     remake(PAGE, MARK_BEGIN, MARK_END, make_table(rows), check, argv[1])
     remake(HEADER, HEADER_BEGIN, HEADER_END, make_defaults(rows), check, argv[1])
+    remake(SETTINGS, SETTINGS_BEGIN, SETTINGS_END, make_settings(rows), check, argv[1])
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@
 // The named parameters of Part_decomposition::decompose() as plain values at the package's
 // defaults, for the programs that take them from their users (hitops, the Python module) or vary
 // them (the benchmark), the one named-parameter pack that passes them all, and their text form.
-// The list is written once; what each parameter means is in PD::parameter_table.
+// The list is made from PD::parameter_table by doc/Part_decomposition/tools/parameter_table.py.
 
 #include <CGAL/Part_decomposition/decompose.h>
 
@@ -32,52 +32,54 @@ namespace PD = CGAL::Part_decomposition;
 
 // The package's named parameters that hold a value, in the order of PD::parameter_table: type,
 // name, default. Each is a field of Decomposition_settings, passed by named_parameters().
-#define PART_DECOMPOSITION_TOOLS_SETTINGS(X)                                                   \
-  X(bool, use_pieces, PD::defaults::use_pieces)                                              \
-  X(double, crease_angle, PD::defaults::crease_angle)                                        \
-  X(double, minimum_part_area, PD::defaults::minimum_part_area)                              \
-  X(std::vector<int>, voxel_resolutions, PD::defaults::voxel_resolutions())                  \
-  X(unsigned int, number_of_neighbors, PD::defaults::number_of_neighbors)                    \
-  X(double, curvature_percentile, PD::defaults::curvature_percentile)                        \
-  X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                  \
-  X(double, freeze_ratio, PD::defaults::freeze_ratio)                                        \
-  X(bool, use_density, PD::defaults::use_density)                                            \
-  X(int, prior_resolution_cap, PD::defaults::prior_resolution_cap)                           \
-  X(double, normalization_margin, PD::defaults::normalization_margin)                        \
-  X(double, tsdf_truncation, PD::defaults::tsdf_truncation)                                  \
-  X(PD::Tsdf_sign_method, tsdf_sign_method, PD::defaults::tsdf_sign_method)                  \
-  X(double, flow_zone_tolerance, PD::defaults::flow_zone_tolerance)                          \
-  X(std::vector<double>, trust_region_scales, PD::defaults::trust_region_scales())           \
-  X(double, body_seed_threshold, PD::defaults::body_seed_threshold)                          \
-  X(double, minimum_body_volume, PD::defaults::minimum_body_volume)                          \
-  X(double, minimum_surface_volume, PD::defaults::minimum_surface_volume)                    \
-  X(double, exterior_penalty, PD::defaults::exterior_penalty)                                \
-  X(double, coverage_target, PD::defaults::coverage_target)                                  \
-  X(double, roi_radius, PD::defaults::roi_radius)                                            \
-  X(PD::Interior_weight_mode, interior_weight_mode, PD::defaults::interior_weight_mode)      \
-  X(std::size_t, maximum_number_of_primitives, PD::defaults::maximum_number_of_primitives)   \
-  X(bool, use_freeze_zone, PD::defaults::use_freeze_zone)                                    \
-  X(bool, use_tsdf_guidance, PD::defaults::use_tsdf_guidance)                                \
-  X(bool, use_body_seeds, PD::defaults::use_body_seeds)                                      \
-  X(int, fitting_resolution_cap, PD::defaults::fitting_resolution_cap)                       \
-  X(bool, use_exterior_band_samples, PD::defaults::use_exterior_band_samples)                \
-  X(bool, use_reachable_regions, PD::defaults::use_reachable_regions)                        \
-  X(bool, use_seed_exclusion, PD::defaults::use_seed_exclusion)                              \
-  X(int, maximum_solver_evaluations, PD::defaults::maximum_solver_evaluations)               \
-  X(std::size_t, maximum_rejections_in_a_row, PD::defaults::maximum_rejections_in_a_row)     \
-  X(bool, merge_primitives, PD::defaults::merge_primitives)                                  \
-  X(double, minimum_merge_iou, PD::defaults::minimum_merge_iou)                              \
-  X(double, dihedral_percentile, PD::defaults::dihedral_percentile)                          \
-  X(unsigned int, smoothing_iterations, PD::defaults::smoothing_iterations)                  \
-  X(double, minimum_patch_size, PD::defaults::minimum_patch_size)                            \
-  X(double, patch_split_size, PD::defaults::patch_split_size)                                \
-  X(double, vote_temperature, PD::defaults::vote_temperature)                                \
-  X(double, boundary_smoothness, PD::defaults::boundary_smoothness)                          \
-  X(bool, keep_residual_patches, PD::defaults::keep_residual_patches)                        \
-  X(double, residual_tolerance, PD::defaults::residual_tolerance)                            \
-  X(bool, merge_thin_sheets, PD::defaults::merge_thin_sheets)                                \
-  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)                            \
+// settings: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit
+#define PART_DECOMPOSITION_TOOLS_SETTINGS(X)                                               \
+  X(bool, use_pieces, PD::defaults::use_pieces)                                            \
+  X(double, crease_angle, PD::defaults::crease_angle)                                      \
+  X(double, minimum_part_area, PD::defaults::minimum_part_area)                            \
+  X(std::vector<int>, voxel_resolutions, PD::defaults::voxel_resolutions())                \
+  X(unsigned int, number_of_neighbors, PD::defaults::number_of_neighbors)                  \
+  X(double, curvature_percentile, PD::defaults::curvature_percentile)                      \
+  X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                \
+  X(double, freeze_ratio, PD::defaults::freeze_ratio)                                      \
+  X(bool, use_density, PD::defaults::use_density)                                          \
+  X(int, prior_resolution_cap, PD::defaults::prior_resolution_cap)                         \
+  X(double, normalization_margin, PD::defaults::normalization_margin)                      \
+  X(double, tsdf_truncation, PD::defaults::tsdf_truncation)                                \
+  X(PD::Tsdf_sign_method, tsdf_sign_method, PD::defaults::tsdf_sign_method)                \
+  X(double, flow_zone_tolerance, PD::defaults::flow_zone_tolerance)                        \
+  X(std::vector<double>, trust_region_scales, PD::defaults::trust_region_scales())         \
+  X(double, body_seed_threshold, PD::defaults::body_seed_threshold)                        \
+  X(double, minimum_body_volume, PD::defaults::minimum_body_volume)                        \
+  X(double, minimum_surface_volume, PD::defaults::minimum_surface_volume)                  \
+  X(double, exterior_penalty, PD::defaults::exterior_penalty)                              \
+  X(double, coverage_target, PD::defaults::coverage_target)                                \
+  X(double, roi_radius, PD::defaults::roi_radius)                                          \
+  X(PD::Interior_weight_mode, interior_weight_mode, PD::defaults::interior_weight_mode)    \
+  X(std::size_t, maximum_number_of_primitives, PD::defaults::maximum_number_of_primitives) \
+  X(bool, use_freeze_zone, PD::defaults::use_freeze_zone)                                  \
+  X(bool, use_tsdf_guidance, PD::defaults::use_tsdf_guidance)                              \
+  X(bool, use_body_seeds, PD::defaults::use_body_seeds)                                    \
+  X(int, fitting_resolution_cap, PD::defaults::fitting_resolution_cap)                     \
+  X(bool, use_exterior_band_samples, PD::defaults::use_exterior_band_samples)              \
+  X(bool, use_reachable_regions, PD::defaults::use_reachable_regions)                      \
+  X(bool, use_seed_exclusion, PD::defaults::use_seed_exclusion)                            \
+  X(int, maximum_solver_evaluations, PD::defaults::maximum_solver_evaluations)             \
+  X(std::size_t, maximum_rejections_in_a_row, PD::defaults::maximum_rejections_in_a_row)   \
+  X(bool, merge_primitives, PD::defaults::merge_primitives)                                \
+  X(double, minimum_merge_iou, PD::defaults::minimum_merge_iou)                            \
+  X(double, dihedral_percentile, PD::defaults::dihedral_percentile)                        \
+  X(unsigned int, smoothing_iterations, PD::defaults::smoothing_iterations)                \
+  X(double, minimum_patch_size, PD::defaults::minimum_patch_size)                          \
+  X(double, patch_split_size, PD::defaults::patch_split_size)                              \
+  X(double, vote_temperature, PD::defaults::vote_temperature)                              \
+  X(double, boundary_smoothness, PD::defaults::boundary_smoothness)                        \
+  X(bool, keep_residual_patches, PD::defaults::keep_residual_patches)                      \
+  X(double, residual_tolerance, PD::defaults::residual_tolerance)                          \
+  X(bool, merge_thin_sheets, PD::defaults::merge_thin_sheets)                              \
+  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)                          \
   X(int, thin_part_resolution, PD::defaults::thin_part_resolution)
+// end of the settings
 
 typedef std::array<double, 4> PD_cue_weights; // a macro argument cannot hold the comma
 
