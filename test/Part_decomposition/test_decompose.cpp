@@ -1195,3 +1195,33 @@ TEST_CASE("above the default parts a small attached part joins its neighbour bef
   const std::array<std::size_t, 2> first = h.nodes[3].children;
   CHECK(std::set<std::size_t>(first.begin(), first.end()) == std::set<std::size_t>{0, 2});
 }
+
+TEST_CASE("above the default parts the size of the smaller part counts in every merge, cheap or not", "[hierarchy]")
+{
+  // An L bracket (one piece, plates A and B, whose merge is costly: the default parts end there),
+  // and apart from it two coplanar plates C and D side by side, almost touching, with a pin E
+  // standing on C. C and D make one box (their merge is cheap), but they are large: E joins C first.
+  std::vector<int> plate;
+  Mesh m = test_shapes::make_l_bracket(1., 1., 0.1, 1., 0.25, &plate);
+  std::vector<std::size_t> part(plate.begin(), plate.end());
+  // dyadic corners: the sides of each box share their vertices exactly (one piece per box)
+  const std::pair<Point, Point> boxes[3] = {{Point(3, 0, 0), Point(5, 2, 0.125)},
+                                            {Point(5.03125, 0, 0), Point(7, 2, 0.125)},
+                                            {Point(3.875, 0.875, 0.125), Point(4.125, 1.125, 1.)}};
+  for(std::size_t b = 0; b < 3; ++b)
+  {
+    test_shapes::append(m, test_shapes::make_box(boxes[b].first, boxes[b].second, 2));
+    part.resize(num_faces(m), b + 2);
+  }
+  const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(part));
+  REQUIRE(h.number_of_leaves() == 5);
+  CHECK(h.level_below_cost(5, PD::defaults::maximum_merge_cost) == 5);
+  // the merges: A with B (same piece first), then E with C, then (C, E) with D
+  REQUIRE(h.nodes.size() == 9);
+  auto children = [&](std::size_t n) { return std::set<std::size_t>(h.nodes[n].children.begin(), h.nodes[n].children.end()); };
+  CHECK(children(5) == std::set<std::size_t>{0, 1});
+  CHECK(children(6) == std::set<std::size_t>{2, 4});
+  CHECK(children(7) == std::set<std::size_t>{3, 6});
+  // above the default parts, every merge costs at least their maximum
+  for(std::size_t n = 5; n < h.nodes.size(); ++n) CHECK(h.nodes[n].merge_cost >= PD::defaults::maximum_merge_cost);
+}

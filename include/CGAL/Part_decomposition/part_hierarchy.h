@@ -242,11 +242,14 @@ plate, a knob on a door, the two parts of a limb that is straight), late when th
 leave much space empty (a leg and the seat, two perpendicular plates). The box of a merged node
 holds the boxes of its two children.
 
-A merge that costs at least `maximum_merge_cost`, i.e.\ one above the default parts, and is not
-between parts of one assigned part costs \f$c(a, b) + 10\,\min(A(a), A(b)) / A(M)\f$ instead, with
+The merges go on in this order until the next one costs at least `maximum_merge_cost` or joins
+parts that do not touch: these are the default parts (`Part_hierarchy::level_below_cost()`).
+From there on, every merge that is not between parts of one assigned part costs
+\f$c(a, b) + 10\,\min(A(a), A(b)) / A(M)\f$ instead (and at least `maximum_merge_cost`), with
 \f$A\f$ the area of a part's surface and \f$A(M)\f$ that of the mesh: above the default parts, a
-small part joins the part it is attached to (a handle its door, a pin its plate) before large parts
-merge, while the cheaper merges keep their order, and with it the default parts.
+small part joins the part it is attached to (a handle its door, a pin its plate, the keys their
+keyboard) before large parts merge, while the merges below keep their order, and with it the
+default parts.
 
 `build_part_hierarchy(tm, pieces, parts, np)` builds the hierarchy of a decomposition, whose default parts
 are a level of the tree.
@@ -282,7 +285,7 @@ are a level of the tree.
     \cgalParamDefault{the kernel of the point type of the vertex point map}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_merge_cost}
-    \cgalParamDescription{the cost from which merges are ordered by the size of the smaller part first}
+    \cgalParamDescription{the cost that ends the default parts, from which merges are ordered by the size of the smaller part first}
     \cgalParamType{`double`, non-negative and finite}
     \cgalParamDefault{`0.003`}
   \cgalParamNEnd

@@ -181,10 +181,10 @@ struct Merge_parameters
   double contact_distance = 0.; // surfaces of two pieces closer than this touch
   double thickness = 0.;        // the smallest half extent of a box's volume
   double crease_weight = 0.;    // weight of the concavity of the common boundary in the cost
-  // Merges of parts of one piece or of several that cost at least `attachment_from` (the default
-  // parts' maximum_merge_cost) add `attachment_weight` times the area fraction of the smaller part:
-  // above the default parts, small parts join the part they are attached to before large parts
-  // merge, and the merges below keep their order.
+  // From the first merge between parts that costs at least `attachment_from` (the default parts'
+  // maximum_merge_cost) on, merges between parts add `attachment_weight` times the area fraction
+  // of the smaller part: above the default parts, small parts join the part they are attached to
+  // before large parts merge, and the merges below keep their order.
   double attachment_from = std::numeric_limits<double>::infinity();
   double attachment_weight = 0.;
 };
@@ -318,6 +318,12 @@ public:
         if(phase != Merge_kind::NO_CONTACT) phase = Merge_kind(int(phase) + 1);
         continue;
       }
+      if(!m_above_default && ends_default_parts(m_queue.top()))
+      {
+        m_above_default = true;
+        recost_queue();
+        continue;
+      }
       const Entry e = m_queue.top();
       m_queue.pop();
       merge(e);
@@ -375,8 +381,8 @@ private:
   }
 
   // The empty volume one box of the union adds to the two boxes, plus the concavity of the
-  // common boundary, plus the size of the smaller part for a merge of `kind` above the default
-  // parts (Merge_parameters::attachment_from).
+  // common boundary, plus the size of the smaller part for a merge of `kind` (between parts) that
+  // costs at least Merge_parameters::attachment_from or comes above the default parts.
   double cost(std::size_t a, const Link& l, Merge_kind kind) const
   {
     const std::size_t b = l.node;
@@ -385,8 +391,30 @@ private:
                          box_volume(m_box[b], m_p.thickness);
     const double crease = l.length > 0. ? l.concave / l.length : 0.;
     const double c = (std::max)(added, 0.) / m_volume + m_p.crease_weight * crease;
-    if(int(kind) < int(Merge_kind::SAME_PIECE) || c < m_p.attachment_from) return c;
+    if(int(kind) < int(Merge_kind::SAME_PIECE) || (c < m_p.attachment_from && !m_above_default)) return c;
     return c + m_p.attachment_weight * (std::min)(m_box[a].area, m_box[b].area) / m_area;
+  }
+
+  // Whether merge `e` is the first above the default parts: between parts, not within one, and
+  // at least as costly as `attachment_from` or between parts that do not touch (where
+  // Part_hierarchy::level_below_cost() stops).
+  bool ends_default_parts(const Entry& e) const
+  {
+    return e.kind >= Merge_kind::SAME_PIECE && (e.cost >= m_p.attachment_from || e.kind == Merge_kind::NO_CONTACT);
+  }
+
+  // The merges waiting when the default parts are reached, with the costs of the merges above them.
+  void recost_queue()
+  {
+    std::vector<Entry> entries;
+    for(; !m_queue.empty(); m_queue.pop())
+      if(m_alive[m_queue.top().a] && m_alive[m_queue.top().b]) entries.push_back(m_queue.top());
+    for(Entry& e : entries)
+    {
+      for(const Link& l : m_links[e.a])
+        if(l.node == e.b) e.cost = cost(e.a, l, e.kind);
+      m_queue.push(e);
+    }
   }
 
   void push(std::size_t a, const Link& l)
@@ -460,7 +488,9 @@ private:
     m_piece.push_back(m_piece[e.a] == m_piece[e.b] ? m_piece[e.a] : none);
     m_children.push_back({{e.a, e.b}});
     m_kind.push_back(e.kind);
-    m_cost.push_back(e.cost);
+    // above the default parts a merge costs at least their maximum, whatever its place in the order
+    m_cost.push_back(m_above_default && std::isfinite(m_p.attachment_from) ? (std::max)(e.cost, m_p.attachment_from)
+                                                                           : e.cost);
     m_alive[e.a] = m_alive[e.b] = 0;
     m_alive.push_back(1);
     m_links.emplace_back();
@@ -494,6 +524,7 @@ private:
   std::vector<Merge_kind> m_kind;
   std::vector<double> m_cost;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > m_queue;
+  bool m_above_default = false; // once the merges of the default parts are done
 };
 
 } // namespace internal
