@@ -163,6 +163,28 @@ void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fit
   s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
 }
 
+// Per piece, whether it is closed or nearly so, as a scan with a few holes: at most 2% of its
+// edges are border edges. Such a piece most likely bounds a volume of the distance field.
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<std::uint8_t> nearly_closed_pieces(const TriangleMesh& tm, const NamedParameters& np,
+                                               const Piece_segmentation& pieces)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  std::vector<std::size_t> border(pieces.number_of_pieces, 0), edges(pieces.number_of_pieces, 0);
+  for(auto f : faces(tm))
+  {
+    const std::size_t q = pieces.piece[std::size_t(get(fim, f))];
+    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      ++edges[q];
+      if(is_border(opposite(h, tm), tm)) ++border[q];
+    }
+  }
+  std::vector<std::uint8_t> result(pieces.number_of_pieces, 0);
+  for(std::size_t q = 0; q < result.size(); ++q) result[q] = pieces.closed[q] || 50 * border[q] <= edges[q];
+  return result;
+}
+
 // The parts of one decomposition: per face index its part, per part its superquadric.
 template <typename GeomTraits>
 struct Decomposition_pass
@@ -228,12 +250,13 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposi
     s.pieces = segment_pieces<ConcurrencyTag>(tm, np);
     splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
   });
-  // a closed piece or a single one (a scan with holes) most likely bounds a volume
-  bool needs_volume = !use_pieces, volume_expected = !use_pieces || s.pieces.number_of_pieces == 1;
+  bool needs_volume = !use_pieces, volume_expected = !use_pieces;
+  const std::vector<std::uint8_t> nearly_closed = use_pieces ? nearly_closed_pieces(tm, np, s.pieces)
+                                                             : std::vector<std::uint8_t>();
   for(std::size_t q = 0; q < splittable.size(); ++q)
   {
     needs_volume = needs_volume || splittable[q];
-    volume_expected = volume_expected || (splittable[q] && s.pieces.closed[q]);
+    volume_expected = volume_expected || (splittable[q] && nearly_closed[q]);
   }
   const bool fitted =
     needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);
