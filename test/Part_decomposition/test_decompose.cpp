@@ -290,6 +290,21 @@ std::size_t decompose_by_stages(const Mesh& m, bool use_pieces, bool keep_residu
   return k;
 }
 
+namespace {
+
+// The same superquadrics, in the same order, to the last bit.
+void check_same_primitives(const std::vector<PD::Superquadric<K> >& a, const std::vector<PD::Superquadric<K> >& b)
+{
+  REQUIRE(a.size() == b.size());
+  for(std::size_t k = 0; k < a.size(); ++k)
+  {
+    CHECK(a[k].scales() == b[k].scales());
+    CHECK(a[k].center() == b[k].center());
+  }
+}
+
+} // namespace
+
 template <typename NamedParameters>
 void check_stages_give_decompose(const Mesh& m, bool use_pieces, bool keep_residual_patches, const NamedParameters& np)
 {
@@ -300,12 +315,7 @@ void check_stages_give_decompose(const Mesh& m, bool use_pieces, bool keep_resid
     PDP::combine(np, PDP::primitive_output_iterator(std::back_inserter(expected_primitives))));
   CHECK(decompose_by_stages(m, use_pieces, keep_residual_patches, np, labels, primitives) == K_expected);
   CHECK(labels == expected);
-  REQUIRE(primitives.size() == expected_primitives.size());
-  for(std::size_t k = 0; k < primitives.size(); ++k)
-  {
-    CHECK(primitives[k].scales() == expected_primitives[k].scales());
-    CHECK(primitives[k].center() == expected_primitives[k].center());
-  }
+  check_same_primitives(primitives, expected_primitives);
 }
 
 TEST_CASE("the stage functions in their documented order give the parts of decompose()", "[decompose][stages][data]")
@@ -400,12 +410,7 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
   CHECK(na == 3u); // two balls and a bar
   CHECK(nb == na);
   CHECK(b == a);
-  REQUIRE(pb.size() == pa.size());
-  for(std::size_t k = 0; k < pa.size(); ++k)
-  {
-    CHECK(pb[k].scales() == pa[k].scales());
-    CHECK(pb[k].center() == pa[k].center());
-  }
+  check_same_primitives(pb, pa);
 }
 
 TEST_CASE("a stage given another normalization than the decomposer's is refused", "[decompose]")

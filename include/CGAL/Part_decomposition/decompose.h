@@ -164,7 +164,8 @@ void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fit
 }
 
 // Per piece, whether it is closed or nearly so, as a scan with a few holes: at most 2% of its
-// edges are border edges. Such a piece most likely bounds a volume of the distance field.
+// edges are border edges (none for a closed piece). Such a piece most likely bounds a volume of
+// the distance field.
 template <typename TriangleMesh, typename NamedParameters>
 std::vector<std::uint8_t> nearly_closed_pieces(const TriangleMesh& tm, const NamedParameters& np,
                                                const Piece_segmentation& pieces)
@@ -181,7 +182,7 @@ std::vector<std::uint8_t> nearly_closed_pieces(const TriangleMesh& tm, const Nam
     }
   }
   std::vector<std::uint8_t> result(pieces.number_of_pieces, 0);
-  for(std::size_t q = 0; q < result.size(); ++q) result[q] = pieces.closed[q] || 50 * border[q] <= edges[q];
+  for(std::size_t q = 0; q < result.size(); ++q) result[q] = 50 * border[q] <= edges[q];
   return result;
 }
 
@@ -250,13 +251,12 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposi
     s.pieces = segment_pieces<ConcurrencyTag>(tm, np);
     splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
   });
-  bool needs_volume = !use_pieces, volume_expected = !use_pieces;
-  const std::vector<std::uint8_t> nearly_closed = use_pieces ? nearly_closed_pieces(tm, np, s.pieces)
-                                                             : std::vector<std::uint8_t>();
-  for(std::size_t q = 0; q < splittable.size(); ++q)
+  const bool needs_volume = !use_pieces || any_of_flags(splittable);
+  bool volume_expected = !use_pieces;
+  if(use_pieces && needs_volume)
   {
-    needs_volume = needs_volume || splittable[q];
-    volume_expected = volume_expected || (splittable[q] && nearly_closed[q]);
+    const std::vector<std::uint8_t> nearly_closed = nearly_closed_pieces(tm, np, s.pieces);
+    for(std::size_t q = 0; q < splittable.size(); ++q) volume_expected = volume_expected || (splittable[q] && nearly_closed[q]);
   }
   const bool fitted =
     needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);

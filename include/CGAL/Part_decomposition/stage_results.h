@@ -241,6 +241,17 @@ enum class Merge_kind
   NO_CONTACT    ///< two parts that do not touch (the parts of a mesh in separate places)
 };
 
+namespace internal {
+
+// Whether a merge goes beyond the default parts: it costs at least `maximum_cost` or joins parts
+// that do not touch. The hierarchy's cut and its merge order share this rule.
+inline bool merge_beyond_default_parts(Merge_kind kind, double cost, double maximum_cost)
+{
+  return cost >= maximum_cost || kind == Merge_kind::NO_CONTACT;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgPartDecompositionRef
 A node of a `Part_hierarchy`: a leaf (a finest part) or the union of its two children.
@@ -319,7 +330,8 @@ struct Part_hierarchy
     CGAL_precondition(k >= 1 && k <= number_of_leaves());
     // the nodes made by the first L - k merges are [0, 2L - k): the next merge makes node 2L - k
     for(std::size_t next = 2 * number_of_leaves() - k;
-        k > 1 && nodes[next].merge_cost < maximum_cost && nodes[next].kind != Merge_kind::NO_CONTACT; ++next)
+        k > 1 && !internal::merge_beyond_default_parts(nodes[next].kind, nodes[next].merge_cost, maximum_cost);
+        ++next)
       --k;
     return k;
   }

@@ -396,11 +396,10 @@ private:
   }
 
   // Whether merge `e` is the first above the default parts: between parts, not within one, and
-  // at least as costly as `attachment_from` or between parts that do not touch (where
-  // Part_hierarchy::level_below_cost() stops).
+  // where Part_hierarchy::level_below_cost() stops.
   bool ends_default_parts(const Entry& e) const
   {
-    return e.kind >= Merge_kind::SAME_PIECE && (e.cost >= m_p.attachment_from || e.kind == Merge_kind::NO_CONTACT);
+    return e.kind >= Merge_kind::SAME_PIECE && merge_beyond_default_parts(e.kind, e.cost, m_p.attachment_from);
   }
 
   // The merges waiting when the default parts are reached, with the costs of the merges above them.
