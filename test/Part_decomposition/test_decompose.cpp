@@ -1230,3 +1230,22 @@ TEST_CASE("above the default parts the size of the smaller part counts in every 
   // above the default parts, every merge costs at least their maximum
   for(std::size_t n = 5; n < h.nodes.size(); ++n) CHECK(h.nodes[n].merge_cost >= PD::defaults::maximum_merge_cost);
 }
+
+TEST_CASE("above the default parts two large parts of one piece wait with the contacts", "[hierarchy]")
+{
+  // An L bracket (one piece: plates A and B, half of the surface each) and a pin standing on A, a
+  // piece of its own. Merges within a piece come first, but not that of two large halves: the pin
+  // joins A before A and B merge.
+  std::vector<int> plate;
+  Mesh m = test_shapes::make_l_bracket(1., 1., 0.125, 1., 0.25, &plate);
+  std::vector<std::size_t> part(plate.begin(), plate.end());
+  test_shapes::append(m, test_shapes::make_box(Point(0.5, -0.25, 0.375), Point(0.625, 0., 0.625), 2));
+  part.resize(num_faces(m), 2);
+  const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(part));
+  REQUIRE(h.number_of_leaves() == 3);
+  CHECK(h.level_below_cost(3, PD::defaults::maximum_merge_cost) == 3);
+  REQUIRE(h.nodes.size() == 5);
+  auto children = [&](std::size_t n) { return std::set<std::size_t>(h.nodes[n].children.begin(), h.nodes[n].children.end()); };
+  CHECK(children(3) == std::set<std::size_t>{0, 2}); // the pin with plate A
+  CHECK(children(4) == std::set<std::size_t>{1, 3});
+}

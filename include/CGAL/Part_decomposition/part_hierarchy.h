@@ -67,6 +67,10 @@ constexpr double merge_crease_angle = 60.;
 // enough that size orders these merges (tuned on half A of the development and CAD-style sets
 // told their part counts: 3 and 10 equal, 1 and 0.3 below; see RESULTS.md).
 constexpr double merge_attachment_weight = 10.;
+// Above the default parts, the cost from which a merge within a piece waits with the contacts: the
+// size term of a part of 30% of the surface (tuned on half A of the CAD-style set told its coarse
+// part counts: 2.5 to 3.5 equal, 2 and 4 below; see RESULTS.md).
+constexpr double merge_within_piece_limit = 3.;
 
 // The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`.
 template <typename Corner>
@@ -135,6 +139,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
   p.crease_weight = merge_crease_weight;
   p.attachment_from = maximum_merge_cost;
   p.attachment_weight = merge_attachment_weight;
+  p.within_piece_limit = merge_within_piece_limit;
   double total_volume = 1.;
   for(int d = 0; d < 3; ++d) total_volume *= (std::max)(hi[d] - lo[d], 2. * p.thickness);
 
@@ -248,7 +253,9 @@ From there on, every merge that is not between parts of one assigned part costs
 \f$c(a, b) + 10\,\min(A(a), A(b)) / A(M)\f$ instead (and at least `maximum_merge_cost`), with
 \f$A\f$ the area of a part's surface and \f$A(M)\f$ that of the mesh: above the default parts, a
 small part joins the part it is attached to (a handle its door, a pin its plate, the keys their
-keyboard) before large parts merge, while the merges below keep their order, and with it the
+keyboard) before large parts merge. A merge within a piece that then costs at least 3 waits with
+the merges between pieces in contact: two large parts of one piece (a lid and its base joined by a
+hinge) are not one part attached to the other. The merges below keep their order, and with them the
 default parts.
 
 `build_part_hierarchy(tm, pieces, parts, np)` builds the hierarchy of a decomposition, whose default parts

@@ -187,6 +187,10 @@ struct Merge_parameters
   // before large parts merge, and the merges below keep their order.
   double attachment_from = std::numeric_limits<double>::infinity();
   double attachment_weight = 0.;
+  // Above the default parts, a merge within a piece that costs at least this much waits with the
+  // contacts: two large parts of one piece (a lid and its base joined by a hinge) are not a part
+  // attached to another.
+  double within_piece_limit = std::numeric_limits<double>::infinity();
 };
 
 // The pairs of leaves of different pieces whose surfaces come within about `distance` of each
@@ -312,7 +316,7 @@ public:
     while(alive > 1)
     {
       while(!m_queue.empty() && (!m_alive[m_queue.top().a] || !m_alive[m_queue.top().b])) m_queue.pop();
-      if(m_queue.empty() || m_queue.top().kind > phase)
+      if(m_queue.empty() || m_queue.top().rank > phase)
       {
         complete(phase);
         if(phase != Merge_kind::NO_CONTACT) phase = Merge_kind(int(phase) + 1);
@@ -350,9 +354,10 @@ private:
     Merge_kind kind;
     double cost;
     std::size_t a, b;
+    Merge_kind rank; // the kind of merge it waits with
     bool operator>(const Entry& o) const
     {
-      if(kind != o.kind) return kind > o.kind;
+      if(rank != o.rank) return rank > o.rank;
       if(cost != o.cost) return cost > o.cost;
       if(a != o.a) return a > o.a;
       return b > o.b;
@@ -412,14 +417,22 @@ private:
     {
       for(const Link& l : m_links[e.a])
         if(l.node == e.b) e.cost = cost(e.a, l, e.kind);
+      e.rank = rank_of(e.kind, e.cost);
       m_queue.push(e);
     }
+  }
+
+  Merge_kind rank_of(Merge_kind kind, double cost) const
+  {
+    const bool waits = m_above_default && kind == Merge_kind::SAME_PIECE && cost >= m_p.within_piece_limit;
+    return waits ? Merge_kind::CONTACT : kind;
   }
 
   void push(std::size_t a, const Link& l)
   {
     const Merge_kind kind = kind_of(a, l.node, l.contact);
-    m_queue.push(Entry{kind, cost(a, l, kind), (std::min)(a, l.node), (std::max)(a, l.node)});
+    const double c = cost(a, l, kind);
+    m_queue.push(Entry{kind, c, (std::min)(a, l.node), (std::max)(a, l.node), rank_of(kind, c)});
   }
 
   // Links the living nodes that must merge before the merges of the next kind but are not
