@@ -101,8 +101,10 @@ inline Mesh make_box(const Point& lo, const Point& hi, int n)
       auto P = [&](int i, int j) {
         double c[3];
         c[axis] = side ? H[axis] : L[axis];
-        c[u] = L[u] + (H[u] - L[u]) * i / n;
-        c[w] = L[w] + (H[w] - L[w]) * j / n;
+        // the last vertex is the corner itself: L + (H - L) * n / n may miss it by a rounding,
+        // and the sides would then not share their edges
+        c[u] = i == n ? H[u] : L[u] + (H[u] - L[u]) * i / n;
+        c[w] = j == n ? H[w] : L[w] + (H[w] - L[w]) * j / n;
         return Point(c[0], c[1], c[2]);
       };
       for(int i = 0; i < n; ++i)
