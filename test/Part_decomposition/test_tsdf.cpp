@@ -429,6 +429,46 @@ TEST_CASE("TSDF band distances equal the distances of CGAL's AABB tree", "[tsdf]
   }
 }
 
+TEST_CASE("The band distances by the tree and by sweeping the triangles are the same", "[tsdf][distance]")
+{
+  // Large triangles (a box of 12, a tilted plate), small ones (a jittered sphere), an open sheet.
+  Mesh plates = test_shapes::make_box(Point(-0.4, -0.3, -0.2), Point(0.3, 0.1, 0.25), 1);
+  Mesh tilted;
+  const auto a = tilted.add_vertex(Point(-0.45, -0.4, -0.3)), b = tilted.add_vertex(Point(0.4, -0.1, 0.3)),
+             c = tilted.add_vertex(Point(-0.2, 0.45, 0.1));
+  tilted.add_face(a, b, c);
+  test_shapes::append(plates, tilted);
+  Mesh sphere = test_shapes::make_sphere(Point(0.1, 0., 0.05), 0.4, 3);
+  CGAL::Random rng(5);
+  for(auto v : vertices(sphere))
+  {
+    const Point& q = sphere.point(v);
+    sphere.point(v) = Point(q.x() + rng.get_double(-0.02, 0.02), q.y(), q.z() + rng.get_double(-0.02, 0.02));
+  }
+  const Mesh sheet = test_shapes::make_wavy_sheet(12, 0.1);
+  for(const Mesh* m : std::vector<const Mesh*>{&plates, &sphere, &sheet})
+    for(int r : {16, 32})
+      for(double tau_voxels : {1.5, 8.})
+      {
+        const std::vector<PDI::Triangle_points> tris =
+          PDI::normalized_triangles(*m, get(CGAL::vertex_point, *m), PD::compute_normalization(*m));
+        const PDI::Surface_voxels sv = PDI::surface_voxels<CGAL::Sequential_tag>(tris, r);
+        const double tau = tau_voxels / r;
+        const PD::Voxel_grid<double> tree = PDI::clipped_unsigned_distance<CGAL::Parallel_if_available_tag>(
+          tris, sv, r, tau, nullptr, PDI::Band_distance_method::TREE);
+        const PD::Voxel_grid<double> sweep = PDI::clipped_unsigned_distance<CGAL::Parallel_if_available_tag>(
+          tris, sv, r, tau, nullptr, PDI::Band_distance_method::SWEEP);
+        std::size_t differ = 0, band = 0;
+        for(std::size_t i = 0; i < tree.size(); ++i)
+        {
+          differ += tree[i] != sweep[i] ? 1 : 0;
+          band += tree[i] < tau ? 1 : 0;
+        }
+        CHECK(band > 100);
+        CHECK(differ == 0);
+      }
+}
+
 TEST_CASE("Surface voxels are the voxels the triangles touch", "[tsdf][voxelization]")
 {
   CGAL::Random rng(9);

@@ -204,6 +204,72 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
   return inside;
 }
 
+// The voxels whose centres lie within `tau` of each triangle's box, `{i0, i1, j0, j1, k0, k1}`
+// (inclusive, one voxel wider for the roundings), and the number of those voxels over all triangles.
+inline std::pair<std::vector<std::array<int, 6> >, double>
+voxels_near_triangle_boxes(const std::vector<Triangle_points>& tris, int r, double tau)
+{
+  const double h = 1. / double(r);
+  std::vector<std::array<int, 6> > boxes(tris.size());
+  double count = 0.;
+  for(std::size_t t = 0; t < tris.size(); ++t)
+  {
+    double n = 1.;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double lo = (std::min)({tris[t][0][a], tris[t][1][a], tris[t][2][a]}) - tau;
+      const double hi = (std::max)({tris[t][0][a], tris[t][1][a], tris[t][2][a]}) + tau;
+      // centre of voxel i: -0.5 + (i + 0.5) h
+      const int i0 = (std::max)(0, int(std::floor((lo + 0.5) / h - 0.5)) - 1);
+      const int i1 = (std::min)(r - 1, int(std::ceil((hi + 0.5) / h - 0.5)) + 1);
+      boxes[t][2 * a] = i0;
+      boxes[t][2 * a + 1] = i1;
+      n *= double((std::max)(i1 - i0 + 1, 0));
+    }
+    count += n;
+  }
+  return std::make_pair(std::move(boxes), count);
+}
+
+// The squared distance to the closest triangle, capped at tau^2, at every voxel centre, each
+// triangle swept over the voxels of its box widened by tau (`voxels_near_triangle_boxes()`): the
+// minimum over a set of triangles that holds the closest one wherever it is closer than tau, with
+// the distance function of the tree's queries, so the same values. One thread per z-layer: the
+// result does not depend on the thread count.
+template <typename ConcurrencyTag>
+Voxel_grid<double> swept_squared_distances(const std::vector<Triangle_points>& tris,
+                                           const std::vector<std::array<int, 6> >& boxes, int r, double tau)
+{
+  const std::size_t R = std::size_t(r);
+  // the triangles of each z-layer, in triangle order
+  std::vector<std::size_t> first(R + 1, 0);
+  for(const std::array<int, 6>& b : boxes)
+    for(int k = b[4]; k <= b[5]; ++k) ++first[std::size_t(k) + 1];
+  for(std::size_t k = 0; k < R; ++k) first[k + 1] += first[k];
+  std::vector<std::uint32_t> layer_triangles(first[R]);
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for(std::size_t t = 0; t < boxes.size(); ++t)
+    for(int k = boxes[t][4]; k <= boxes[t][5]; ++k) layer_triangles[next[std::size_t(k)]++] = std::uint32_t(t);
+
+  Voxel_grid<double> out(r, tau * tau);
+  for_each_range<ConcurrencyTag>(R, [&](std::size_t kb, std::size_t ke) {
+    for(std::size_t k = kb; k < ke; ++k)
+      for(std::size_t n = first[k]; n < first[k + 1]; ++n)
+      {
+        const std::uint32_t t = layer_triangles[n];
+        const Triangle_points& T = tris[t];
+        for(int j = boxes[t][2]; j <= boxes[t][3]; ++j)
+          for(int i = boxes[t][0]; i <= boxes[t][1]; ++i)
+          {
+            const std::size_t idx = std::size_t(i) + R * (std::size_t(j) + R * k);
+            const double d = squared_distance_to_triangle(out.center(idx), T[0], T[1], T[2]);
+            if(d < out[idx]) out[idx] = d;
+          }
+      }
+  });
+  return out;
+}
+
 // Unsigned distances (normalized units, clipped to `tau`) at the voxel centres that can be closer
 // than `tau` to the surface, `tau` elsewhere. The distance from a centre to the surface is at least
 // its distance to the nearest surface-voxel centre minus half a voxel diagonal: beyond
@@ -215,12 +281,13 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
 // the triangles: `release`, if given, is `&tris`, emptied once the tree is built (a hundred
 // megabytes on a million faces, while the queries run).
 template <typename ConcurrencyTag>
-Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>& tris,
-                                             const Surface_voxels& sv, int r, double tau,
-                                             std::vector<Triangle_points>* release = nullptr)
+Voxel_grid<double> clipped_distance_by_tree(const std::vector<Triangle_points>& tris, const Surface_voxels& sv, int r,
+                                            double tau, std::vector<Triangle_points>* release)
 {
   const std::size_t R = std::size_t(r);
   const double h = 1. / double(r);
+  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
+  const double reach2 = reach * reach;
   Voxel_grid<std::size_t> nearest;
   Voxel_grid<double> d2;
   std::unique_ptr<const Triangle_soup_aabb_tree> tree_holder;
@@ -229,8 +296,6 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
                                    [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false, &nearest); });
   const Triangle_soup_aabb_tree& tree = *tree_holder;
   if(release) std::vector<Triangle_points>().swap(*release);
-  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
-  const double reach2 = reach * reach;
 
   Voxel_grid<double> out(r, tau);
   const double tau2 = tau * tau;
@@ -277,6 +342,62 @@ Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>&
     }
   });
   return out;
+}
+
+// clipped_distance_by_tree()'s values by sweeping each triangle over the voxels near its box
+// (`boxes`, from voxels_near_triangle_boxes()): the band is that of the distance transform.
+template <typename ConcurrencyTag>
+Voxel_grid<double> clipped_distance_by_sweep(const std::vector<Triangle_points>& tris, const Surface_voxels& sv,
+                                             const std::vector<std::array<int, 6> >& boxes, int r, double tau)
+{
+  const double h = 1. / double(r);
+  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
+  Voxel_grid<double> d2, swept;
+  run_side_by_side<ConcurrencyTag>([&] { swept = swept_squared_distances<ConcurrencyTag>(tris, boxes, r, tau); },
+                                   [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false); });
+  Voxel_grid<double> out(r, tau);
+  for(std::size_t i = 0; i < out.size(); ++i)
+    if(d2[i] < reach * reach) out[i] = (std::min)(std::sqrt(swept[i]), tau);
+  return out;
+}
+
+// How clipped_unsigned_distance() finds the closest triangles.
+enum class Band_distance_method
+{
+  AUTOMATIC, // the sweep if it evaluates fewer than `sweep_limit` distances per voxel of the band
+  TREE,
+  SWEEP
+};
+
+// The sweep evaluates every triangle at every voxel of its widened box; the tree about one triangle
+// per query on small triangles, tens on large overlapping ones, at several times the cost of one
+// sweep evaluation. On the CAD-style objects the sweep is faster below 10 evaluations per voxel of
+// the band (surface voxels times 2 tau + 1 voxels), slower from 19 on; the two give the same values.
+constexpr double sweep_limit = 10.;
+
+// Unsigned distances (normalized units, clipped to `tau`) at the voxel centres that can be closer
+// than `tau` to the surface, `tau` elsewhere: clipped_distance_by_tree() or, for a few large
+// triangles (an assembly of plates), clipped_distance_by_sweep(), which give the same values.
+// `release`, if given, is `&tris`, emptied once it is no longer needed.
+template <typename ConcurrencyTag>
+Voxel_grid<double> clipped_unsigned_distance(const std::vector<Triangle_points>& tris, const Surface_voxels& sv, int r,
+                                             double tau, std::vector<Triangle_points>* release = nullptr,
+                                             Band_distance_method method = Band_distance_method::AUTOMATIC)
+{
+  if(method != Band_distance_method::TREE)
+  {
+    const std::pair<std::vector<std::array<int, 6> >, double> boxes = voxels_near_triangle_boxes(tris, r, tau);
+    std::size_t surface = 0;
+    for(std::size_t i = 0; i < sv.mask.size(); ++i) surface += sv.mask[i] != 0 ? 1 : 0;
+    const double band = double(surface) * (2. * tau * double(r) + 1.);
+    if(method == Band_distance_method::SWEEP || boxes.second < sweep_limit * band)
+    {
+      Voxel_grid<double> out = clipped_distance_by_sweep<ConcurrencyTag>(tris, sv, boxes.first, r, tau);
+      if(release) std::vector<Triangle_points>().swap(*release);
+      return out;
+    }
+  }
+  return clipped_distance_by_tree<ConcurrencyTag>(tris, sv, r, tau, release);
 }
 
 // The named parameters of compute_tsdf(): the finest resolution, tau in voxels, the sign method.
@@ -364,7 +485,10 @@ traversal (nearest child box first, boxes farther than the best triangle so far 
 point-triangle distances at the leaves), bounded from the start by the triangle found for the
 previous voxel of the row and by \f$\tau\f$. These distances equal those of the tree's own
 `squared_distance()` query up to rounding (\f$10^{-14}\f$ voxel on the development meshes),
-which is several times slower on the band. Elsewhere only the sign is
+which is several times slower on the band. A mesh of a few large triangles (a CAD assembly of
+plates) is done the other way round, with the same values: each triangle is swept over the voxels
+within \f$\tau\f$ of its bounding box, when that evaluates fewer than 10 distances per voxel of the
+band. Elsewhere only the sign is
 computed and the value is \f$\pm\tau\f$: every voxel carries its sign, deep interior voxels hold
 \f$-\tau\f$. How the sign is decided is described in `Tsdf_sign_method`. Coordinates are read
 through the vertex point map with `CGAL::to_double()` and everything is computed in double
@@ -372,8 +496,9 @@ precision on the normalized coordinates: no geometric traits class is needed.
 
 \par Complexity
 \f$O(F \log F)\f$ to build the tree of the \f$F\f$ triangles, then one closest-triangle query (logarithmic in
-\f$F\f$ in practice) per voxel of the band of width \f$\tau\f$ around the surface, and linear time in the
-number of voxels \f$r^3\f$ for the sign, plus the number of crossings of the rows of the grid by the
+\f$F\f$ in practice) per voxel of the band of width \f$\tau\f$ around the surface (for a sweep instead,
+one distance per triangle and voxel within \f$\tau\f$ of its box); linear time in the number of
+voxels \f$r^3\f$ for the sign, plus the number of crossings of the rows of the grid by the
 triangles (rows along one axis on a closed mesh, along the three axes on an open one, with the
 default `Tsdf_sign_method::RAY_VOTES`).
 
