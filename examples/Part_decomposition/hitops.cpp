@@ -450,8 +450,7 @@ Result run(const Mesh& mesh, const Options& o)
     const std::vector<std::size_t> labels = r.hierarchy.labels(r.parts);
     std::size_t i = 0;
     for(Mesh::Face_index f : faces(mesh)) r.face_part[i++] = labels[std::size_t(f)];
-    r.primitives.clear();
-    for(std::size_t n : r.hierarchy.level(r.parts)) r.primitives.push_back(r.hierarchy.nodes[n].primitive);
+    r.primitives = r.hierarchy.primitives(r.parts);
   }
   return r;
 }

@@ -285,8 +285,7 @@ std::size_t decompose_by_stages(const Mesh& m, bool use_pieces, bool keep_residu
   const PD::Part_hierarchy<K> hierarchy = PD::build_part_hierarchy(m, pieces, composed, np);
   const std::size_t k = hierarchy.level_below_cost(composed.number_of_parts(), PD::defaults::maximum_merge_cost);
   labels = hierarchy.labels(k);
-  primitives.clear();
-  for(std::size_t n : hierarchy.level(k)) primitives.push_back(hierarchy.nodes[n].primitive);
+  primitives = hierarchy.primitives(k);
   return k;
 }
 
@@ -1248,4 +1247,17 @@ TEST_CASE("above the default parts two large parts of one piece wait with the co
   auto children = [&](std::size_t n) { return std::set<std::size_t>(h.nodes[n].children.begin(), h.nodes[n].children.end()); };
   CHECK(children(3) == std::set<std::size_t>{0, 2}); // the pin with plate A
   CHECK(children(4) == std::set<std::size_t>{1, 3});
+  // the superquadrics of a level come in the order of its labels: each centred in its part's box
+  const std::vector<std::size_t> labels = h.labels(2);
+  const std::vector<PD::Superquadric<K> > primitives = h.primitives(2);
+  REQUIRE(primitives.size() == 2);
+  for(std::size_t p = 0; p < 2; ++p)
+  {
+    CGAL::Bbox_3 box;
+    for(Mesh::Face_index f : faces(m))
+      if(labels[std::size_t(f)] == p)
+        for(Mesh::Vertex_index v : vertices_around_face(m.halfedge(f), m)) box += m.point(v).bbox();
+    const Point c = primitives[p].center();
+    CHECK((c.x() > box.xmin() && c.x() < box.xmax() && c.y() > box.ymin() && c.y() < box.ymax()));
+  }
 }

@@ -229,8 +229,7 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_resu
   {
     K = (std::min)(K, s.hierarchy.number_of_leaves());
     out.parts = s.hierarchy.labels(K);
-    out.primitives.clear();
-    for(std::size_t n : s.hierarchy.level(K)) out.primitives.push_back(s.hierarchy.nodes[n].primitive);
+    out.primitives = s.hierarchy.primitives(K);
   }
   out.number_of_parts = K;
 }
@@ -565,7 +564,7 @@ public:
     if(!m_has_hierarchy) build_hierarchy();
     k = (std::min)(k, m_s.hierarchy.number_of_leaves());
     internal::put_face_values(m_tm, m_fim, m_s.hierarchy.labels(k), face_part_map);
-    for(std::size_t n : m_s.hierarchy.level(k)) *primitives++ = m_s.hierarchy.nodes[n].primitive;
+    for(const Primitive& q : m_s.hierarchy.primitives(k)) *primitives++ = q;
     return k;
   }
   /// @}

@@ -321,6 +321,15 @@ struct Part_hierarchy
     return result;
   }
 
+  /// the superquadrics of the nodes of level `k`, in the order of `level(k)`.
+  /// \pre `1 <= k <= number_of_leaves()`
+  std::vector<Superquadric<GeomTraits> > primitives(std::size_t k) const
+  {
+    std::vector<Superquadric<GeomTraits> > result;
+    for(std::size_t n : level(k)) result.push_back(nodes[n].primitive);
+    return result;
+  }
+
   /// the coarsest level reached from level `k` by the merges that follow it in order, as long as
   /// each costs less than `maximum_cost` and joins parts that touch (not `Merge_kind::NO_CONTACT`):
   /// `k` if the next merge does not.
