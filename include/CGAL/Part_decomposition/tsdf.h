@@ -204,6 +204,15 @@ std::vector<std::uint8_t> inside_by_flood_fill(const std::vector<Triangle_points
   return inside;
 }
 
+// The band of the distances, for both ways of computing them: a voxel centre can be closer than
+// `tau` to the surface only if its squared distance, in voxels, to the nearest surface-voxel centre
+// is below this (tau plus half a voxel diagonal).
+inline double squared_band_reach(int r, double tau)
+{
+  const double reach = tau * double(r) + 0.5 * std::sqrt(3.) + 1e-6;
+  return reach * reach;
+}
+
 // The voxels whose centres lie within `tau` of each triangle's box, `{i0, i1, j0, j1, k0, k1}`
 // (inclusive, one voxel wider for the roundings), and the number of those voxels over all triangles.
 inline std::pair<std::vector<std::array<int, 6> >, double>
@@ -285,9 +294,7 @@ Voxel_grid<double> clipped_distance_by_tree(const std::vector<Triangle_points>& 
                                             double tau, std::vector<Triangle_points>* release)
 {
   const std::size_t R = std::size_t(r);
-  const double h = 1. / double(r);
-  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
-  const double reach2 = reach * reach;
+  const double reach2 = squared_band_reach(r, tau);
   Voxel_grid<std::size_t> nearest;
   Voxel_grid<double> d2;
   std::unique_ptr<const Triangle_soup_aabb_tree> tree_holder;
@@ -350,14 +357,13 @@ template <typename ConcurrencyTag>
 Voxel_grid<double> clipped_distance_by_sweep(const std::vector<Triangle_points>& tris, const Surface_voxels& sv,
                                              const std::vector<std::array<int, 6> >& boxes, int r, double tau)
 {
-  const double h = 1. / double(r);
-  const double reach = tau / h + 0.5 * std::sqrt(3.) + 1e-6;
+  const double reach2 = squared_band_reach(r, tau);
   Voxel_grid<double> d2, swept;
   run_side_by_side<ConcurrencyTag>([&] { swept = swept_squared_distances<ConcurrencyTag>(tris, boxes, r, tau); },
                                    [&] { d2 = squared_distance_transform<ConcurrencyTag>(sv.mask, false); });
   Voxel_grid<double> out(r, tau);
   for(std::size_t i = 0; i < out.size(); ++i)
-    if(d2[i] < reach * reach) out[i] = (std::min)(std::sqrt(swept[i]), tau);
+    if(d2[i] < reach2) out[i] = (std::min)(std::sqrt(swept[i]), tau);
   return out;
 }
 
