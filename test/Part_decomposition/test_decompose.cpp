@@ -1160,6 +1160,37 @@ TEST_CASE("whether a piece bounds a volume is decided by the distance field, not
   open_decomposer.compute_distance_field();
   CHECK(open_decomposer.needs_volumetric_stages());
 }
+
+TEST_CASE("an assembly of sheets glued along a junction needs no distance field", "[decompose][pieces]")
+{
+  // The corrugated sheet alone is not convex: it may need the volumetric stages. A fin glued along
+  // its line x = 0 (where z = 0), three faces at each edge, makes it an assembly of sheets whose
+  // parts are its regions: no piece is splittable, and decompose() computes no distance field.
+  Mesh m = test_shapes::make_wavy_sheet(24, 0.15);
+  CHECK(PD::splittable_pieces(m, PD::segment_pieces(m)) == std::vector<std::uint8_t>{1});
+  test_shapes::Soup fin;
+  for(int j = 0; j < 24; ++j)
+    for(int k = 0; k < 4; ++k)
+    {
+      const auto P = [](int jj, int kk) { return Point(0., -1. + 2. * jj / 24., 0.125 * kk); };
+      fin.triangle(P(j, k), P(j + 1, k), P(j + 1, k + 1));
+      fin.triangle(P(j, k), P(j + 1, k + 1), P(j, k + 1));
+    }
+  const std::size_t first_fin_face = test_shapes::append(m, fin.mesh());
+  const PD::Piece_segmentation pieces = PD::segment_pieces(m);
+  REQUIRE(pieces.number_of_pieces == 1);
+  CHECK(PD::splittable_pieces(m, pieces) == std::vector<std::uint8_t>{0});
+
+  std::vector<std::size_t> part(num_faces(m));
+  PD::Stage_timings timings;
+  PD::decompose(m, CGAL::make_property_map(part), PD::parameters::stage_timings(&timings));
+  CHECK(timings.tsdf == 0.);
+  CHECK(timings.fitting == 0.);
+  // the fin is a part of its own
+  const std::set<std::size_t> fin_parts(part.begin() + std::ptrdiff_t(first_fin_face), part.end());
+  REQUIRE(fin_parts.size() == 1);
+  CHECK(std::count(part.begin(), part.end(), *fin_parts.begin()) == std::ptrdiff_t(num_faces(m) - first_fin_face));
+}
 namespace {
 
 // An L of two plates, a horizontal one and a lower vertical one standing on its edge, and a tall

@@ -226,13 +226,29 @@ void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector
   index_of_keys(key, c.part_groups);
 }
 
+// Per piece: 1 if it is splittable (`splittable_pieces(adj, ...)`) and not an assembly of sheets,
+// whose parts are its regions: only such a piece needs the distance field.
+inline std::vector<std::uint8_t> splittable_solid_pieces(const Face_adjacency& adj, const Face_corners& corners,
+                                                         const Piece_segmentation& pieces, const Piece_parameters& p)
+{
+  std::vector<std::uint8_t> splittable = splittable_pieces(adj, pieces.piece, pieces.number_of_pieces,
+                                                           p.minimum_part_area * pieces.area, convexity_tolerance);
+  const std::vector<double> junction = junction_length_fractions(adj, corners, pieces.piece, pieces.number_of_pieces);
+  for(std::size_t q = 0; q < splittable.size(); ++q)
+    splittable[q] = splittable[q] && junction[q] < maximum_junction_fraction;
+  return splittable;
+}
+
 } // namespace internal
 
 /*!
 \ingroup PkgPartDecompositionRef
 returns, per piece of `pieces`, 1 if the volumetric stages may split it: it is not convex (an edge
-is concave by at least one degree as the piece is oriented) and its area is at least twice
-`minimum_part_area` of the mesh area. The prior, the distance field, the fit and the
+is concave by at least one degree as the piece is oriented), its area is at least twice
+`minimum_part_area` of the mesh area, and it is not an assembly of sheets: its non-manifold
+junctions (edges of three faces or more) make up less than 0.1% of the length of its edges, so that
+a few defective edges do not count but the walls and shelves of a cabinet do (the parts of an
+assembly of sheets are its regions). The prior, the distance field, the fit and the
 over-segmentation are worth computing only if one piece is splittable (or with `use_pieces(false)`);
 `volumetric_pieces()` then tells which of them the volumetric stages decompose.
 
@@ -250,23 +266,18 @@ std::vector<std::uint8_t> splittable_pieces(const TriangleMesh& tm, const Piece_
 {
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const internal::Face_adjacency adj = internal::piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
-  return internal::splittable_pieces(adj, pieces.piece, pieces.number_of_pieces,
-                                     internal::read_piece_parameters(np).minimum_part_area * pieces.area,
-                                     internal::convexity_tolerance);
+  return internal::splittable_solid_pieces(adj, internal::Face_corners(tm, maps.fim, maps.vpm), pieces,
+                                          internal::read_piece_parameters(np));
 }
 
 /*!
 \ingroup PkgPartDecompositionRef
 returns, per piece of `pieces`, 1 if the volumetric stages decompose it: it is splittable
-(`splittable_pieces()`), it bounds a volume of the distance field `tsdf`, closed or not, and it is
-not an assembly of sheets:
-- at least half of its area separates the field's inside from its outside, probed one voxel
-  away on both sides of each face (an open sheet has the outside on both sides, a piece
-  thinner than a voxel too, a wall inside a volume the inside on both); this holds for a scan
-  with holes and for each piece of a group that encloses space together;
-- its non-manifold junctions (edges of three faces or more) make up less than 0.1% of the length
-  of its edges, so that a few defective edges do not count but the walls and shelves of a cabinet
-  do; the parts of an assembly of sheets are its regions.
+(`splittable_pieces()`, which also tells an assembly of sheets) and it bounds a volume of the
+distance field `tsdf`, closed or not: at least half of its area separates the field's inside from
+its outside, probed one voxel away on both sides of each face (an open sheet has the outside on
+both sides, a piece thinner than a voxel too, a wall inside a volume the inside on both); this
+holds for a scan with holes and for each piece of a group that encloses space together.
 
 An open piece that the volumetric stages decompose is turned in `pieces` to face out of the volume
 (as the reader turns closed ones), and the regions are recomputed for that orientation: its
@@ -288,9 +299,8 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   const internal::Piece_parameters p = internal::read_piece_parameters(np);
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const internal::Face_adjacency adj = internal::piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
-  std::vector<std::uint8_t> volumetric = internal::splittable_pieces(
-    adj, pieces.piece, pieces.number_of_pieces, p.minimum_part_area * pieces.area, internal::convexity_tolerance);
   const internal::Face_corners corners(tm, maps.fim, maps.vpm);
+  std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
   // the triangles by face index, in the unit frame of the field
   std::vector<internal::Triangle_points> triangles(num_faces(tm));
   for(std::size_t i = 0; i < triangles.size(); ++i)
@@ -299,13 +309,10 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   const double depth = internal::bounding_probe_depth / double(tsdf.values.resolution());
   const internal::Bounding_fractions sides =
     internal::bounding_area_fractions(triangles, pieces.piece, pieces.number_of_pieces, tsdf.values, depth);
-  const std::vector<double> junction =
-    internal::junction_length_fractions(adj, corners, pieces.piece, pieces.number_of_pieces);
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
   {
-    volumetric[q] = volumetric[q] && sides.bounding[q] >= internal::minimum_bounding_fraction &&
-                    junction[q] < internal::maximum_junction_fraction;
+    volumetric[q] = volumetric[q] && sides.bounding[q] >= internal::minimum_bounding_fraction;
     const int outward = sides.outward[q] < 0. ? -1 : 1;
     if(volumetric[q] && !pieces.closed[q] && pieces.orientation[q] != outward)
     {
