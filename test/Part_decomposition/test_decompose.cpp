@@ -1161,6 +1161,25 @@ TEST_CASE("whether a piece bounds a volume is decided by the distance field, not
   CHECK(open_decomposer.needs_volumetric_stages());
 }
 
+TEST_CASE("a closed piece thinner than a voxel is not expected to bound a volume", "[decompose][pieces]")
+{
+  // Whether the prior starts beside the distance field: a closed cube is expected to bound a
+  // volume, a closed plate thinner than a voxel of the 64^3 grid (3/60 here) is not, nor is it
+  // on a finer grid once it is thicker than a voxel there.
+  Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 4);
+  const std::size_t plate = test_shapes::append(m, test_shapes::make_box(Point(2, 0, 0), Point(3, 1, 0.03), 4));
+  const PD::Piece_segmentation pieces = PD::segment_pieces(m);
+  REQUIRE(pieces.number_of_pieces == 2);
+  const std::size_t cube_piece = pieces.piece[0], plate_piece = pieces.piece[plate];
+  const std::vector<std::uint8_t> at_64 = PD::internal::likely_volume_pieces(m, CGAL::parameters::default_values(), pieces);
+  CHECK(at_64[cube_piece] == 1);
+  CHECK(at_64[plate_piece] == 0);
+  const std::vector<std::uint8_t> at_256 =
+    PD::internal::likely_volume_pieces(m, PD::parameters::voxel_resolutions(std::vector<int>{64, 128, 256}), pieces);
+  CHECK(at_256[cube_piece] == 1);
+  CHECK(at_256[plate_piece] == 1);
+}
+
 TEST_CASE("an assembly of sheets glued along a junction needs no distance field", "[decompose][pieces]")
 {
   // The corrugated sheet alone is not convex: it may need the volumetric stages. A fin glued along

@@ -163,15 +163,21 @@ void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fit
   s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
 }
 
-// Per piece, whether it is closed or nearly so, as a scan with a few holes: at most 2% of its
-// edges are border edges (none for a closed piece). Such a piece most likely bounds a volume of
-// the distance field.
+// Per piece, whether it most likely bounds a volume of the distance field: it is closed or nearly
+// so, as a scan with a few holes (at most 2% of its edges are border edges, none for a closed
+// piece), and its bounding box spans at least a voxel of the finest grid on every axis (a thinner
+// plate has the outside one voxel away on both sides of its faces).
 template <typename TriangleMesh, typename NamedParameters>
-std::vector<std::uint8_t> nearly_closed_pieces(const TriangleMesh& tm, const NamedParameters& np,
+std::vector<std::uint8_t> likely_volume_pieces(const TriangleMesh& tm, const NamedParameters& np,
                                                const Piece_segmentation& pieces)
 {
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  std::vector<std::size_t> border(pieces.number_of_pieces, 0), edges(pieces.number_of_pieces, 0);
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const std::size_t n = pieces.number_of_pieces;
+  std::vector<std::size_t> border(n, 0), edges(n, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 6> > box(n, {{inf, inf, inf, -inf, -inf, -inf}});
   for(auto f : faces(tm))
   {
     const std::size_t q = pieces.piece[std::size_t(get(fim, f))];
@@ -179,10 +185,22 @@ std::vector<std::uint8_t> nearly_closed_pieces(const TriangleMesh& tm, const Nam
     {
       ++edges[q];
       if(is_border(opposite(h, tm), tm)) ++border[q];
+      const auto& p = get(vpm, target(h, tm));
+      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      for(int d = 0; d < 3; ++d)
+      {
+        box[q][std::size_t(d)] = (std::min)(box[q][std::size_t(d)], c[d]);
+        box[q][std::size_t(d) + 3] = (std::max)(box[q][std::size_t(d) + 3], c[d]);
+      }
     }
   }
-  std::vector<std::uint8_t> result(pieces.number_of_pieces, 0);
-  for(std::size_t q = 0; q < result.size(); ++q) result[q] = 50 * border[q] <= edges[q];
+  const double voxel = 1. / (read_normalization(tm, np).scale() * double(read_voxel_resolutions(np).back()));
+  std::vector<std::uint8_t> result(n, 0);
+  for(std::size_t q = 0; q < n; ++q)
+  {
+    const double thinnest = (std::min)({box[q][3] - box[q][0], box[q][4] - box[q][1], box[q][5] - box[q][2]});
+    result[q] = 50 * border[q] <= edges[q] && thinnest >= voxel;
+  }
   return result;
 }
 
@@ -254,8 +272,8 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposi
   bool volume_expected = !use_pieces;
   if(use_pieces && needs_volume)
   {
-    const std::vector<std::uint8_t> nearly_closed = nearly_closed_pieces(tm, np, s.pieces);
-    for(std::size_t q = 0; q < splittable.size(); ++q) volume_expected = volume_expected || (splittable[q] && nearly_closed[q]);
+    const std::vector<std::uint8_t> likely = likely_volume_pieces(tm, np, s.pieces);
+    for(std::size_t q = 0; q < splittable.size(); ++q) volume_expected = volume_expected || (splittable[q] && likely[q]);
   }
   const bool fitted =
     needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);
