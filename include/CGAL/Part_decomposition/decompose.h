@@ -25,6 +25,7 @@
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -171,34 +172,25 @@ template <typename TriangleMesh, typename NamedParameters>
 std::vector<std::uint8_t> likely_volume_pieces(const TriangleMesh& tm, const NamedParameters& np,
                                                const Piece_segmentation& pieces)
 {
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const std::size_t n = pieces.number_of_pieces;
   std::vector<std::size_t> border(n, 0), edges(n, 0);
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<std::array<double, 6> > box(n, {{inf, inf, inf, -inf, -inf, -inf}});
+  std::vector<CGAL::Bbox_3> box(n);
   for(auto f : faces(tm))
   {
-    const std::size_t q = pieces.piece[std::size_t(get(fim, f))];
+    const std::size_t q = pieces.piece[std::size_t(get(maps.fim, f))];
     for(auto h : halfedges_around_face(halfedge(f, tm), tm))
     {
       ++edges[q];
       if(is_border(opposite(h, tm), tm)) ++border[q];
-      const auto& p = get(vpm, target(h, tm));
-      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      for(int d = 0; d < 3; ++d)
-      {
-        box[q][std::size_t(d)] = (std::min)(box[q][std::size_t(d)], c[d]);
-        box[q][std::size_t(d) + 3] = (std::max)(box[q][std::size_t(d) + 3], c[d]);
-      }
+      box[q] += get(maps.vpm, target(h, tm)).bbox();
     }
   }
   const double voxel = 1. / (read_normalization(tm, np).scale() * double(read_voxel_resolutions(np).back()));
   std::vector<std::uint8_t> result(n, 0);
   for(std::size_t q = 0; q < n; ++q)
   {
-    const double thinnest = (std::min)({box[q][3] - box[q][0], box[q][4] - box[q][1], box[q][5] - box[q][2]});
+    const double thinnest = (std::min)({box[q].x_span(), box[q].y_span(), box[q].z_span()});
     result[q] = 50 * border[q] <= edges[q] && thinnest >= voxel;
   }
   return result;
