@@ -436,22 +436,14 @@ Result run(const Mesh& mesh, const Options& o)
   Result r;
   std::vector<std::size_t> part(num_faces(mesh), 0);
   auto part_map = CGAL::make_property_map(part); // Surface_mesh face indices are 0..F-1 here
-  r.parts = PD::decompose(
-    mesh, part_map,
-    PDP::combine(Part_decomposition_tools::named_parameters(o.decomposition),
-                 PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
-                 PDP::part_hierarchy(o.parts > 0 || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
-                 PDP::stage_timings(&r.timings)));
+  const auto np = PDP::combine(Part_decomposition_tools::named_parameters(o.decomposition),
+                               PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
+                               PDP::part_hierarchy(o.parts > 0 || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
+                               PDP::stage_timings(&r.timings));
+  // told the count, decompose() may look finer for more parts than its default granularity has
+  r.parts = o.parts > 0 ? PD::decompose(mesh, part_map, PDP::combine(np, PDP::number_of_parts(o.parts)))
+                        : PD::decompose(mesh, part_map, np);
   r.face_part.assign(part.begin(), part.end());
-  if(o.parts > 0)
-  {
-    // the level of the hierarchy: decompose() gives the tree with the default parts in one call
-    r.parts = (std::min)(o.parts, r.hierarchy.number_of_leaves());
-    const std::vector<std::size_t> labels = r.hierarchy.labels(r.parts);
-    std::size_t i = 0;
-    for(Mesh::Face_index f : faces(mesh)) r.face_part[i++] = labels[std::size_t(f)];
-    r.primitives = r.hierarchy.primitives(r.parts);
-  }
   return r;
 }
 

@@ -82,11 +82,17 @@ def test_the_default_parts_are_a_level(animal):
 def test_labels_at_is_decompose_with_that_number_of_parts(dumbbell):
     vertices, faces = dumbbell
     r = pd.decompose(vertices, faces, **FAST)
-    for k in sorted({1, 2, r.number_of_parts + 1, len(r.levels)}):
+    for k in sorted({1, 2, r.number_of_parts, r.number_of_parts + 1, len(r.levels)}):
         fixed = pd.decompose(vertices, faces, number_of_parts=k, **FAST)
         assert fixed.number_of_parts == k
-        assert np.array_equal(r.labels_at(k), fixed.labels)
         assert np.array_equal(fixed.labels_at(k), fixed.labels)
+        if k < r.number_of_parts:
+            # below the default number of parts, one pass: the levels of the default tree
+            assert np.array_equal(r.labels_at(k), fixed.labels)
+            assert fixed.timings["thin_parts"] == 0
+        else:
+            # from it on, the thin parts of a finer pass are carved out first
+            assert fixed.timings["thin_parts"] > 0
 
 
 def test_thin_parts_have_no_hierarchy(dumbbell):
@@ -96,6 +102,10 @@ def test_thin_parts_have_no_hierarchy(dumbbell):
     with pytest.raises(ValueError, match="thin_part_resolution"):
         r.labels_at(r.number_of_parts)
     assert len(r.parts()) == r.number_of_parts
+    # told the number of parts, the tree is built with the thin parts
+    told = pd.decompose(vertices, faces, thin_part_resolution=64, number_of_parts=2, **FAST)
+    assert told.number_of_parts == 2
+    assert np.array_equal(told.labels_at(2), told.labels)
 
 
 class TrackedArray(np.ndarray):

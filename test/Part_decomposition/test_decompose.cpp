@@ -989,6 +989,89 @@ TEST_CASE("thin_part_resolution: the finer pass's thin parts, with their superqu
   }
 }
 
+TEST_CASE("told the count: the thin parts of a finer pass carved out of the composed parts", "[decompose][thin_parts]")
+{
+  // six faces: parts {0, 0, 1, 1, 2, 2}, leaves {0, 0, 1, 1, 1, 2}; the finer pass has a thick part
+  // and a thin one on faces 3 and 4
+  const PD::Superquadric<K>::Rotation identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  auto sq = [&](double a, double x) { return PD::Superquadric<K>({{a, 0.5, 0.5}}, 1., 1., identity, Point(x, 0, 0)); };
+  PD::Composed_parts<K> c;
+  c.parts = {0, 0, 1, 1, 2, 2};
+  c.part_to_primitive = {7, 8, 9};
+  c.part_primitives = {sq(0.5, 0.), sq(0.5, 1.), sq(0.5, 2.)};
+  c.residual_parts = {0, 1, 0};
+  c.finest_parts = {0, 0, 1, 1, 1, 2};
+  c.number_of_finest_parts = 3;
+  c.part_groups = {0, 0, 1, 1, 2, 2};
+  PD::internal::Decomposition_pass<K> finer;
+  finer.parts = {0, 0, 0, 1, 1, 0};
+  finer.primitives = {sq(0.5, 5.), sq(0.01, 6.)};
+  finer.number_of_parts = 2;
+  finer.scale = 1.;
+  PD::internal::carve_thin_parts(c, finer);
+  CHECK(c.parts == std::vector<std::size_t>{0, 0, 1, 2, 2, 3});
+  REQUIRE(c.number_of_parts() == 4);
+  CHECK(c.part_primitives[2].center() == Point(6, 0, 0));
+  CHECK(c.part_primitives[3].center() == Point(2, 0, 0));
+  CHECK(c.part_to_primitive == std::vector<std::size_t>{7, 8, PD::no_primitive, 9});
+  CHECK(c.residual_parts == std::vector<std::uint8_t>{0, 1, 0, 0});
+  // leaf 1 is cut by the thin part's border; the thin part is a group of its own
+  CHECK(c.finest_parts == std::vector<std::size_t>{0, 0, 1, 2, 2, 3});
+  CHECK(c.number_of_finest_parts == 4);
+  CHECK(c.part_groups[3] == c.part_groups[4]);
+  for(std::size_t i : {0, 1, 2, 5}) CHECK(c.part_groups[i] != c.part_groups[3]);
+  // a finer pass without thin parts changes nothing
+  const PD::Composed_parts<K> before = c;
+  finer.primitives[1] = sq(0.5, 6.);
+  PD::internal::carve_thin_parts(c, finer);
+  CHECK(c.parts == before.parts);
+  CHECK(c.finest_parts == before.finest_parts);
+}
+
+TEST_CASE("told at least the default number of parts, decompose() looks at twice the resolution",
+          "[decompose][thin_parts][data]")
+{
+  Mesh m;
+  const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("animal", m);
+  const std::size_t nf = num_faces(m);
+  std::vector<std::size_t> plain(nf), part(nf), part_sequential(nf), explicit_resolution(nf);
+  PD::Part_hierarchy<K> h0, h;
+  PD::decompose(m, CGAL::make_property_map(plain), PDP::part_hierarchy(&h0));
+  const std::size_t D = h0.default_number_of_parts;
+  REQUIRE(D >= 2);
+
+  // fewer parts than the default ones: one pass, the level of its hierarchy
+  PD::Stage_timings st;
+  CHECK(PD::decompose(m, CGAL::make_property_map(part), PDP::combine(PDP::number_of_parts(D - 1),
+                                                                     PDP::stage_timings(&st))) == D - 1);
+  CHECK(st.thin_parts == 0.);
+  CHECK(part == h0.labels(D - 1));
+
+  // the default number: the finer pass runs, and its hierarchy gives the parts and primitives
+  std::vector<PD::Superquadric<K> > primitives;
+  const std::size_t K_parts =
+    PD::decompose(m, CGAL::make_property_map(part),
+                  PDP::combine(PDP::number_of_parts(D), PDP::part_hierarchy(&h), PDP::stage_timings(&st),
+                               PDP::primitive_output_iterator(std::back_inserter(primitives))));
+  CHECK(K_parts == D);
+  CHECK(st.thin_parts > 0.);
+  CHECK(part == h.labels(K_parts));
+  REQUIRE(primitives.size() == K_parts);
+  for(std::size_t k = 0; k < K_parts; ++k) CHECK(primitives[k].center() == h.primitives(K_parts)[k].center());
+  // the animal's seven true parts, found again
+  const double miou =
+    PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part)).mean_iou;
+  INFO("told " << D << " parts: mIoU " << miou);
+  CHECK(miou >= 0.9);
+  CHECK(PD::decompose<CGAL::Sequential_tag>(m, CGAL::make_property_map(part_sequential),
+                                            PDP::number_of_parts(D)) == K_parts);
+  CHECK(part_sequential == part);
+  // 0 stands for twice the finest resolution
+  PD::decompose(m, CGAL::make_property_map(explicit_resolution),
+                PDP::combine(PDP::number_of_parts(D), PDP::thin_part_resolution(128)));
+  CHECK(explicit_resolution == part);
+}
+
 TEST_CASE("thin_part_resolution: out-of-range values and a hierarchy are refused", "[decompose][thin_parts]")
 {
   const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 2);
@@ -999,8 +1082,6 @@ TEST_CASE("thin_part_resolution: out-of-range values and a hierarchy are refused
     CAPTURE(r);
     CHECK(error_of([&] { PD::decompose(m, map, PDP::thin_part_resolution(r)); }) == PD::Input_error::INVALID_PARAMETER);
   }
-  CHECK(error_of([&] { PD::decompose(m, map, PDP::combine(PDP::thin_part_resolution(128), PDP::number_of_parts(2))); }) ==
-        PD::Input_error::INVALID_PARAMETER);
   PD::Part_hierarchy<K> h;
   CHECK(error_of([&] { PD::decompose(m, map, PDP::combine(PDP::thin_part_resolution(128), PDP::part_hierarchy(&h))); }) ==
         PD::Input_error::INVALID_PARAMETER);

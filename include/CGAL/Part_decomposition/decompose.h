@@ -23,6 +23,7 @@
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/internal/patch_operations.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Bbox_3.h>
@@ -38,6 +39,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -203,34 +205,15 @@ struct Decomposition_pass
   std::vector<std::size_t> parts;
   std::vector<Superquadric<GeomTraits> > primitives;
   std::size_t number_of_parts = 0;
+  std::size_t default_number_of_parts = 0; // at the default granularity (maximum_merge_cost)
   double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
 };
 
-// The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
-// it is not that of the composed parts.
-template <typename GT, typename TriangleMesh, typename NamedParameters>
-void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
-                   Decomposition_pass<GT>& out, Stage_timings& t)
+// The parts of level `K` of `s.hierarchy` (at most its leaves), or the composed parts themselves.
+template <typename GT>
+void take_parts(const Stage_results<GT>& s, std::size_t K, bool composed_level, Decomposition_pass<GT>& out)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
-  Part_hierarchy<GT>* hierarchy_out =
-    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  const std::size_t composed = s.composed.number_of_parts();
-  std::size_t K = composed;
-  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && composed > 1))
-    add_seconds(t.hierarchy, [&] {
-      s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
-      const std::size_t default_parts = s.hierarchy.level_below_cost(composed, hp.maximum_merge_cost);
-      K = hp.has_number_of_parts ? hp.number_of_parts : default_parts;
-      if(hierarchy_out != nullptr)
-      {
-        *hierarchy_out = s.hierarchy;
-        hierarchy_out->default_number_of_parts = default_parts;
-      }
-    });
-  if(K == composed && !hp.has_number_of_parts)
+  if(composed_level)
   {
     out.parts = s.composed.parts;
     out.primitives = s.composed.part_primitives;
@@ -244,15 +227,49 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_resu
   out.number_of_parts = K;
 }
 
+// The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
+// it is not that of the composed parts. Without `as_requested` (a finer pass), `number_of_parts`
+// and `part_hierarchy` are ignored: the parts are those of the default granularity.
+template <typename GT, typename TriangleMesh, typename NamedParameters>
+void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, bool as_requested, Stage_results<GT>& s,
+                   Decomposition_pass<GT>& out, Stage_timings& t)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Hierarchy_parameters hp = read_hierarchy_parameters(np);
+  Part_hierarchy<GT>* hierarchy_out =
+    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
+  if(!as_requested)
+  {
+    hp.has_number_of_parts = false;
+    hierarchy_out = nullptr;
+  }
+  const std::size_t composed = s.composed.number_of_parts();
+  std::size_t K = composed;
+  out.default_number_of_parts = composed;
+  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && composed > 1))
+    add_seconds(t.hierarchy, [&] {
+      s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
+      out.default_number_of_parts = s.hierarchy.level_below_cost(composed, hp.maximum_merge_cost);
+      K = hp.has_number_of_parts ? hp.number_of_parts : out.default_number_of_parts;
+      if(hierarchy_out != nullptr)
+      {
+        *hierarchy_out = s.hierarchy;
+        hierarchy_out->default_number_of_parts = out.default_number_of_parts;
+      }
+    });
+  take_parts(s, K, K == composed && !hp.has_number_of_parts, out);
+}
+
 // `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`: the
-// stage functions in their documented order. `np` holds the normalization.
+// stage functions in their documented order, their results left in `s`. `np` holds the
+// normalization; `as_requested`: see cut_hierarchy().
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposition_pass<GT>& out,
-                    Stage_timings& timings)
+void decompose_once(const TriangleMesh& tm, const NamedParameters& np, bool as_requested, Stage_results<GT>& s,
+                    Decomposition_pass<GT>& out, Stage_timings& timings)
 {
   timings.overlapping = is_parallel_tag<ConcurrencyTag>();
   const bool use_pieces = read_piece_parameters(np).use_pieces;
-  Stage_results<GT> s;
   // the stage times start at 0: each is added once
   std::vector<std::uint8_t> splittable;
   add_seconds(timings.pieces, [&] {
@@ -270,7 +287,7 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Decomposi
   const bool fitted =
     needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);
   add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
-  cut_hierarchy(tm, np, s, out, timings);
+  cut_hierarchy(tm, np, as_requested, s, out, timings);
   out.scale = read_normalization(tm, np).scale();
 }
 
@@ -672,6 +689,21 @@ private:
 
 namespace internal {
 
+// Per part of `finer`, 1 + its rank among the thin parts (smallest semi-axis below
+// thin_part_semi_axis), or 0; `number_of_thin` receives their number.
+template <typename GT>
+std::vector<std::size_t> thin_part_ranks(const Decomposition_pass<GT>& finer, std::size_t& number_of_thin)
+{
+  std::vector<std::size_t> thin(finer.number_of_parts, 0);
+  number_of_thin = 0;
+  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
+  {
+    const std::array<double, 3> a = finer.primitives[k].scales();
+    if((std::min)({a[0], a[1], a[2]}) * finer.scale < thin_part_semi_axis) thin[k] = ++number_of_thin;
+  }
+  return thin;
+}
+
 // The thin parts of `finer` replace, face by face, the parts of `pass`, each with its superquadric:
 // the parts of `pass` keep their order (those left without faces are dropped), the thin parts
 // follow in the order of `finer`.
@@ -679,13 +711,8 @@ template <typename GT>
 void carve_thin_parts(Decomposition_pass<GT>& pass, const Decomposition_pass<GT>& finer)
 {
   const std::size_t K = pass.number_of_parts, nf = pass.parts.size();
-  std::vector<std::size_t> thin(finer.number_of_parts, 0); // 1 + rank among the thin parts, or 0
   std::size_t number_of_thin = 0;
-  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
-  {
-    const std::array<double, 3> a = finer.primitives[k].scales();
-    if((std::min)({a[0], a[1], a[2]}) * finer.scale < thin_part_semi_axis) thin[k] = ++number_of_thin;
-  }
+  const std::vector<std::size_t> thin = thin_part_ranks(finer, number_of_thin);
   if(number_of_thin == 0) return;
   std::vector<std::size_t> part(nf);
   std::vector<std::uint8_t> used(K, 0);
@@ -706,24 +733,97 @@ void carve_thin_parts(Decomposition_pass<GT>& pass, const Decomposition_pass<GT>
   pass.number_of_parts = pass.primitives.size();
 }
 
+// The thin parts of `finer` carved out of the composed parts `c`, face by face, as
+// carve_thin_parts() does for the parts: each is a part and a group of its own, with its
+// superquadric (and no primitive of the fitting), whose leaves are the leaves it cuts.
+template <typename GT>
+void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer)
+{
+  std::size_t number_of_thin = 0;
+  const std::vector<std::size_t> thin = thin_part_ranks(finer, number_of_thin);
+  if(number_of_thin == 0) return;
+  const std::size_t K = c.number_of_parts(), nf = c.parts.size();
+  const std::size_t groups = 1 + *std::max_element(c.part_groups.begin(), c.part_groups.end());
+  std::vector<std::pair<std::size_t, std::size_t> > leaf_key(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    const std::size_t t = thin[finer.parts[i]];
+    leaf_key[i] = {c.finest_parts[i], t};
+    if(t == 0) continue;
+    c.parts[i] = K + t - 1;
+    c.part_groups[i] = groups + t - 1;
+  }
+  // the leaves: (old leaf, thin part) pairs
+  std::vector<std::pair<std::size_t, std::size_t> > keys(leaf_key);
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  for(std::size_t i = 0; i < nf; ++i)
+    c.finest_parts[i] = std::size_t(std::lower_bound(keys.begin(), keys.end(), leaf_key[i]) - keys.begin());
+  c.number_of_finest_parts = keys.size();
+  renumber_by_first_face(c.finest_parts);
+  // the parts, with their primitives, renumbered by first face
+  std::vector<Superquadric<GT> > primitives(c.part_primitives);
+  std::vector<std::size_t> to_primitive(c.part_to_primitive);
+  std::vector<std::uint8_t> residual(c.residual_parts);
+  primitives.resize(K + number_of_thin);
+  to_primitive.resize(K + number_of_thin, no_primitive);
+  residual.resize(K + number_of_thin, 0);
+  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
+    if(thin[k] > 0) primitives[K + thin[k] - 1] = finer.primitives[k];
+  std::vector<std::size_t> old_of;
+  renumber_by_first_face(c.parts, &old_of);
+  c.part_primitives.clear();
+  c.part_to_primitive.clear();
+  c.residual_parts.clear();
+  for(std::size_t old : old_of)
+  {
+    c.part_primitives.push_back(primitives[old]);
+    c.part_to_primitive.push_back(to_primitive[old]);
+    c.residual_parts.push_back(residual[old]);
+  }
+}
+
 // The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
-// the finest of `voxel_resolutions`, and not with `number_of_parts` nor `part_hierarchy`, whose
-// hierarchy is that of one pass.
+// the finest of `voxel_resolutions`, and not with a `part_hierarchy` without `number_of_parts`
+// (the hierarchy is then that of one pass). With `number_of_parts`, 0 stands for twice the finest
+// resolution (none above 256): the finer pass runs if more parts are asked than the first pass has.
 template <typename TriangleMesh, typename NamedParameters>
 int read_thin_part_resolution(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  const int finest = read_voxel_resolutions(np).back();
+  const bool told = read_hierarchy_parameters(np).has_number_of_parts;
   const int r = choose_parameter(get_parameter(np, internal_np::thin_part_resolution), defaults::thin_part_resolution);
-  if(r == 0) return 0;
-  check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * read_voxel_resolutions(np).back(),
-                  "thin_part_resolution");
+  if(r == 0) return told && 2 * finest <= 256 ? 2 * finest : 0;
+  check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * finest, "thin_part_resolution");
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
-  check_parameter(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::number_of_parts_t>::value &&
-                    choose_parameter(get_parameter(np, internal_np::part_hierarchy),
-                                     static_cast<Part_hierarchy<GT>*>(nullptr)) == nullptr,
-                  "thin_part_resolution", "0 when number_of_parts or a part_hierarchy is given");
+  check_parameter(told || choose_parameter(get_parameter(np, internal_np::part_hierarchy),
+                                           static_cast<Part_hierarchy<GT>*>(nullptr)) == nullptr,
+                  "thin_part_resolution", "0 when a part_hierarchy is asked without number_of_parts");
   return r;
+}
+
+// Told more parts than the first pass `s` has at its default granularity: the thin parts of
+// `finer` carved out of its composed parts, the hierarchy built again from them and cut at the
+// number of parts asked (into `out`, and into the `part_hierarchy` of `np` if given).
+template <typename GT, typename TriangleMesh, typename NamedParameters>
+void cut_with_thin_parts(const TriangleMesh& tm, const NamedParameters& np, const Decomposition_pass<GT>& finer,
+                         Stage_results<GT>& s, Decomposition_pass<GT>& out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
+  carve_thin_parts(s.composed, finer);
+  s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
+  out.default_number_of_parts = s.hierarchy.level_below_cost(s.composed.number_of_parts(), hp.maximum_merge_cost);
+  if(Part_hierarchy<GT>* h =
+       choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr)))
+  {
+    *h = s.hierarchy;
+    h->default_number_of_parts = out.default_number_of_parts;
+  }
+  take_parts(s, hp.number_of_parts, false, out);
 }
 
 } // namespace internal
@@ -1060,7 +1160,12 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
                           hierarchy (`build_part_hierarchy()`), each with the superquadric
                           of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
-                          leaves. Without it, the parts are those of the default granularity.}
+                          leaves. If \f$k\f$ is at least the number of parts of the default
+                          granularity, the count is trusted over the default grid: the thin parts of
+                          the finer pass of `thin_part_resolution` are first carved out of the parts
+                          (each a part and a leaf group of its own, as without `number_of_parts`),
+                          and the hierarchy is built from them (and handed out by `part_hierarchy`).
+                          Without it, the parts are those of the default granularity.}
     \cgalParamType{`std::size_t`, at least 1}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -1097,8 +1202,9 @@ are chained with `parameters::combine()`)
                           the default grid, which the finer grid tends to tile. Costs a second,
                           finer decomposition (its time and memory: `benchmark/Part_decomposition/RESULTS.md`)}
     \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
-                   `voxel_resolutions`; not with `number_of_parts` nor `part_hierarchy`}
-    \cgalParamDefault{`0`}
+                   `voxel_resolutions`; not with `part_hierarchy` without `number_of_parts`}
+    \cgalParamDefault{`0`: no finer pass; with `number_of_parts`, twice the finest of
+                      `voxel_resolutions` (none if that is above 256), used as described there}
   \cgalParamNEnd
   \cgalParamNBegin{stage_timings}
     \cgalParamDescription{receives the wall-clock time of each stage}
@@ -1144,18 +1250,24 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
     int(choose_parameter(get_parameter(np, internal_np::prior_resolution_cap), defaults::prior_resolution_cap));
   Stage_timings timings;
   internal::Decomposition_pass<GT> pass;
+  internal::Stage_results<GT> s;
   internal::decompose_once<ConcurrencyTag>(
     tm, internal::pass_parameters(np, internal::read_voxel_resolutions(np),
                                   internal::read_fitting_parameters(np).fitting_resolution_cap, prior_cap, normalization),
-    pass, timings);
-  if(fine > 0)
+    true, s, pass, timings);
+  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
+  // told at least the parts of the default granularity, the count is trusted: thin parts of the
+  // finer pass are candidates, and the hierarchy merges down to it
+  if(fine > 0 && (!hp.has_number_of_parts || hp.number_of_parts >= pass.default_number_of_parts))
     internal::add_seconds(timings.thin_parts, [&] {
       internal::Decomposition_pass<GT> finer;
+      internal::Stage_results<GT> finer_stages;
       Stage_timings finer_timings;
       internal::decompose_once<ConcurrencyTag>(
-        tm, internal::pass_parameters(np, {fine / 4, fine / 2, fine}, fine / 4, fine / 2, normalization), finer,
-        finer_timings);
-      internal::carve_thin_parts(pass, finer);
+        tm, internal::pass_parameters(np, {fine / 4, fine / 2, fine}, fine / 4, fine / 2, normalization), false,
+        finer_stages, finer, finer_timings);
+      if(hp.has_number_of_parts) internal::cut_with_thin_parts(tm, np, finer, s, pass);
+      else internal::carve_thin_parts(pass, finer);
     });
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());

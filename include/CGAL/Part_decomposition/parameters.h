@@ -256,7 +256,7 @@ constexpr double residual_tolerance = 2.;
 constexpr bool merge_thin_sheets = true;
 /// the parts go on merging in the part hierarchy while a merge costs less; 0: none
 constexpr double maximum_merge_cost = 0.003;
-/// a finer pass at this resolution whose thin parts replace the default ones; 0: none
+/// a finer pass at this resolution whose thin parts replace the default ones; 0: none (with number_of_parts: twice the finest voxel resolution)
 constexpr int thin_part_resolution = 0;
 /// print what each stage does on std::cerr
 constexpr bool verbose = false;
@@ -415,10 +415,12 @@ constexpr Parameter_description parameter_table[] = {
   {"maximum_merge_cost", "double", "0.003", "non-negative and finite", Parameter_stage::HIERARCHY, "decompose()", true,
    false, "the parts go on merging in the part hierarchy while a merge costs less; 0: none"},
   {"number_of_parts", "std::size_t", "none", "at least 1", Parameter_stage::HIERARCHY, "decompose()", true, false,
-   "exactly this many parts, a level of the part hierarchy (at most its leaves); none: the default granularity"},
+   "exactly this many parts, a level of the part hierarchy (at most its leaves), with the thin parts of a finer "
+   "pass if at least the default number; none: the default granularity"},
   {"thin_part_resolution", "int", "0", "0, or a power of two up to 256 at least twice the finest voxel resolution",
    Parameter_stage::HIERARCHY, "decompose()", true, false,
-   "a finer pass at this resolution whose thin parts replace the default ones; 0: none"},
+   "a finer pass at this resolution whose thin parts replace the default ones; 0: none (with number_of_parts: "
+   "twice the finest voxel resolution)"},
   {"part_hierarchy", "Part_hierarchy<GeomTraits>*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false,
    false, "receives the part hierarchy"},
   {"primitive_output_iterator", "an output iterator", "none", "", Parameter_stage::OUTPUT, "decompose()", false, false,

@@ -49,17 +49,24 @@ inline std::vector<double> interior_edge_angles(const Face_adjacency& adj)
   return values;
 }
 
-// Renumbers the labels to 0..A-1 by increasing smallest face index; returns A.
-inline std::size_t renumber_by_first_face(std::vector<std::size_t>& label)
+// Renumbers the labels to 0..A-1 by increasing smallest face index; returns A. `old_label`, if
+// given, receives the former label of each new one.
+inline std::size_t renumber_by_first_face(std::vector<std::size_t>& label,
+                                          std::vector<std::size_t>* old_label = nullptr)
 {
   const std::size_t none = Face_adjacency::no_face;
   std::size_t max_label = 0;
   for(std::size_t l : label) max_label = (std::max)(max_label, l);
   std::vector<std::size_t> new_id(label.empty() ? 0 : max_label + 1, none);
   std::size_t count = 0;
+  if(old_label) old_label->clear();
   for(std::size_t& l : label)
   {
-    if(new_id[l] == none) new_id[l] = count++;
+    if(new_id[l] == none)
+    {
+      new_id[l] = count++;
+      if(old_label) old_label->push_back(l);
+    }
     l = new_id[l];
   }
   return count;
