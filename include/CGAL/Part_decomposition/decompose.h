@@ -754,13 +754,8 @@ void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer
     c.part_groups[i] = groups + t - 1;
   }
   // the leaves: (old leaf, thin part) pairs
-  std::vector<std::pair<std::size_t, std::size_t> > keys(leaf_key);
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  for(std::size_t i = 0; i < nf; ++i)
-    c.finest_parts[i] = std::size_t(std::lower_bound(keys.begin(), keys.end(), leaf_key[i]) - keys.begin());
-  c.number_of_finest_parts = keys.size();
-  renumber_by_first_face(c.finest_parts);
+  index_of_keys(leaf_key, c.finest_parts);
+  c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
   // the parts, with their primitives, renumbered by first face
   std::vector<Superquadric<GT> > primitives(c.part_primitives);
   std::vector<std::size_t> to_primitive(c.part_to_primitive);
@@ -786,7 +781,8 @@ void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer
 // The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
 // the finest of `voxel_resolutions`, and not with a `part_hierarchy` without `number_of_parts`
 // (the hierarchy is then that of one pass). With `number_of_parts`, 0 stands for twice the finest
-// resolution (none above 256): the finer pass runs if more parts are asked than the first pass has.
+// resolution (none above 256): the finer pass runs if at least two parts and at least the default
+// number of parts of the first pass are asked.
 template <typename TriangleMesh, typename NamedParameters>
 int read_thin_part_resolution(const NamedParameters& np)
 {
@@ -1160,7 +1156,7 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
                           hierarchy (`build_part_hierarchy()`), each with the superquadric
                           of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
-                          leaves. If \f$k\f$ is at least the number of parts of the default
+                          leaves. If \f$k \geq 2\f$ is at least the number of parts of the default
                           granularity, the count is trusted over the default grid: the thin parts of
                           the finer pass of `thin_part_resolution` are first carved out of the parts
                           (each a part and a leaf group of its own, as without `number_of_parts`),
@@ -1258,7 +1254,9 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
   // told at least the parts of the default granularity, the count is trusted: thin parts of the
   // finer pass are candidates, and the hierarchy merges down to it
-  if(fine > 0 && (!hp.has_number_of_parts || hp.number_of_parts >= pass.default_number_of_parts))
+  const bool told_more =
+    hp.has_number_of_parts && hp.number_of_parts >= 2 && hp.number_of_parts >= pass.default_number_of_parts;
+  if(fine > 0 && (!hp.has_number_of_parts || told_more))
     internal::add_seconds(timings.thin_parts, [&] {
       internal::Decomposition_pass<GT> finer;
       internal::Stage_results<GT> finer_stages;

@@ -416,7 +416,7 @@ constexpr Parameter_description parameter_table[] = {
    false, "the parts go on merging in the part hierarchy while a merge costs less; 0: none"},
   {"number_of_parts", "std::size_t", "none", "at least 1", Parameter_stage::HIERARCHY, "decompose()", true, false,
    "exactly this many parts, a level of the part hierarchy (at most its leaves), with the thin parts of a finer "
-   "pass if at least the default number; none: the default granularity"},
+   "pass if at least 2 and the default number; none: the default granularity"},
   {"thin_part_resolution", "int", "0", "0, or a power of two up to 256 at least twice the finest voxel resolution",
    Parameter_stage::HIERARCHY, "decompose()", true, false,
    "a finer pass at this resolution whose thin parts replace the default ones; 0: none (with number_of_parts: "
