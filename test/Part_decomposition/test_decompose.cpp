@@ -1087,6 +1087,13 @@ TEST_CASE("thin_part_resolution: out-of-range values and a hierarchy are refused
         PD::Input_error::INVALID_PARAMETER);
   CHECK(PD::decompose(m, map, PDP::combine(PDP::voxel_resolutions(std::vector<int>{8, 16, 32}),
                                            PDP::thin_part_resolution(64))) >= 1);
+  // told the count, the automatic finer pass is left out where twice the finest grid is not a
+  // valid one, rather than refused; from the coarsest valid grid on it runs
+  PD::Stage_timings st;
+  CHECK(PD::decompose(m, map, PDP::combine(PDP::voxel_resolutions(std::vector<int>{256}), PDP::number_of_parts(2),
+                                           PDP::stage_timings(&st))) >= 1);
+  CHECK(st.thin_parts == 0.);
+  CHECK(PD::decompose(m, map, PDP::combine(PDP::voxel_resolutions(std::vector<int>{2}), PDP::number_of_parts(2))) >= 1);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -781,7 +781,7 @@ void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer
 // The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
 // the finest of `voxel_resolutions`, and not with a `part_hierarchy` without `number_of_parts`
 // (the hierarchy is then that of one pass). With `number_of_parts`, 0 stands for twice the finest
-// resolution (none above 256): the finer pass runs if at least two parts and at least the default
+// resolution (none outside 4 to 256): the finer pass runs if at least two parts and at least the default
 // number of parts of the first pass are asked.
 template <typename TriangleMesh, typename NamedParameters>
 int read_thin_part_resolution(const NamedParameters& np)
@@ -791,7 +791,7 @@ int read_thin_part_resolution(const NamedParameters& np)
   const int finest = read_voxel_resolutions(np).back();
   const bool told = read_hierarchy_parameters(np).has_number_of_parts;
   const int r = choose_parameter(get_parameter(np, internal_np::thin_part_resolution), defaults::thin_part_resolution);
-  if(r == 0) return told && 2 * finest <= 256 ? 2 * finest : 0;
+  if(r == 0) return told && 2 * finest >= 4 && 2 * finest <= 256 ? 2 * finest : 0;
   check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * finest, "thin_part_resolution");
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   check_parameter(told || choose_parameter(get_parameter(np, internal_np::part_hierarchy),
@@ -1200,7 +1200,7 @@ are chained with `parameters::combine()`)
     \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
                    `voxel_resolutions`; not with `part_hierarchy` without `number_of_parts`}
     \cgalParamDefault{`0`: no finer pass; with `number_of_parts`, twice the finest of
-                      `voxel_resolutions` (none if that is above 256), used as described there}
+                      `voxel_resolutions` (none if that is not in 4 to 256), used as described there}
   \cgalParamNEnd
   \cgalParamNBegin{stage_timings}
     \cgalParamDescription{receives the wall-clock time of each stage}
