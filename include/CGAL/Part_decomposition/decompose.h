@@ -781,8 +781,8 @@ void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer
 // The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
 // the finest of `voxel_resolutions`, and not with a `part_hierarchy` without `number_of_parts`
 // (the hierarchy is then that of one pass). With `number_of_parts`, 0 stands for twice the finest
-// resolution (none outside 4 to 256): the finer pass runs if at least two parts and at least the default
-// number of parts of the first pass are asked.
+// resolution (none outside 4 to 256): the finer pass runs if at least two parts and at least the
+// default number of parts of the first pass are asked.
 template <typename TriangleMesh, typename NamedParameters>
 int read_thin_part_resolution(const NamedParameters& np)
 {
@@ -800,7 +800,7 @@ int read_thin_part_resolution(const NamedParameters& np)
   return r;
 }
 
-// Told more parts than the first pass `s` has at its default granularity: the thin parts of
+// Told at least as many parts as the first pass `s` has at its default granularity: the thin parts of
 // `finer` carved out of its composed parts, the hierarchy built again from them and cut at the
 // number of parts asked (into `out`, and into the `part_hierarchy` of `np` if given).
 template <typename GT, typename TriangleMesh, typename NamedParameters>
