@@ -209,24 +209,6 @@ struct Decomposition_pass
   double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
 };
 
-// The parts of level `K` of `s.hierarchy` (at most its leaves), or the composed parts themselves.
-template <typename GT>
-void take_parts(const Stage_results<GT>& s, std::size_t K, bool composed_level, Decomposition_pass<GT>& out)
-{
-  if(composed_level)
-  {
-    out.parts = s.composed.parts;
-    out.primitives = s.composed.part_primitives;
-  }
-  else
-  {
-    K = (std::min)(K, s.hierarchy.number_of_leaves());
-    out.parts = s.hierarchy.labels(K);
-    out.primitives = s.hierarchy.primitives(K);
-  }
-  out.number_of_parts = K;
-}
-
 // The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
 // it is not that of the composed parts. Without `as_requested` (a finer pass), `number_of_parts`
 // and `part_hierarchy` are ignored: the parts are those of the default granularity.
@@ -258,7 +240,18 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, bool as_re
         hierarchy_out->default_number_of_parts = out.default_number_of_parts;
       }
     });
-  take_parts(s, K, K == composed && !hp.has_number_of_parts, out);
+  if(K == composed && !hp.has_number_of_parts)
+  {
+    out.parts = s.composed.parts;
+    out.primitives = s.composed.part_primitives;
+  }
+  else
+  {
+    K = (std::min)(K, s.hierarchy.number_of_leaves());
+    out.parts = s.hierarchy.labels(K);
+    out.primitives = s.hierarchy.primitives(K);
+  }
+  out.number_of_parts = K;
 }
 
 // `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`: the
@@ -800,28 +793,6 @@ int read_thin_part_resolution(const NamedParameters& np)
   return r;
 }
 
-// Told at least as many parts as the first pass `s` has at its default granularity: the thin parts of
-// `finer` carved out of its composed parts, the hierarchy built again from them and cut at the
-// number of parts asked (into `out`, and into the `part_hierarchy` of `np` if given).
-template <typename GT, typename TriangleMesh, typename NamedParameters>
-void cut_with_thin_parts(const TriangleMesh& tm, const NamedParameters& np, const Decomposition_pass<GT>& finer,
-                         Stage_results<GT>& s, Decomposition_pass<GT>& out)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
-  carve_thin_parts(s.composed, finer);
-  s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
-  out.default_number_of_parts = s.hierarchy.level_below_cost(s.composed.number_of_parts(), hp.maximum_merge_cost);
-  if(Part_hierarchy<GT>* h =
-       choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr)))
-  {
-    *h = s.hierarchy;
-    h->default_number_of_parts = out.default_number_of_parts;
-  }
-  take_parts(s, hp.number_of_parts, false, out);
-}
-
 } // namespace internal
 
 /*!
@@ -1264,8 +1235,14 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
       internal::decompose_once<ConcurrencyTag>(
         tm, internal::pass_parameters(np, {fine / 4, fine / 2, fine}, fine / 4, fine / 2, normalization), false,
         finer_stages, finer, finer_timings);
-      if(hp.has_number_of_parts) internal::cut_with_thin_parts(tm, np, finer, s, pass);
-      else internal::carve_thin_parts(pass, finer);
+      if(!hp.has_number_of_parts)
+        internal::carve_thin_parts(pass, finer);
+      else
+      {
+        // the tree of the first pass's parts with the thin ones carved out, cut at the count
+        internal::carve_thin_parts(s.composed, finer);
+        internal::cut_hierarchy(tm, np, true, s, pass, finer_timings);
+      }
     });
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
