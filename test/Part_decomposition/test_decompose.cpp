@@ -734,6 +734,52 @@ TEST_CASE("a part below minimum_part_area joins a neighbour of its piece", "[pie
   for(std::size_t k = 0; k < K_parts; ++k) CHECK(has_big_box_face[k]);
 }
 
+TEST_CASE("the stretches of one volumetric part with a concave boundary are parts, a stray claim is not",
+          "[pieces][compose]")
+{
+  // a slab of 8 x 4 x 2 unit cubes with two pegs on top, 3 and 2 cubes high
+  std::vector<std::array<int, 3> > cubes;
+  for(int x = 0; x < 8; ++x)
+    for(int y = 0; y < 4; ++y)
+      for(int z = 0; z < 2; ++z) cubes.push_back({{x, y, z}});
+  for(int x0 : {1, 5})
+    for(int x = x0; x < x0 + 2; ++x)
+      for(int y = 1; y < 3; ++y)
+        for(int z = 2; z < (x0 == 1 ? 5 : 4); ++z) cubes.push_back({{x, y, z}});
+  const Mesh m = test_shapes::make_union_of_cubes(cubes);
+  // one volumetric part claims both pegs and a flat patch of the bottom, another the slab
+  enum Face_kind { SLAB, PEG_A, PEG_B, PATCH };
+  std::vector<Face_kind> kind;
+  PD::Volumetric_parts parts;
+  for(face_descriptor f : faces(m))
+  {
+    Point c[3];
+    int n = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) c[n++] = m.point(v);
+    const Point g = CGAL::centroid(c[0], c[1], c[2]);
+    kind.push_back(g.z() > 2. ? (g.x() < 4. ? PEG_A : PEG_B)
+                   : g.z() == 0. && g.x() > 3. && g.x() < 5. && g.y() > 1. && g.y() < 3. ? PATCH : SLAB);
+    parts.parts.push_back(kind.back() == SLAB ? 0 : 1);
+  }
+  parts.part_to_primitive.assign(2, PD::no_primitive);
+  // concave creases do not cut the piece into regions here: only the volumetric parts divide it
+  const auto np = PDP::combine(PDP::crease_angle(100.), PDP::minimum_part_area(0.));
+  const PD::Piece_segmentation pieces = PD::segment_pieces(m, np);
+  REQUIRE(pieces.number_of_regions == 1);
+  const PD::Composed_parts<K> c =
+    PD::compose_parts(m, pieces, std::vector<std::uint8_t>(1, 1), parts, PD::Superquadric_fitting_result<K>(), np);
+  // the pegs end at concave roots: a part each; the patch, bounded by flat edges, stays with peg A
+  // (the larger stretch of its volumetric part)
+  CHECK(c.number_of_parts() == 3);
+  std::map<Face_kind, std::set<std::size_t> > part_of;
+  for(std::size_t i = 0; i < kind.size(); ++i) part_of[kind[i]].insert(c.parts[i]);
+  for(const auto& e : part_of) CHECK(e.second.size() == 1);
+  CHECK(part_of[PATCH] == part_of[PEG_A]);
+  CHECK(part_of[PEG_A] != part_of[PEG_B]);
+  CHECK(part_of[SLAB] != part_of[PEG_A]);
+  CHECK(part_of[SLAB] != part_of[PEG_B]);
+}
+
 namespace {
 
 // Three closed boxes in a row along x, touching: two of equal section (one box explains their

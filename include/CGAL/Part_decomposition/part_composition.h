@@ -372,7 +372,11 @@ last step of the parts of `decompose()`, before the part hierarchy. This step is
 With `use_pieces` (the default), the faces of a piece the volumetric stages decomposed
 (`volumetric`) keep their volumetric part, moved to the region that holds most of it where it
 crosses a concave crease, and are cut by the regions; the faces of any other piece take their
-region. Parts smaller than `minimum_part_area` of the mesh area are merged into the neighbour
+region. Where a volumetric part covers separate edge-connected stretches of a region, each stretch
+whose boundary is concave on average by at least 0.15 (an edge counting
+\f$\min(1, \theta / 60^\circ)\f$ if concave with dihedral angle \f$\theta\f$, 0 if convex,
+weighted by length) is a part of its own, and the others stay with the largest: a limb ends at a
+concave root, a stray claim does not. Parts smaller than `minimum_part_area` of the mesh area are merged into the neighbour
 across their weakest shared edge. With `use_pieces(false)`, the parts are those of `parts`.
 
 Each part keeps the primitive of the volumetric part that covers most of it, and gets its
@@ -424,7 +428,8 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
       internal::keep_volume_parts_in_their_regions(adj, pieces.region, volume_part, no_primitive);
     }
     const std::vector<std::size_t> source =
-      internal::compose_parts(adj, pieces.region, volume_part, p.minimum_part_area * pieces.area, c.parts, no_primitive);
+      internal::compose_parts(adj, internal::Face_corners(tm, maps.fim, maps.vpm), pieces.region, pieces.piece,
+                              pieces.orientation, volume_part, p.minimum_part_area * pieces.area, c.parts, no_primitive);
     c.part_to_primitive.assign(source.size(), no_primitive);
     for(std::size_t k = 0; k < source.size(); ++k)
       if(source[k] != no_primitive) c.part_to_primitive[k] = parts.part_to_primitive[source[k]];

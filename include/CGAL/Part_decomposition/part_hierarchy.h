@@ -61,8 +61,6 @@ Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
 constexpr double contact_fraction = 0.01;
 // The weight of the concavity of the common boundary: parts meet along concave creases.
 constexpr double merge_crease_weight = 0.05;
-// The dihedral angle (degrees) from which a concave edge counts fully in that concavity.
-constexpr double merge_crease_angle = 60.;
 // Above the default parts, the weight of the smaller part's area fraction in the cost: large
 // enough that size orders these merges (tuned on half A of the development and CAD-style sets
 // told their part counts: 3 and 10 equal, 1 and 0.3 below; see RESULTS.md).
@@ -160,8 +158,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j == Face_adjacency::no_face || leaf[j] <= leaf[i]) continue; // each edge once, from one side
       const double length = (corner(i, k) - corner(i, (k + 2) % 3)).norm();
-      const bool concave = crease_sign(adj, i, k) * orientation[piece[i]] < 0;
-      const double weight = concave ? (std::min)(1., adj.angle[3 * i + k] / merge_crease_angle) : 0.;
+      const double weight = edge_concavity(adj, i, k, orientation[piece[i]]);
       shared.push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
     }
   std::sort(shared.begin(), shared.end());

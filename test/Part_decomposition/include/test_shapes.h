@@ -151,6 +151,36 @@ inline Mesh make_cylinder(const Point& c, double R, double h, int na, int nz)
   return s.mesh();
 }
 
+// The closed surface of a union of unit cubes, each given by its lowest corner: two outward
+// triangles per square between a cube and an empty cell. No two cubes may meet along an edge or a
+// corner only (the surface would not be manifold).
+inline Mesh make_union_of_cubes(const std::vector<std::array<int, 3> >& cubes)
+{
+  Soup s;
+  auto filled = [&](const std::array<int, 3>& c) { return std::find(cubes.begin(), cubes.end(), c) != cubes.end(); };
+  auto point = [](const std::array<int, 3>& p) { return Point(p[0], p[1], p[2]); };
+  for(const std::array<int, 3>& c : cubes)
+    for(int axis = 0; axis < 3; ++axis)
+      for(int side = 0; side < 2; ++side)
+      {
+        std::array<int, 3> n = c;
+        n[axis] += side == 1 ? 1 : -1;
+        if(filled(n)) continue;
+        // the square at c + side e_axis spanned by e_u and e_w, with e_u x e_w = e_axis
+        const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+        std::array<int, 3> a = c;
+        a[axis] += side;
+        std::array<int, 3> b = a, d = a, e = a;
+        ++b[u];
+        ++d[u];
+        ++d[w];
+        ++e[w];
+        if(side == 1) { s.triangle(point(a), point(b), point(d)); s.triangle(point(a), point(d), point(e)); }
+        else { s.triangle(point(a), point(d), point(b)); s.triangle(point(a), point(e), point(d)); }
+      }
+  return s.mesh();
+}
+
 // Appends `b` to `a` (disjoint union); returns the number of faces `a` had before.
 inline std::size_t append(Mesh& a, const Mesh& b)
 {

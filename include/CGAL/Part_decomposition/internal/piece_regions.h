@@ -219,6 +219,17 @@ inline int crease_sign(const Face_adjacency& adj, std::size_t i, int k)
   return s > 0. ? -1 : 1;
 }
 
+// The dihedral angle, in degrees, from which a concave edge counts fully in the concavity of a
+// boundary.
+constexpr double full_concavity_angle = 60.;
+
+// The concavity of the edge of slot (i, k) for the orientation (+1 or -1) of its piece:
+// min(1, theta / full_concavity_angle) for a concave edge of dihedral angle theta, 0 if convex.
+inline double edge_concavity(const Face_adjacency& adj, std::size_t i, int k, int orientation)
+{
+  return crease_sign(adj, i, k) * orientation < 0 ? (std::min)(1., adj.angle[3 * i + k] / full_concavity_angle) : 0.;
+}
+
 // Per piece: -1 if the piece is taken inside out. A closed piece keeps the mesh's orientation
 // (the reader orients it outward); an open shell has no outside, so it is oriented to make most
 // of its creases (by area of the faces along them) convex: man-made pieces are convex except
@@ -336,23 +347,81 @@ inline void keep_volume_parts_in_their_regions(const Face_adjacency& adj, const 
   }
 }
 
+// A stretch that one volumetric part covers apart from its largest stretch in the same region is
+// a part of its own if its boundary is concave by at least this much on average (a limb ends at a
+// concave root, the minima rule; the fingers a coarse grid cannot tell apart); with a smoother
+// boundary it is a stray claim and stays with the largest stretch. Tuned on half A of the
+// development shapes (see benchmark/Part_decomposition/RESULTS.md).
+constexpr double minimum_stretch_concavity = 0.15;
+
+// `stretch`: per face index, its edge-connected set of faces with the same `key`, numbered 0 to
+// `n - 1`. Returns, per stretch, the stretch whose part it takes: itself if it is the largest of
+// its key (by area; the first on a tie), if its key has no volumetric part (`key.second == 0`), or
+// if its boundary is concave on average by `minimum_stretch_concavity` (`edge_concavity()`,
+// weighted by length, `corner(i, k)` being the corners of face i); else the largest of its key.
+template <typename Corner>
+std::vector<std::size_t> stretch_owners(const Face_adjacency& adj, const Corner& corner,
+                                        const std::vector<std::pair<std::size_t, std::size_t> >& key,
+                                        const std::vector<std::size_t>& stretch, std::size_t n,
+                                        const std::vector<std::size_t>& piece, const std::vector<int>& orientation)
+{
+  std::vector<double> area(n, 0.), length(n, 0.), concave(n, 0.);
+  std::vector<std::size_t> first(n, adj.number_of_faces);
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  {
+    const std::size_t c = stretch[i];
+    area[c] += adj.area[i];
+    first[c] = (std::min)(first[c], i);
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + k];
+      if(j == Face_adjacency::no_face || stretch[j] == c) continue;
+      const double l = (corner(i, k) - corner(i, (k + 2) % 3)).norm();
+      length[c] += l;
+      concave[c] += l * edge_concavity(adj, i, k, orientation[piece[i]]);
+    }
+  }
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> largest; // key -> stretch
+  for(std::size_t c = 0; c < n; ++c) // stretches are numbered by first face: the first wins ties
+  {
+    const auto it = largest.emplace(key[first[c]], c).first;
+    if(area[c] > area[it->second]) it->second = c;
+  }
+  std::vector<std::size_t> owner(n);
+  for(std::size_t c = 0; c < n; ++c)
+  {
+    const std::pair<std::size_t, std::size_t>& k = key[first[c]];
+    const bool own = k.second == 0 || concave[c] >= minimum_stretch_concavity * length[c];
+    owner[c] = own ? c : largest[k];
+  }
+  return owner;
+}
+
 // The parts of a mesh from its regions (per face index) and, where the volumetric stages ran,
 // the volumetric part of each face (`volume_part`: `none` elsewhere; empty if they did not run):
-// a face goes to the part of its (region, volumetric part), or of its region alone. Parts of area
-// below `min_area` are then merged into a neighbour (`merge_small_patches()`), and all are
-// numbered by smallest face index. `part` receives the part of each face; returns, per part, the
-// volumetric part covering most of its area (smallest id on a tie), or `none`.
-inline std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const std::vector<std::size_t>& region,
-                                              const std::vector<std::size_t>& volume_part, double min_area,
-                                              std::vector<std::size_t>& part, std::size_t none)
+// a face goes to the part of its (region, volumetric part), or of its region alone, except that
+// the stretches of one volumetric part apart from its largest in the region are parts of their own
+// where their boundary is concave (`stretch_owners()`; `piece` and `orientation` as in
+// `Piece_segmentation`, `corner(i, k)` the corners of face i). Parts of area below `min_area` are
+// then merged into a neighbour (`merge_small_patches()`), and all are numbered by smallest face
+// index. `part` receives the part of each face; returns, per part, the volumetric part covering
+// most of its area (smallest id on a tie), or `none`.
+template <typename Corner>
+std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const Corner& corner,
+                                       const std::vector<std::size_t>& region, const std::vector<std::size_t>& piece,
+                                       const std::vector<int>& orientation, const std::vector<std::size_t>& volume_part,
+                                       double min_area, std::vector<std::size_t>& part, std::size_t none)
 {
   const std::size_t nf = adj.number_of_faces;
   const bool volumetric = !volume_part.empty();
   std::vector<std::pair<std::size_t, std::size_t> > key(nf);
   for(std::size_t i = 0; i < nf; ++i)
     key[i] = std::make_pair(region[i], volumetric && volume_part[i] != none ? volume_part[i] + 1 : 0);
-  const std::size_t number_of_keys = index_of_keys(key, part);
-  merge_small_patches(adj, part, number_of_keys, min_area);
+  const std::size_t number_of_stretches =
+    face_components(adj, [&](std::size_t i, int k) { return key[i] == key[adj.neighbor[3 * i + k]]; }, part);
+  const std::vector<std::size_t> owner = stretch_owners(adj, corner, key, part, number_of_stretches, piece, orientation);
+  for(std::size_t& p : part) p = owner[p];
+  merge_small_patches(adj, part, number_of_stretches, min_area);
   const std::size_t count = renumber_by_first_face(part);
 
   std::vector<std::size_t> source(count, none);
