@@ -196,10 +196,10 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
 {
   std::vector<std::size_t> part(num_faces(mesh), 0);
   std::vector<Superquadric> primitives;
+  r.has_hierarchy = p.thin_part_resolution == 0 || p.number_of_parts;
   auto np = PDP::combine(Part_decomposition_tools::named_parameters(p),
                          PDP::primitive_output_iterator(std::back_inserter(primitives)),
-                         PDP::stage_timings(&r.timings),
-                         PDP::part_hierarchy(p.thin_part_resolution == 0 || p.number_of_parts ? &r.hierarchy : nullptr));
+                         PDP::stage_timings(&r.timings), PDP::part_hierarchy(r.has_hierarchy ? &r.hierarchy : nullptr));
 #ifdef CGAL_LINKED_WITH_TBB
   // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
   tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);
@@ -212,7 +212,6 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
     const K::Point_3 c = q.center();
     r.primitives.push_back(Primitive{{{c.x(), c.y(), c.z()}}, q.scales(), q.rotation(), {{q.epsilon1(), q.epsilon2()}}});
   }
-  r.has_hierarchy = p.thin_part_resolution == 0 || p.number_of_parts;
   return part;
 }
 

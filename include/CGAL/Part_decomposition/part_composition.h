@@ -376,8 +376,8 @@ region. Where a volumetric part covers separate edge-connected stretches of a re
 whose boundary is concave on average by at least 0.15 (an edge counting
 \f$\min(1, \theta / 60^\circ)\f$ if concave with dihedral angle \f$\theta\f$, 0 if convex,
 weighted by length) is a part of its own, and the others stay with the largest: a limb ends at a
-concave root, a stray claim does not. Parts smaller than `minimum_part_area` of the mesh area are merged into the neighbour
-across their weakest shared edge. With `use_pieces(false)`, the parts are those of `parts`.
+concave root, a stray claim does not. Parts smaller than `minimum_part_area` of the mesh area are
+merged into the neighbour across their weakest shared edge. With `use_pieces(false)`, the parts are those of `parts`.
 
 Each part keeps the primitive of the volumetric part that covers most of it, and gets its
 superquadric (see `Composed_parts::part_primitives`).
