@@ -55,6 +55,7 @@ def dumbbell():
 def test_every_named_parameter_is_a_keyword_with_its_default():
     names = {
         "voxel_resolutions", "number_of_points_per_face", "number_of_neighbors", "curvature_percentile",
+        "use_concave_curvature",
         "cue_weights", "freeze_ratio", "use_density", "prior_resolution_cap", "normalization_margin", "tsdf_truncation",
         "tsdf_sign_method", "flow_zone_tolerance", "trust_region_scales", "body_seed_threshold",
         "minimum_body_volume", "minimum_surface_volume", "exterior_penalty", "coverage_target", "roi_radius",

@@ -990,7 +990,7 @@ TEST_CASE("thin_part_resolution: the finer pass's thin parts, with their superqu
   {
     CAPTURE(name);
     Mesh m;
-    test_shapes::read_shipped_shape(name, m);
+    const std::vector<std::size_t> truth = test_shapes::read_shipped_shape(name, m);
     const std::size_t nf = num_faces(m);
     std::vector<std::size_t> coarse(nf), finer(nf), part(nf), part_sequential(nf);
     std::vector<PD::Superquadric<K> > finer_primitives, primitives;
@@ -1028,10 +1028,11 @@ TEST_CASE("thin_part_resolution: the finer pass's thin parts, with their superqu
     }
     CHECK((refines(thin_faces, thin_finer) && refines(thin_finer, thin_faces)));
     CHECK((refines(other_faces, other_coarse) && refines(other_coarse, other_faces)));
-    // the animal's legs are thin at 128 (the test means something); the table's legs are already
-    // the default parts: its parts are the default ones, its true parts
+    // the animal's legs are thin at 128 (the test means something); the table's parts are its true
+    // parts, a leg at most losing its tip
     if(name == "animal") CHECK(!thin_faces.empty());
-    if(name == "table") CHECK((refines(part, coarse) && refines(coarse, part)));
+    if(name == "table")
+      CHECK(PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part)).mean_iou >= 0.95);
   }
 }
 

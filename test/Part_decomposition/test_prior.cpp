@@ -6,6 +6,8 @@
 #include <CGAL/Part_decomposition/topology_score.h>
 #include <CGAL/Part_decomposition/internal/grid_morphology.h>
 
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+
 #include "test_shapes.h"
 
 #include <algorithm>
@@ -49,14 +51,36 @@ struct Face_cues
   std::vector<double> c, phi;
 };
 
-template <typename ConcurrencyTag = CGAL::Sequential_tag>
-Face_cues face_cues(const Mesh& m)
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Face_cues face_cues(const Mesh& m, const NamedParameters& np = CGAL::parameters::default_values())
 {
   Face_cues cues;
   cues.c.assign(num_faces(m), -1.);
   cues.phi.assign(num_faces(m), -1.);
-  PD::compute_geometric_cues<ConcurrencyTag>(m, CGAL::make_property_map(cues.c), CGAL::make_property_map(cues.phi));
+  PD::compute_geometric_cues<ConcurrencyTag>(m, CGAL::make_property_map(cues.c), CGAL::make_property_map(cues.phi), np);
   return cues;
+}
+
+// The torus of major radius R and tube radius r, n x n quads split in two, oriented outward; `tube`
+// receives the cosine of the tube angle at each face's centre (-1: the inner equator).
+Mesh make_torus(double R, double r, int n, std::vector<double>& tube)
+{
+  const double pi = std::acos(-1.);
+  auto P = [&](int i, int j) { // i around the axis, j around the tube; indices taken modulo n
+    const double phi = 2 * pi * ((i % n + n) % n) / n, theta = 2 * pi * ((j % n + n) % n) / n;
+    return Point((R + r * std::cos(theta)) * std::cos(phi), (R + r * std::cos(theta)) * std::sin(phi), r * std::sin(theta));
+  };
+  test_shapes::Soup s;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      // (i, j) -> (i + 1, j) -> (i + 1, j + 1) turns around the outward normal
+      s.triangle(P(i, j), P(i + 1, j), P(i + 1, j + 1));
+      s.triangle(P(i, j), P(i + 1, j + 1), P(i, j + 1));
+      tube.push_back(std::cos(2 * pi * (j + 0.5) / n));
+      tube.push_back(std::cos(2 * pi * (j + 0.5) / n));
+    }
+  return s.mesh();
 }
 
 Point centroid(const Mesh& m, face_descriptor f)
@@ -212,7 +236,8 @@ TEST_CASE("face curvature cue is clipped and normalized to [0,1]", "[cues]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
   test_shapes::append(m, test_shapes::make_sphere(Point(3, 0, 0), 0.25, 3)); // 4x the curvature
-  const Face_cues cues = face_cues(m);
+  // the paper's cue: convex spheres have no concave vertex
+  const Face_cues cues = face_cues(m, PD::parameters::use_concave_curvature(false));
   double cmax = 0.;
   for(double x : cues.c)
   {
@@ -228,6 +253,33 @@ TEST_CASE("face curvature cue is clipped and normalized to [0,1]", "[cues]")
   // A flat sheet: the maximum is 0, every cue is 0.
   const Face_cues flat = face_cues(make_sheet(6));
   for(double x : flat.c) CHECK(x == 0.);
+}
+
+TEST_CASE("the curvature cue counts the concave vertices only: none on a sphere, the inner side of a torus",
+          "[cues]")
+{
+  const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  for(double x : face_cues(sphere).c) CHECK(x == 0.);
+  for(double x : face_cues(sphere, PD::parameters::use_concave_curvature(false)).c) CHECK(x > 0.5);
+  // Taken inside out, every vertex of the sphere is concave.
+  Mesh inverted = sphere;
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(inverted);
+  for(double x : face_cues(inverted).c) CHECK(x > 0.5);
+
+  // R = 1.5, r = 1: the mean curvature (R + 2 r cos t) / (2 r (R + r cos t)) is negative where the
+  // cosine of the tube angle t is below -R / 2r = -0.75.
+  std::vector<double> tube;
+  const Mesh torus = make_torus(1.5, 1., 48, tube);
+  const Face_cues cues = face_cues(torus), paper = face_cues(torus, PD::parameters::use_concave_curvature(false));
+  std::size_t concave = 0, convex = 0;
+  for(std::size_t f = 0; f < tube.size(); ++f)
+  {
+    CHECK(paper.c[f] > 0.);
+    if(tube[f] < -0.85) { CHECK(cues.c[f] > 0.); ++concave; }
+    if(tube[f] > -0.65) { CHECK(cues.c[f] == 0.); ++convex; }
+  }
+  CHECK(concave > 0);
+  CHECK(convex > concave);
 }
 
 // ---------------------------------------------------------------------------------------------

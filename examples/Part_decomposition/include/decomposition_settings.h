@@ -40,6 +40,7 @@ namespace PD = CGAL::Part_decomposition;
   X(std::vector<int>, voxel_resolutions, PD::defaults::voxel_resolutions())                \
   X(unsigned int, number_of_neighbors, PD::defaults::number_of_neighbors)                  \
   X(double, curvature_percentile, PD::defaults::curvature_percentile)                      \
+  X(bool, use_concave_curvature, PD::defaults::use_concave_curvature)                      \
   X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                \
   X(double, freeze_ratio, PD::defaults::freeze_ratio)                                      \
   X(bool, use_density, PD::defaults::use_density)                                          \

@@ -874,6 +874,12 @@ are chained with `parameters::combine()`)
     \cgalParamType{`double`, in `[0, 100]`}
     \cgalParamDefault{`99.5`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_concave_curvature}
+    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
+                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{cue_weights}
     \cgalParamDescription{\f$\lambda\f$: the weights of the curvature mean, curvature deviation,
                           curvature gradient and normal deviation in the topology score}

@@ -454,6 +454,12 @@ resolutions, and the fusion.
     \cgalParamType{`double`, in `[0, 100]`}
     \cgalParamDefault{`99.5`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_concave_curvature}
+    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
+                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{cue_weights}
     \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of the topology score}
     \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
@@ -501,7 +507,8 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
   const Normalization normalization = internal::read_normalization(tm, np);
 
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
+  const std::vector<double> kappa =
+    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.cues.use_concave_curvature);
   const std::vector<double> c = internal::face_curvature_cue(mesh, vc, kappa, parameters.cues.curvature_percentile);
   const std::vector<double> phi = internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
 

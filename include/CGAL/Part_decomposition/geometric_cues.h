@@ -48,6 +48,7 @@ struct Cue_parameters
 {
   double curvature_percentile;
   std::size_t number_of_neighbors;
+  bool use_concave_curvature;
 };
 
 template <typename NamedParameters>
@@ -62,6 +63,8 @@ Cue_parameters read_cue_parameters(const NamedParameters& np)
   const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), defaults::number_of_neighbors));
   check_parameter(k >= 1. && k <= 1e6 && k == std::floor(k), "number_of_neighbors");
   p.number_of_neighbors = std::size_t(k);
+  p.use_concave_curvature =
+    bool(choose_parameter(get_parameter(np, internal_np::use_concave_curvature), defaults::use_concave_curvature));
   return p;
 }
 
@@ -147,11 +150,19 @@ void compute_vertex_mean_curvature(const TriangleMesh& tm, VertexCurvatureMap ve
 /*!
 \ingroup PkgPartDecompositionRef
 computes the face curvature cue \f$c_f \in [0,1]\f$ of paper App.\ B: the vertex mean curvatures
-of `compute_vertex_mean_curvature()` are clipped at their `curvature_percentile`-th percentile
+of `compute_vertex_mean_curvature()`, those of the convex vertices set to 0 (`use_concave_curvature`,
+see below), are clipped at their `curvature_percentile`-th percentile
 (over the vertices incident to a face; linear interpolation between order statistics, as
 `numpy.quantile`), divided by the maximum of the clipped values, and averaged over the three
 vertices of each face. If that maximum is 0 or below \f$10^{-9}\f$ divided by the diagonal of the
 bounding box of `tm` (rounding noise on a planar mesh), every \f$c_f\f$ is 0.
+
+A vertex is convex if its cotangent Laplacian \f$\sum_j (\cot\alpha_{ij} + \cot\beta_{ij})(x_i - x_j)\f$
+points to the side of its faces' normals (the outside of a closed surface oriented outward, as the
+reader orients it; an open surface is taken as it is oriented). Parts meet where the surface is
+concave (the minima rule of Hoffman and Richards): the convex curvature of a thin limb, which the
+paper's \f$|H|/2\f$ counts in full, would mark the whole limb as a boundary and leave no room to fit
+it; `use_concave_curvature(false)` gives the paper's cue.
 
 \par Complexity
 Linear in the size of `tm` (the percentile is a selection, not a sort).
@@ -191,6 +202,12 @@ Linear in the size of `tm` (the percentile is a selection, not a sort).
     \cgalParamType{`double`, in `[0, 100]`}
     \cgalParamDefault{`99.5`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_concave_curvature}
+    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
+                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \pre `tm` has no garbage (`Surface_mesh`)
@@ -204,12 +221,13 @@ void compute_face_curvature_cue(const TriangleMesh& tm, FaceCurvatureMap face_cu
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::static_check_concurrency_tag<ConcurrencyTag>();
-  const double percentile = internal::read_cue_parameters(np).curvature_percentile;
+  const internal::Cue_parameters parameters = internal::read_cue_parameters(np);
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
+  const std::vector<double> kappa =
+    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.use_concave_curvature);
   internal::write_face_values(tm, face_curvature_map,
-                              internal::face_curvature_cue(mesh, vc, kappa, percentile), np);
+                              internal::face_curvature_cue(mesh, vc, kappa, parameters.curvature_percentile), np);
 }
 
 /*!
@@ -335,6 +353,12 @@ computes the two per-face geometric cues of paper App.\ B in one call: the face 
     \cgalParamType{`double`, in `[0, 100]`}
     \cgalParamDefault{`99.5`}
   \cgalParamNEnd
+  \cgalParamNBegin{use_concave_curvature}
+    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
+                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_neighbors}
     \cgalParamDescription{the number \f$k\f$ of nearest faces compared with each face}
     \cgalParamType{an integer type, at least 1}
@@ -357,7 +381,8 @@ void compute_geometric_cues(const TriangleMesh& tm, FaceCurvatureMap face_curvat
   const internal::Cue_parameters parameters = internal::read_cue_parameters(np);
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa = internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc);
+  const std::vector<double> kappa =
+    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.use_concave_curvature);
   internal::write_face_values(tm, face_curvature_map,
                               internal::face_curvature_cue(mesh, vc, kappa, parameters.curvature_percentile), np);
   internal::write_face_values(tm, face_normal_deviation_map,

@@ -31,6 +31,7 @@ namespace Part_decomposition {
   X(voxel_resolutions_t, voxel_resolutions, voxel_resolutions)                       \
   X(number_of_neighbors_t, number_of_neighbors, number_of_neighbors)                 \
   X(curvature_percentile_t, curvature_percentile, curvature_percentile)              \
+  X(use_concave_curvature_t, use_concave_curvature, use_concave_curvature)           \
   X(cue_weights_t, cue_weights, cue_weights)                                         \
   X(freeze_ratio_t, freeze_ratio, freeze_ratio)                                      \
   X(use_density_t, use_density, use_density)                                        \
@@ -180,6 +181,8 @@ constexpr unsigned int number_of_points_per_face = 36;
 constexpr unsigned int number_of_neighbors = 8;
 /// the percentile at which the vertex curvatures are clipped
 constexpr double curvature_percentile = 99.5;
+/// the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex
+constexpr bool use_concave_curvature = true;
 /// lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score
 constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
 /// alpha: the fraction of the active voxels frozen at each resolution
@@ -327,6 +330,9 @@ constexpr Parameter_description parameter_table[] = {
    "compute_face_normal_deviation()", true, false, "k: the nearest faces of the normal deviation cue"},
   {"curvature_percentile", "double", "99.5", "in [0, 100]", Parameter_stage::PRIOR, "compute_face_curvature_cue()",
    true, false, "the percentile at which the vertex curvatures are clipped"},
+  {"use_concave_curvature", "bool", "true", "", Parameter_stage::PRIOR,
+   "compute_face_curvature_cue(), compute_geometric_cues(), compute_flow_freeze_prior()", true, true,
+   "the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex"},
   {"cue_weights", "std::array<double, 4>", "1,1,1,1", "4 finite numbers", Parameter_stage::PRIOR,
    "compute_topology_score()", true, false,
    "lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score"},

@@ -89,9 +89,12 @@ inline Vertex_corners make_vertex_corners(const Triangle_arrays& mesh)
 // mixed Voronoi area. At a border edge the missing cotangent is skipped; the sum then also holds
 // the in-plane curvature of the border itself (a flat sheet would get a curved rim), so at a
 // border vertex only its component along the area-weighted vertex normal is kept. A vertex with no
-// non-degenerate incident triangle (isolated, or only zero-area faces) gets 0.
+// non-degenerate incident triangle (isolated, or only zero-area faces) gets 0. With `concave_only`,
+// a vertex where the surface bends away from its normal (convex: sum_j (x_v - x_j) weighted as above
+// points to the side the faces' normals point to) gets 0 too.
 template <typename ConcurrencyTag>
-std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Vertex_corners& vc)
+std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Vertex_corners& vc,
+                                           bool concave_only = false)
 {
   const std::size_t nv = mesh.points.size();
   std::vector<double> kappa(nv, 0.);
@@ -132,7 +135,7 @@ std::vector<double> vertex_mean_curvatures(const Triangle_arrays& mesh, const Ve
           ++ring_use[s];
         }
       }
-      if(!(area > 0.)) continue;
+      if(!(area > 0.) || (concave_only && dot3(lap, normal) > 0.)) continue;
       bool border = false;
       for(std::uint32_t n : ring_use) border = border || n == 1;
       double k;
