@@ -506,10 +506,8 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
   const Normalization normalization = internal::read_normalization(tm, np);
 
-  const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa =
-    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.cues.use_concave_curvature);
-  const std::vector<double> c = internal::face_curvature_cue(mesh, vc, kappa, parameters.cues.curvature_percentile);
+  const std::vector<double> c =
+    internal::face_curvatures<ConcurrencyTag>(mesh, internal::make_vertex_corners(mesh), parameters.cues);
   const std::vector<double> phi = internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
 
   // Every level from the samples binned at the finest resolution (the list is increasing).

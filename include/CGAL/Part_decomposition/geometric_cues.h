@@ -68,6 +68,15 @@ Cue_parameters read_cue_parameters(const NamedParameters& np)
   return p;
 }
 
+// c_f of every face (face_curvature_cue() of the vertex mean curvatures, concave ones only if
+// `use_concave_curvature`): the one computation behind the curvature cue of every stage.
+template <typename ConcurrencyTag>
+std::vector<double> face_curvatures(const Triangle_arrays& mesh, const Vertex_corners& vc, const Cue_parameters& p)
+{
+  const std::vector<double> kappa = vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, p.use_concave_curvature);
+  return face_curvature_cue(mesh, vc, kappa, p.curvature_percentile);
+}
+
 template <typename TriangleMesh, typename FaceMap, typename NamedParameters>
 void write_face_values(const TriangleMesh& tm, FaceMap map, const std::vector<double>& values,
                        const NamedParameters& np)
@@ -223,11 +232,9 @@ void compute_face_curvature_cue(const TriangleMesh& tm, FaceCurvatureMap face_cu
   internal::static_check_concurrency_tag<ConcurrencyTag>();
   const internal::Cue_parameters parameters = internal::read_cue_parameters(np);
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
-  const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa =
-    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.use_concave_curvature);
-  internal::write_face_values(tm, face_curvature_map,
-                              internal::face_curvature_cue(mesh, vc, kappa, parameters.curvature_percentile), np);
+  internal::write_face_values(
+    tm, face_curvature_map,
+    internal::face_curvatures<ConcurrencyTag>(mesh, internal::make_vertex_corners(mesh), parameters), np);
 }
 
 /*!
@@ -380,11 +387,9 @@ void compute_geometric_cues(const TriangleMesh& tm, FaceCurvatureMap face_curvat
   internal::static_check_concurrency_tag<ConcurrencyTag>();
   const internal::Cue_parameters parameters = internal::read_cue_parameters(np);
   const internal::Triangle_arrays mesh = internal::make_triangle_arrays(tm, np);
-  const internal::Vertex_corners vc = internal::make_vertex_corners(mesh);
-  const std::vector<double> kappa =
-    internal::vertex_mean_curvatures<ConcurrencyTag>(mesh, vc, parameters.use_concave_curvature);
-  internal::write_face_values(tm, face_curvature_map,
-                              internal::face_curvature_cue(mesh, vc, kappa, parameters.curvature_percentile), np);
+  internal::write_face_values(
+    tm, face_curvature_map,
+    internal::face_curvatures<ConcurrencyTag>(mesh, internal::make_vertex_corners(mesh), parameters), np);
   internal::write_face_values(tm, face_normal_deviation_map,
                               internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.number_of_neighbors), np);
 }

@@ -63,11 +63,11 @@ constexpr double contact_fraction = 0.01;
 constexpr double merge_crease_weight = 0.05;
 // Above the default parts, the weight of the smaller part's area fraction in the cost: large
 // enough that size orders these merges (tuned on half A of the development and CAD-style sets
-// told their part counts: 3 and 10 equal, 1 and 0.3 below; see RESULTS.md).
+// told their part counts: 3 and 10 equal, 1 and 0.3 below; see the archive of RESULTS.md).
 constexpr double merge_attachment_weight = 10.;
 // Above the default parts, the cost from which a merge within a piece waits with the contacts: the
 // size term of a part of 30% of the surface (tuned on half A of the CAD-style set told its coarse
-// part counts: 2.5 to 3.5 equal, 2 and 4 below; see RESULTS.md).
+// part counts: 2.5 to 3.5 equal, 2 and 4 below; see the archive of RESULTS.md).
 constexpr double merge_within_piece_limit = 3.;
 
 // The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`.
@@ -157,7 +157,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     {
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j == Face_adjacency::no_face || leaf[j] <= leaf[i]) continue; // each edge once, from one side
-      const double length = (corner(i, k) - corner(i, (k + 2) % 3)).norm();
+      const double length = slot_length(corner, i, k);
       const double weight = edge_concavity(adj, i, k, orientation[piece[i]]);
       shared.push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
     }

@@ -80,12 +80,6 @@ inline double cut_penalty(double degrees, bool concave)
   return -std::log((std::max)(t, smallest));
 }
 
-// The length of the edge of slot (i, k): corners are listed from target(halfedge(f)) on.
-inline double slot_length(const Face_corners& corners, std::size_t i, int k)
-{
-  return (corners(i, k) - corners(i, (k + 2) % 3)).norm();
-}
-
 // The cost of cutting the edge of slot (i, k), edge_scale included.
 inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corners,
                             const std::vector<int>& orientation, std::size_t i, int k, double edge_scale)

@@ -76,6 +76,14 @@ struct Face_corners
   const Eigen::Vector3d& operator()(std::size_t face, int k) const { return point[vertex[3 * face + std::size_t(k)]]; }
 };
 
+// The length of the edge of slot (i, k) of `corners` (a Face_corners, or anything called as one):
+// corners are listed from target(halfedge(f)) on, so the edge of slot k joins corners k and k - 1.
+template <typename Corners>
+double slot_length(const Corners& corners, std::size_t i, int k)
+{
+  return (corners(i, k) - corners(i, (k + 2) % 3)).norm();
+}
+
 // The index of halfedge h in its face, counted from halfedge(face(h), tm).
 template <typename TriangleMesh>
 int slot_in_face(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm)

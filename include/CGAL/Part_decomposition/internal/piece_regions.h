@@ -308,7 +308,7 @@ std::vector<double> junction_length_fractions(const Face_adjacency& adj, const C
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
     for(int k = 0; k < 3; ++k)
     {
-      const double length = (corners(i, k) - corners(i, (k + 2) % 3)).norm();
+      const double length = slot_length(corners, i, k);
       total[piece[i]] += length;
       if(is_junction(adj, 3 * i + std::size_t(k))) junction[piece[i]] += length;
     }
@@ -376,7 +376,7 @@ std::vector<std::size_t> stretch_owners(const Face_adjacency& adj, const Corner&
     {
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j == Face_adjacency::no_face || stretch[j] == c) continue;
-      const double l = (corner(i, k) - corner(i, (k + 2) % 3)).norm();
+      const double l = slot_length(corner, i, k);
       length[c] += l;
       concave[c] += l * edge_concavity(adj, i, k, orientation[piece[i]]);
     }
