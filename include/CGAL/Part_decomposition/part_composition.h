@@ -437,8 +437,11 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
   }
   else
   {
+    // residual patches are appended parts: renumber as the composed parts are documented
     c.parts = parts.parts;
-    c.part_to_primitive = parts.part_to_primitive;
+    std::vector<std::size_t> former;
+    internal::renumber_by_first_face(c.parts, &former);
+    for(std::size_t k : former) c.part_to_primitive.push_back(parts.part_to_primitive[k]);
     face_area = internal::face_adjacency_of<ConcurrencyTag>(tm, maps.fim, np).area;
   }
   c.part_primitives =
