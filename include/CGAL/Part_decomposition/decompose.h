@@ -884,7 +884,7 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{\f$\lambda\f$: the weights of the curvature mean, curvature deviation,
                           curvature gradient and normal deviation in the topology score}
     \cgalParamType{`std::array<double, 4>`}
-    \cgalParamDefault{`{1, 1, 1, 1}`}
+    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
   \cgalParamNEnd
   \cgalParamNBegin{freeze_ratio}
     \cgalParamDescription{\f$\alpha\f$: the fraction of active voxels frozen at each resolution}

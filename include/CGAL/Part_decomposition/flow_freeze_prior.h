@@ -463,7 +463,7 @@ resolutions, and the fusion.
   \cgalParamNBegin{cue_weights}
     \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of the topology score}
     \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
-    \cgalParamDefault{`{1, 1, 1, 1}`}
+    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
   \cgalParamNEnd
   \cgalParamNBegin{freeze_ratio}
     \cgalParamDescription{the fraction \f$\alpha\f$ of active voxels that become Freeze at each resolution}

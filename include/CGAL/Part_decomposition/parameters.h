@@ -184,7 +184,7 @@ constexpr double curvature_percentile = 99.5;
 /// the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex
 constexpr bool use_concave_curvature = true;
 /// lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score
-constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 1.}};
+constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 0.}};
 /// alpha: the fraction of the active voxels frozen at each resolution
 constexpr double freeze_ratio = 0.15;
 /// the topology score is weighted by the density sqrt(n_i); false: the paper's ablation
@@ -333,7 +333,7 @@ constexpr Parameter_description parameter_table[] = {
   {"use_concave_curvature", "bool", "true", "", Parameter_stage::PRIOR,
    "compute_face_curvature_cue(), compute_geometric_cues(), compute_flow_freeze_prior()", true, true,
    "the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex"},
-  {"cue_weights", "std::array<double, 4>", "1,1,1,1", "4 finite numbers", Parameter_stage::PRIOR,
+  {"cue_weights", "std::array<double, 4>", "1,1,1,0", "4 finite numbers", Parameter_stage::PRIOR,
    "compute_topology_score()", true, false,
    "lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score"},
   {"freeze_ratio", "double", "0.15", "in (0, 1)", Parameter_stage::PRIOR, "compute_topology_score()", true, false,

@@ -394,7 +394,7 @@ with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
     \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of
                           \f$\mu^\kappa, \sigma^\kappa, \Delta^\kappa, \phi_{norm}\f$}
     \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
-    \cgalParamDefault{`{1, 1, 1, 1}`}
+    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
   \cgalParamNEnd
   \cgalParamNBegin{freeze_ratio}
     \cgalParamDescription{the fraction \f$\alpha\f$ of active voxels with the highest scores that become Freeze}
