@@ -929,21 +929,24 @@ TEST_CASE("the prior's field at r is compute_topology_score at r with the sample
 {
   // The 12-triangle cube: its faces are cut relative to the finest grid in the prior, so binning
   // at r itself gives other fields.
+  // With lambda_4 = 0 (the default) the prior does not compute the normal deviation: its grids are 0.
   const Mesh cube = test_shapes::make_box(Point(-1, -1, -1), Point(1, 1, 1), 1);
-  const Mesh dumbbell = make_dumbbell();
-  for(const Mesh* m : {&cube, &dumbbell})
+  const Mesh dumbbell = make_dumbbell(), welded = welded_dumbbell();
+  for(const Mesh* m : {&cube, &dumbbell, &welded})
   {
     const Face_cues cues = face_cues(*m);
+    const std::vector<double> no_phi(cues.phi.size(), 0.);
     const auto cmap = CGAL::make_property_map(cues.c);
-    const auto pmap = CGAL::make_property_map(cues.phi);
-    for(bool density : {true, false})
-    {
-      const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(*m, PD::parameters::use_density(density));
-      REQUIRE(prior.fields.size() == 3);
-      for(std::size_t l = 0; l < 3; ++l)
-        CHECK(same_field(prior.fields[l], PD::compute_topology_score(*m, cmap, pmap, prior.resolutions[l], 64,
-                                                                     PD::parameters::use_density(density))));
-    }
+    for(const std::array<double, 4> weights : {PD::defaults::cue_weights, std::array<double, 4>{{1., 1., 1., 1.}}})
+      for(bool density : {true, false})
+      {
+        const auto np = PD::parameters::combine(PD::parameters::use_density(density), PD::parameters::cue_weights(weights));
+        const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(*m, np);
+        REQUIRE(prior.fields.size() == 3);
+        const auto pmap = CGAL::make_property_map(weights[3] == 0. ? no_phi : cues.phi);
+        for(std::size_t l = 0; l < 3; ++l)
+          CHECK(same_field(prior.fields[l], PD::compute_topology_score(*m, cmap, pmap, prior.resolutions[l], 64, np)));
+      }
   }
   const Face_cues cues = face_cues(cube);
   const PD::Topology_score_field at_16 = PD::compute_topology_score(

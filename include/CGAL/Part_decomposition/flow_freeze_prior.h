@@ -380,7 +380,9 @@ The samples are binned once, in the grid of the finest resolution \f$r_L\f$: the
 resolution \f$r\f$ is `compute_topology_score(tm, c, phi, r, r_L, np)` with the cues of
 `compute_geometric_cues(tm, c, phi, np)`, i.e.\ large faces are cut relative to the finest grid
 and a coarse voxel sums the counts of the finest voxels it holds. It differs from
-`compute_topology_score(tm, c, phi, r, np)` (samples binned at \f$r\f$) for \f$r < r_L\f$.
+`compute_topology_score(tm, c, phi, r, np)` (samples binned at \f$r\f$) for \f$r < r_L\f$. The
+normal deviation is not computed when its weight \f$\lambda_4\f$ is 0 (the default): the
+`normal_deviation` grids of the fields then hold 0.
 
 The result is the same with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`, for any number of
 threads.
@@ -508,7 +510,11 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
 
   const std::vector<double> c =
     internal::face_curvatures<ConcurrencyTag>(mesh, internal::make_vertex_corners(mesh), parameters.cues);
-  const std::vector<double> phi = internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
+  // a cue of weight 0 is not computed: its field is 0 (the normal deviation's k-NN is half the cues' cost)
+  const std::vector<double> phi =
+    parameters.score.cue_weights[3] == 0.
+      ? std::vector<double>(mesh.faces.size(), 0.)
+      : internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
 
   // Every level from the samples binned at the finest resolution (the list is increasing).
   // The levels above prior_resolution_cap are not scored: only their sampled voxels are needed.

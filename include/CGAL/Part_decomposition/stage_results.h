@@ -54,7 +54,8 @@ struct Topology_score_field
   /// \f$\Delta^\kappa_i\f$: the magnitude of the gradient of the dense \f$\mu^\kappa\f$ field
   /// (unit voxel spacing).
   Voxel_grid<double> curvature_gradient;
-  /// \f$\phi_{norm}\f$: the mean normal deviation of the samples of each voxel.
+  /// \f$\phi_{norm}\f$: the mean normal deviation of the samples of each voxel (0 if
+  /// `compute_flow_freeze_prior()` did not compute it: \f$\lambda_4 = 0\f$).
   Voxel_grid<double> normal_deviation;
   /// \f$S_B\f$: the topology score.
   Voxel_grid<double> score;
