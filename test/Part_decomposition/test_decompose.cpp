@@ -312,15 +312,7 @@ void check_stages_give_decompose(const Mesh& m, bool use_pieces, bool keep_resid
   const std::size_t K_expected = PD::decompose(
     m, CGAL::make_property_map(expected),
     PDP::combine(np, PDP::primitive_output_iterator(std::back_inserter(expected_primitives))));
-  // the parts are numbered by smallest face index
-  std::size_t next = 0;
-  bool by_first_face = true;
-  for(std::size_t l : expected)
-  {
-    by_first_face = by_first_face && l <= next;
-    next += l == next ? 1 : 0;
-  }
-  CHECK(by_first_face);
+  CHECK(test_shapes::count_if_numbered_by_first_face(expected) == K_expected);
   CHECK(decompose_by_stages(m, use_pieces, keep_residual_patches, np, labels, primitives) == K_expected);
   CHECK(labels == expected);
   check_same_primitives(primitives, expected_primitives);

@@ -49,13 +49,7 @@ std::vector<std::size_t> patches_of(Mesh& m, std::size_t& count, double quantile
 // Patch ids are 0..A-1, each used, numbered by first face, and each patch is edge-connected.
 void check_patch_structure(Mesh& m, const std::vector<std::size_t>& patch, std::size_t count)
 {
-  std::size_t next_new = 0;
-  for(std::size_t l : patch)
-  {
-    REQUIRE(l <= next_new);
-    if(l == next_new) ++next_new;
-  }
-  REQUIRE(next_new == count);
+  REQUIRE(test_shapes::count_if_numbered_by_first_face(patch) == count);
   // Flood fill inside each patch only: one component per patch.
   Mesh& mm = m;
   auto comp = mm.add_property_map<face_descriptor, std::size_t>("f:test_comp", 0).first;

@@ -764,7 +764,7 @@ TEST_CASE("the prior of a dumbbell freezes its junctions, not its bar", "[prior]
   // the bells is Flow.
   auto fractions_frozen = [&](const PD::Hierarchical_prior& p) {
     const std::vector<VC> cls = face_classes(m, p);
-    std::array<double, 4> frozen{{0., 0., 0., 0.}}, count{{0., 0., 0., 0.}}; // bells, bar, cut
+    std::array<double, 3> frozen{{0., 0., 0.}}, count{{0., 0., 0.}}; // bells, bar, cut
     for(auto f : faces(m))
     {
       bool on_cut = false;
@@ -776,13 +776,13 @@ TEST_CASE("the prior of a dumbbell freezes its junctions, not its bar", "[prior]
     for(std::size_t g = 0; g < 3; ++g) frozen[g] /= count[g];
     return frozen;
   };
-  const std::array<double, 4> frozen = fractions_frozen(prior);
+  const std::array<double, 3> frozen = fractions_frozen(prior);
   CHECK(frozen[2] >= 0.9);
   CHECK(frozen[1] <= 0.2);
   CHECK(frozen[0] <= 0.1);
   // With the paper's cues (|H| at every vertex, the normal deviation), the thin bar's convex
   // curvature freezes it end to end, and no primitive would be seeded in it.
-  const std::array<double, 4> paper = fractions_frozen(PD::compute_flow_freeze_prior(
+  const std::array<double, 3> paper = fractions_frozen(PD::compute_flow_freeze_prior(
     m, PD::parameters::combine(PD::parameters::use_concave_curvature(false),
                                  PD::parameters::cue_weights(std::array<double, 4>{{1., 1., 1., 1.}}))));
   CHECK(paper[1] >= 0.8);

@@ -510,7 +510,7 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
 
   const std::vector<double> c =
     internal::face_curvatures<ConcurrencyTag>(mesh, internal::make_vertex_corners(mesh), parameters.cues);
-  // a cue of weight 0 is not computed: its field is 0 (the normal deviation's k-NN is half the cues' cost)
+  // the normal deviation is not computed at weight 0 (its k-NN is half the cues' cost): its grids hold 0
   const std::vector<double> phi =
     parameters.score.cue_weights[3] == 0.
       ? std::vector<double>(mesh.faces.size(), 0.)

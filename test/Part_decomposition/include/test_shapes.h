@@ -346,6 +346,19 @@ inline std::vector<std::size_t> faces_outside_holes(const Mesh& m, int holes, do
   return kept;
 }
 
+// The number of labels if they are numbered 0, 1, ... in the order of their first face (each
+// label is at most one more than every label before it), else std::size_t(-1).
+inline std::size_t count_if_numbered_by_first_face(const std::vector<std::size_t>& labels)
+{
+  std::size_t next = 0;
+  for(std::size_t l : labels)
+  {
+    if(l > next) return std::size_t(-1);
+    if(l == next) ++next;
+  }
+  return next;
+}
+
 } // namespace test_shapes
 
 #endif // PART_DECOMPOSITION_TEST_SHAPES_H
