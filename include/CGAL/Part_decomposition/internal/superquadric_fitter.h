@@ -384,6 +384,7 @@ private:
     {
       if(outcome.degenerate) ++m_result.rejected_degenerate;
       else ++m_result.rejected_by_flow_zone;
+      report_rejection(st, seed, outcome.degenerate ? "degenerate fit" : "surface leaves the Flow zone");
       reject(st, seed);
       return;
     }
@@ -391,6 +392,7 @@ private:
     if(net < (seed.body ? st.vmin_body : st.vmin_surface))
     {
       ++m_result.rejected_by_volume;
+      report_rejection(st, seed, "net claim below V_min");
       reject(st, seed);
       return;
     }
@@ -621,6 +623,13 @@ private:
     m_result.seed_voxel.push_back(seed.voxel);
     m_result.semi_axis_scale.push_back(outcome.eta);
     m_result.fit_cost.push_back(outcome.fit.cost);
+  }
+
+  void report_rejection(const Stage& st, const Seed& seed, const char* reason) const
+  {
+    if(m_parameters.verbose)
+      std::cerr << "  rejected: stage " << st.r << (seed.body ? " body" : " surface") << " seed " << seed.voxel
+                << ", ROI of " << m_roi_voxels.size() << " voxels: " << reason << "\n";
   }
 
   // Excludes the seed from later seeds of the stage and, with seed exclusion, the ball around it
