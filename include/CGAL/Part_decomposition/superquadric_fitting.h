@@ -434,8 +434,9 @@ distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
     \cgalParamDefault{`0.6`}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
-    \cgalParamDescription{if `true`, prints every accepted primitive, a summary of every stage and
-                          the time spent in each step to `std::cerr`}
+    \cgalParamDescription{if `true`, prints every accepted primitive, every rejected seed with the
+                          reason, a summary of every stage and the time spent in each step to
+                          `std::cerr`}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
