@@ -52,6 +52,10 @@ struct Sheet_merging_thresholds
   double minimum_sharp_angle = 30.;
   // the angle an edge of a zero-area face (no normal) counts with, in degrees
   double degenerate_edge_angle = 90.;
+  // two sheets whose thin axes meet at more than this angle (degrees) form a fold: their seam
+  // counts as sharp where a sharp edge lies within one ring of faces of it, since the assignment
+  // may leave a row of faces of one plate to the other
+  double fold_angle = 45.;
 };
 
 // Whether each part is a thin sheet: its primitive is flat and claims no voxel deeper than the
@@ -90,6 +94,7 @@ struct Seam_edge
 {
   std::size_t p, q;
   double angle, length;
+  double near_angle; // the largest angle of the edges of the faces within one ring of the edge
 };
 
 // The dihedral angle of the edge of halfedge `h` as the merge counts it, in degrees.
@@ -103,8 +108,24 @@ double sheet_edge_angle(const TriangleMesh& tm, const FaceIndexMap& fim, const F
   return adj.angle[3 * a + std::size_t(slot_in_face(h, tm))];
 }
 
+// The largest angle of the edges of each face and of its neighbours.
+inline std::vector<double> largest_angle_nearby(const Face_adjacency& adj, const Sheet_merging_thresholds& th)
+{
+  const std::size_t n = adj.number_of_faces;
+  std::vector<double> near(n, 0.);
+  for(std::size_t f = 0; f < n; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      near[f] = (std::max)(near[f], adj.degenerate[f] ? th.degenerate_edge_angle : adj.angle[3 * f + k]);
+  std::vector<double> next = near;
+  for(std::size_t f = 0; f < n; ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+      if(adj.neighbor[3 * f + k] != Face_adjacency::no_face) next[f] = (std::max)(next[f], near[adj.neighbor[3 * f + k]]);
+  return next;
+}
+
 // The angle of every interior edge (`angles`) and the seams between sheets of different parts,
 // in the order of `edges(tm)` (the seam lengths are summed in this order).
+// The angles of a zero-area face's edges are the degenerate angle.
 template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
 void collect_seam_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& fim,
                         const Face_adjacency& adj, const std::vector<std::size_t>& part,
@@ -112,6 +133,7 @@ void collect_seam_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const
                         std::vector<double>& angles, std::vector<Seam_edge>& seam)
 {
   const std::size_t K = sheet.size();
+  const std::vector<double> near = largest_angle_nearby(adj, th);
   angles.reserve(num_edges(tm));
   for(auto e : edges(tm))
   {
@@ -119,15 +141,16 @@ void collect_seam_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const
     if(is_border_edge(h, tm)) continue;
     const double angle = sheet_edge_angle(tm, fim, adj, h, th);
     angles.push_back(angle);
-    const std::size_t pa = part[std::size_t(get(fim, face(h, tm)))];
-    const std::size_t pb = part[std::size_t(get(fim, face(opposite(h, tm), tm)))];
+    const std::size_t fa = std::size_t(get(fim, face(h, tm))), fb = std::size_t(get(fim, face(opposite(h, tm), tm)));
+    const std::size_t pa = part[fa], pb = part[fb];
     if(pa == pb || pa >= K || pb >= K || !sheet[pa] || !sheet[pb]) continue;
     const auto& s = get(vpm, source(h, tm));
     const auto& t = get(vpm, target(h, tm));
     const double dx = CGAL::to_double(s.x()) - CGAL::to_double(t.x());
     const double dy = CGAL::to_double(s.y()) - CGAL::to_double(t.y());
     const double dz = CGAL::to_double(s.z()) - CGAL::to_double(t.z());
-    seam.push_back({(std::min)(pa, pb), (std::max)(pa, pb), angle, std::sqrt(dx * dx + dy * dy + dz * dz)});
+    seam.push_back({(std::min)(pa, pb), (std::max)(pa, pb), angle, std::sqrt(dx * dx + dy * dy + dz * dz),
+                    (std::max)({angle, near[fa], near[fb]})});
   }
 }
 
@@ -139,12 +162,37 @@ inline double sharp_edge_angle(std::vector<double>& angles, const Sheet_merging_
   return (std::max)(value_at_rank(angles, double(rank)), th.minimum_sharp_angle);
 }
 
+// The axis of the smallest semi-axis of each part's primitive (0 for a part without one; every
+// sheet has one).
+template <typename GeomTraits>
+std::vector<std::array<double, 3> > thin_axes(const Superquadric_fitting_result<GeomTraits>& fitting,
+                                              const std::vector<std::size_t>& part_to_primitive)
+{
+  std::vector<std::array<double, 3> > axis(part_to_primitive.size(), std::array<double, 3>{{0., 0., 0.}});
+  for(std::size_t k = 0; k < part_to_primitive.size(); ++k)
+    if(part_to_primitive[k] < fitting.primitives.size())
+    {
+      const Superquadric<GeomTraits>& q = fitting.primitives[part_to_primitive[k]];
+      const std::array<double, 3> a = q.scales();
+      const auto v = q.axis(int(std::min_element(a.begin(), a.end()) - a.begin()));
+      axis[k] = {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
+    }
+  return axis;
+}
+
 // The new part of each old part: sheets joined across every seam that is mostly smooth, numbered
-// in order of their first old part. Returns the number of new parts.
+// in order of their first old part; the seam of a fold (thin axes `normal` apart by more than
+// the fold angle) counts the angles near it. Returns the number of new parts.
 inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>& seam, double sharp,
                                                    std::size_t K, const Sheet_merging_thresholds& th,
-                                                   std::vector<std::size_t>& old_to_new)
+                                                   std::vector<std::size_t>& old_to_new,
+                                                   const std::vector<std::array<double, 3> >& normal)
 {
+  const double fold_cosine = std::cos(th.fold_angle * CGAL_PI / 180.);
+  // sharp length of each seam counted with the angles near it
+  std::map<std::pair<std::size_t, std::size_t>, double> near_sharp;
+  for(const Seam_edge& e : seam)
+    if(e.near_angle >= sharp) near_sharp[std::make_pair(e.p, e.q)] += e.length;
   // (sharp length, total length) of the seam of each pair of sheets
   std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > seams;
   for(const Seam_edge& e : seam)
@@ -159,8 +207,14 @@ inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>&
   std::vector<Groups::handle> group_of;
   for(std::size_t k = 0; k < K; ++k) group_of.push_back(groups.make_set(k));
   for(const auto& s : seams)
-    if(s.second.first < th.sharp_seam_fraction * s.second.second)
+  {
+    const std::array<double, 3>& a = normal[s.first.first];
+    const std::array<double, 3>& b = normal[s.first.second];
+    const bool folded = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) < fold_cosine;
+    const double sharp_length = folded ? near_sharp[s.first] : s.second.first;
+    if(sharp_length < th.sharp_seam_fraction * s.second.second)
       groups.unify_sets(group_of[s.first.first], group_of[s.first.second]);
+  }
 
   const std::size_t unset = std::size_t(-1);
   std::vector<std::size_t> new_id(K, unset);
@@ -224,7 +278,8 @@ std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPoint
   const double sharp = sharp_edge_angle(angles, th);
 
   std::vector<std::size_t> old_to_new;
-  const std::size_t K2 = join_sheets_across_smooth_seams(seam, sharp, K, th, old_to_new);
+  const std::size_t K2 =
+    join_sheets_across_smooth_seams(seam, sharp, K, th, old_to_new, thin_axes(fitting, part_to_primitive));
   part_to_primitive = largest_primitives(old_to_new, K2, part_to_primitive, fitting);
   for(std::size_t& p : part)
     if(p < K) p = old_to_new[p];
