@@ -64,7 +64,11 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
    the sorted list), and at least 30 degrees.
 3. Two adjacent sheets are merged when less than half of the length of their common boundary
    runs over sharp edges; merging is transitive. A seam on a crease (the rim of a table top, a
-   wing's edge against the fuselage) keeps them apart.
+   wing's edge against the fuselage) keeps them apart. Where the two sheets form a fold (the axes
+   of the smallest semi-axes of their primitives more than 45 degrees apart), a boundary edge
+   also counts as sharp if one of its two faces or of their neighbours has a sharp edge: the
+   assignment may leave a row of one plate's faces to the other, which moves the seam off the
+   crease.
 4. The parts are renumbered `0` to `K_new - 1` in the order of their smallest former id; a merged part
    keeps the primitive that claimed the most voxels (the one of the smallest former part on a tie).
 
