@@ -165,10 +165,10 @@ inline double sharp_edge_angle(std::vector<double>& angles, const Sheet_merging_
 // The axis of the smallest semi-axis of each part's primitive (0 for a part without one; every
 // sheet has one).
 template <typename GeomTraits>
-std::vector<std::array<double, 3> > thin_axes(const Superquadric_fitting_result<GeomTraits>& fitting,
-                                              const std::vector<std::size_t>& part_to_primitive)
+std::vector<Vec3> thin_axes(const Superquadric_fitting_result<GeomTraits>& fitting,
+                            const std::vector<std::size_t>& part_to_primitive)
 {
-  std::vector<std::array<double, 3> > axis(part_to_primitive.size(), std::array<double, 3>{{0., 0., 0.}});
+  std::vector<Vec3> axis(part_to_primitive.size(), Vec3{{0., 0., 0.}});
   for(std::size_t k = 0; k < part_to_primitive.size(); ++k)
     if(part_to_primitive[k] < fitting.primitives.size())
     {
@@ -186,20 +186,21 @@ std::vector<std::array<double, 3> > thin_axes(const Superquadric_fitting_result<
 inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>& seam, double sharp,
                                                    std::size_t K, const Sheet_merging_thresholds& th,
                                                    std::vector<std::size_t>& old_to_new,
-                                                   const std::vector<std::array<double, 3> >& normal)
+                                                   const std::vector<Vec3>& normal)
 {
   const double fold_cosine = std::cos(th.fold_angle * CGAL_PI / 180.);
-  // sharp length of each seam counted with the angles near it
-  std::map<std::pair<std::size_t, std::size_t>, double> near_sharp;
-  for(const Seam_edge& e : seam)
-    if(e.near_angle >= sharp) near_sharp[std::make_pair(e.p, e.q)] += e.length;
-  // (sharp length, total length) of the seam of each pair of sheets
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<double, double> > seams;
+  // the lengths of the seam of each pair of sheets: on sharp edges, near sharp edges, in all
+  struct Seam_lengths
+  {
+    double sharp = 0., sharp_nearby = 0., total = 0.;
+  };
+  std::map<std::pair<std::size_t, std::size_t>, Seam_lengths> seams;
   for(const Seam_edge& e : seam)
   {
-    std::pair<double, double>& s = seams[std::make_pair(e.p, e.q)];
-    s.second += e.length;
-    if(e.angle >= sharp) s.first += e.length;
+    Seam_lengths& s = seams[std::make_pair(e.p, e.q)];
+    s.total += e.length;
+    if(e.angle >= sharp) s.sharp += e.length;
+    if(e.near_angle >= sharp) s.sharp_nearby += e.length;
   }
   // the value of each set is one of its parts: the key of its new id
   typedef CGAL::Union_find<std::size_t> Groups;
@@ -208,11 +209,9 @@ inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>&
   for(std::size_t k = 0; k < K; ++k) group_of.push_back(groups.make_set(k));
   for(const auto& s : seams)
   {
-    const std::array<double, 3>& a = normal[s.first.first];
-    const std::array<double, 3>& b = normal[s.first.second];
-    const bool folded = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) < fold_cosine;
-    const double sharp_length = folded ? near_sharp[s.first] : s.second.first;
-    if(sharp_length < th.sharp_seam_fraction * s.second.second)
+    const bool folded = std::abs(dot3(normal[s.first.first], normal[s.first.second])) < fold_cosine;
+    const double sharp_length = folded ? s.second.sharp_nearby : s.second.sharp;
+    if(sharp_length < th.sharp_seam_fraction * s.second.total)
       groups.unify_sets(group_of[s.first.first], group_of[s.first.second]);
   }
 
