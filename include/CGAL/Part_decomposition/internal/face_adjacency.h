@@ -217,11 +217,7 @@ Face_adjacency build_face_adjacency(
 
   // Centroids relative to a vertex of the mesh: moments of far-off meshes stay accurate.
   Vec3 origin = {{0., 0., 0.}};
-  if(nf > 0)
-  {
-    const auto& p = get(vpm, target(halfedge(face_of[0], tm), tm));
-    origin = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  }
+  if(nf > 0) origin = vec3_of(get(vpm, target(halfedge(face_of[0], tm), tm)));
   adj.normal.assign(3 * nf, 0.);
   compute_face_geometry<ConcurrencyTag>(tm, fim, vpm, gt, face_of, origin, adj, adj.normal);
   compute_dihedral_angles<ConcurrencyTag>(adj);

@@ -97,15 +97,14 @@ struct Seam_edge
   double near_angle; // the largest angle of the edges of the faces within one ring of the edge
 };
 
-// The dihedral angle of the edge of halfedge `h` as the merge counts it, in degrees.
-template <typename TriangleMesh, typename FaceIndexMap>
-double sheet_edge_angle(const TriangleMesh& tm, const FaceIndexMap& fim, const Face_adjacency& adj,
-                        typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
-                        const Sheet_merging_thresholds& th)
+// The dihedral angle across slot `k` of face `f` as the merge counts it, in degrees: the
+// degenerate angle if either face has zero area.
+inline double sheet_slot_angle(const Face_adjacency& adj, std::size_t f, std::size_t k,
+                               const Sheet_merging_thresholds& th)
 {
-  const std::size_t a = std::size_t(get(fim, face(h, tm))), b = std::size_t(get(fim, face(opposite(h, tm), tm)));
-  if(adj.degenerate[a] || adj.degenerate[b]) return th.degenerate_edge_angle;
-  return adj.angle[3 * a + std::size_t(slot_in_face(h, tm))];
+  const std::size_t g = adj.neighbor[3 * f + k];
+  if(adj.degenerate[f] || (g != Face_adjacency::no_face && adj.degenerate[g])) return th.degenerate_edge_angle;
+  return adj.angle[3 * f + k];
 }
 
 // The largest angle of the edges of each face and of its neighbours.
@@ -114,8 +113,7 @@ inline std::vector<double> largest_angle_nearby(const Face_adjacency& adj, const
   const std::size_t n = adj.number_of_faces;
   std::vector<double> near(n, 0.);
   for(std::size_t f = 0; f < n; ++f)
-    for(std::size_t k = 0; k < 3; ++k)
-      near[f] = (std::max)(near[f], adj.degenerate[f] ? th.degenerate_edge_angle : adj.angle[3 * f + k]);
+    for(std::size_t k = 0; k < 3; ++k) near[f] = (std::max)(near[f], sheet_slot_angle(adj, f, k, th));
   std::vector<double> next = near;
   for(std::size_t f = 0; f < n; ++f)
     for(std::size_t k = 0; k < 3; ++k)
@@ -139,18 +137,13 @@ void collect_seam_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const
   {
     const auto h = halfedge(e, tm);
     if(is_border_edge(h, tm)) continue;
-    const double angle = sheet_edge_angle(tm, fim, adj, h, th);
-    angles.push_back(angle);
     const std::size_t fa = std::size_t(get(fim, face(h, tm))), fb = std::size_t(get(fim, face(opposite(h, tm), tm)));
+    const double angle = sheet_slot_angle(adj, fa, std::size_t(slot_in_face(h, tm)), th);
+    angles.push_back(angle);
     const std::size_t pa = part[fa], pb = part[fb];
     if(pa == pb || pa >= K || pb >= K || !sheet[pa] || !sheet[pb]) continue;
-    const auto& s = get(vpm, source(h, tm));
-    const auto& t = get(vpm, target(h, tm));
-    const double dx = CGAL::to_double(s.x()) - CGAL::to_double(t.x());
-    const double dy = CGAL::to_double(s.y()) - CGAL::to_double(t.y());
-    const double dz = CGAL::to_double(s.z()) - CGAL::to_double(t.z());
-    seam.push_back({(std::min)(pa, pb), (std::max)(pa, pb), angle, std::sqrt(dx * dx + dy * dy + dz * dz),
-                    (std::max)({angle, near[fa], near[fb]})});
+    const double length = norm3(sub3(vec3_of(get(vpm, source(h, tm))), vec3_of(get(vpm, target(h, tm)))));
+    seam.push_back({(std::min)(pa, pb), (std::max)(pa, pb), angle, length, (std::max)({angle, near[fa], near[fb]})});
   }
 }
 

@@ -11,6 +11,7 @@
 // The small tools every stage uses: parallel loops, a 3D vector, quantiles, voxel neighbours.
 
 #include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -215,6 +216,12 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b)
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
 inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+// The coordinates of a kernel point (of any number type) as doubles.
+template <typename Point>
+Vec3 vec3_of(const Point& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
 
 // ---- Quantiles, with linear interpolation between order statistics (numpy's default)
 

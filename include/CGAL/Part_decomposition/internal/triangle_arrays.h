@@ -64,8 +64,7 @@ Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const VertexPointMa
   {
     const std::size_t i = std::size_t(get(vim, v));
     CGAL_precondition(i < nv);
-    const auto& p = get(vpm, v);
-    arrays.points[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    arrays.points[i] = vec3_of(get(vpm, v));
   }
   for(auto f : faces(tm))
   {
