@@ -174,11 +174,7 @@ std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, c
   {
     const std::size_t k = part[std::size_t(get(fim, f))];
     if(k >= K) continue;
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
-    {
-      const auto& p = get(vpm, v);
-      points[k].push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
-    }
+    for(auto v : vertices_around_face(halfedge(f, tm), tm)) points[k].push_back(vec3_of(get(vpm, v)));
   }
   std::vector<Superquadric<GeomTraits> > result;
   for(std::size_t k = 0; k < K; ++k)

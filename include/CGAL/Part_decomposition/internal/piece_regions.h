@@ -17,6 +17,7 @@
 
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Union_find.h>
 #include <CGAL/number_utils.h>
@@ -103,11 +104,7 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
   auto corners = [&](std::size_t i) {
     auto h = halfedge(face_of[i], tm);
     std::array<P, 3> c;
-    for(int k = 0; k < 3; ++k, h = next(h, tm))
-    {
-      const auto& p = get(vpm, source(h, tm));
-      c[k] = P{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-    }
+    for(int k = 0; k < 3; ++k, h = next(h, tm)) c[k] = vec3_of(get(vpm, source(h, tm)));
     return c;
   };
   auto edge = [](const std::array<P, 3>& c, int k) {

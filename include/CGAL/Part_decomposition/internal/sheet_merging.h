@@ -167,19 +167,18 @@ std::vector<Vec3> thin_axes(const Superquadric_fitting_result<GeomTraits>& fitti
     {
       const Superquadric<GeomTraits>& q = fitting.primitives[part_to_primitive[k]];
       const std::array<double, 3> a = q.scales();
-      const auto v = q.axis(int(std::min_element(a.begin(), a.end()) - a.begin()));
-      axis[k] = {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
+      axis[k] = vec3_of(q.axis(int(std::min_element(a.begin(), a.end()) - a.begin())));
     }
   return axis;
 }
 
 // The new part of each old part: sheets joined across every seam that is mostly smooth, numbered
-// in order of their first old part; the seam of a fold (thin axes `normal` apart by more than
-// the fold angle) counts the angles near it. Returns the number of new parts.
+// in order of their first old part; the seam of a fold (the two parts' `thin_axis` apart by more
+// than the fold angle) counts the angles near it. Returns the number of new parts.
 inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>& seam, double sharp,
                                                    std::size_t K, const Sheet_merging_thresholds& th,
                                                    std::vector<std::size_t>& old_to_new,
-                                                   const std::vector<Vec3>& normal)
+                                                   const std::vector<Vec3>& thin_axis)
 {
   const double fold_cosine = std::cos(th.fold_angle * CGAL_PI / 180.);
   // the lengths of the seam of each pair of sheets: on sharp edges, near sharp edges, in all
@@ -202,7 +201,7 @@ inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>&
   for(std::size_t k = 0; k < K; ++k) group_of.push_back(groups.make_set(k));
   for(const auto& s : seams)
   {
-    const bool folded = std::abs(dot3(normal[s.first.first], normal[s.first.second])) < fold_cosine;
+    const bool folded = std::abs(dot3(thin_axis[s.first.first], thin_axis[s.first.second])) < fold_cosine;
     const double sharp_length = folded ? s.second.sharp_nearby : s.second.sharp;
     if(sharp_length < th.sharp_seam_fraction * s.second.total)
       groups.unify_sets(group_of[s.first.first], group_of[s.first.second]);
