@@ -295,14 +295,6 @@ void make_paper_literal(Variant& v)
   v.patch_split_size = 1.;
 }
 
-// The 128 grid for the distance field, the zones and the claims only: fits at 32, score at 32 and 64.
-void make_fine_field_only(Variant& v)
-{
-  v.voxel_resolutions = {32, 64, 128};
-  v.fitting_resolution_cap = 32;
-  v.prior_resolution_cap = 64;
-}
-
 std::vector<Variant> all_variants()
 {
   std::vector<Variant> v;
@@ -391,17 +383,15 @@ std::vector<Variant> all_variants()
   lengths->vote_temperature *= 2.;
   lengths->boundary_smoothness *= 2.;
   lengths->residual_tolerance *= 2.;
-  // r128_fit32 with the topology score at 32 and 64 only: the 128 grid refines the field, not the prior
-  make_fine_field_only(*add("r128_fit32_prior64"));
-  // the thin parts of that finer pass on the parts of the defaults
-  add("thin_parts_128")->thin_part_resolution = 128;
+  // the grid: the paper's dense grid of the finest voxel resolution, no leaf finer than it, leaves to 256
+  add("uniform")->adaptive_grid = false;
+  add("grid64")->grid_resolution = 64;
+  add("grid256")->grid_resolution = 256;
+  for(double t : {4., 6.}) add("trunc" + std::to_string(int(t)))->tsdf_truncation = t;
   // the parts of the assignment, without the hierarchy's merges below maximum_merge_cost
   add("no_cost_merge")->maximum_merge_cost = 0.;
   // the threshold of the hierarchy's merges, in thousandths of the bounding box volume
   for(int t : {1, 2, 5, 8, 12}) add("merge_cost_" + std::to_string(t))->maximum_merge_cost = t / 1000.;
-  Variant* r128_no_cost = add("r128_fit32_prior64_no_cost_merge");
-  make_fine_field_only(*r128_no_cost);
-  r128_no_cost->maximum_merge_cost = 0.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
   add("no_primitive_merge")->merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;

@@ -131,7 +131,7 @@ const Alias aliases[] = {
   {"--no-pieces", "use_pieces", "false"}, {"--min-part-area", "minimum_part_area", nullptr},
   {"--resolutions", "voxel_resolutions", nullptr}, {"--samples-per-face", "number_of_points_per_face", nullptr},
   {"--neighbors", "number_of_neighbors", nullptr}, {"--no-density", "use_density", "false"},
-  {"--prior-cap", "prior_resolution_cap", nullptr}, {"--margin", "normalization_margin", nullptr},
+  {"--margin", "normalization_margin", nullptr},
   {"--truncation", "tsdf_truncation", nullptr}, {"--sign-method", "tsdf_sign_method", nullptr},
   {"--flow-tolerance", "flow_zone_tolerance", nullptr}, {"--min-body-volume", "minimum_body_volume", nullptr},
   {"--min-surface-volume", "minimum_surface_volume", nullptr}, {"--coverage", "coverage_target", nullptr},
@@ -544,8 +544,7 @@ void print_timings(const std::string& name, const Mesh& mesh, const Result& r, d
   std::cerr << std::fixed << std::setprecision(3) << name << ": " << num_faces(mesh) << " faces, "
             << r.parts << " parts; seconds: read " << read_seconds << ", prior " << t.prior << ", tsdf "
             << t.tsdf << ", fitting " << t.fitting << ", over-segmentation " << t.over_segmentation
-            << ", assignment " << t.assignment << ", hierarchy " << t.hierarchy << ", thin parts " << t.thin_parts
-            << ", total " << t.total << std::endl;
+            << ", assignment " << t.assignment << ", hierarchy " << t.hierarchy << ", total " << t.total << std::endl;
 }
 
 // What the reader did to the file, for --verbose.

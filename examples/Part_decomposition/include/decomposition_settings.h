@@ -44,10 +44,11 @@ namespace PD = CGAL::Part_decomposition;
   X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                \
   X(double, freeze_ratio, PD::defaults::freeze_ratio)                                      \
   X(bool, use_density, PD::defaults::use_density)                                          \
-  X(int, prior_resolution_cap, PD::defaults::prior_resolution_cap)                         \
   X(double, normalization_margin, PD::defaults::normalization_margin)                      \
   X(double, tsdf_truncation, PD::defaults::tsdf_truncation)                                \
   X(PD::Tsdf_sign_method, tsdf_sign_method, PD::defaults::tsdf_sign_method)                \
+  X(int, grid_resolution, PD::defaults::grid_resolution)                                   \
+  X(bool, adaptive_grid, PD::defaults::adaptive_grid)                                      \
   X(double, flow_zone_tolerance, PD::defaults::flow_zone_tolerance)                        \
   X(std::vector<double>, trust_region_scales, PD::defaults::trust_region_scales())         \
   X(double, body_seed_threshold, PD::defaults::body_seed_threshold)                        \
@@ -78,8 +79,7 @@ namespace PD = CGAL::Part_decomposition;
   X(bool, keep_residual_patches, PD::defaults::keep_residual_patches)                      \
   X(double, residual_tolerance, PD::defaults::residual_tolerance)                          \
   X(bool, merge_thin_sheets, PD::defaults::merge_thin_sheets)                              \
-  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)                          \
-  X(int, thin_part_resolution, PD::defaults::thin_part_resolution)
+  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)
 // end of the settings
 
 typedef std::array<double, 4> PD_cue_weights; // a macro argument cannot hold the comma

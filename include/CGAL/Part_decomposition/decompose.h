@@ -53,13 +53,12 @@ struct Stage_timings
 {
   double pieces = 0.;            ///< pieces and their regions between concave creases
   double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
-  double tsdf = 0.;              ///< truncated signed distance field
+  double tsdf = 0.;              ///< the adaptive grid and the truncated signed distance field on it
   double fitting = 0.;           ///< fitting zones and superquadric fitting
   double fitting_zones = 0.;     ///< of which the fitting zones
   double over_segmentation = 0.; ///< curvature-aware over-segmentation
   double assignment = 0.;        ///< assignment, thin-sheet merge and composition with the pieces
   double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
-  double thin_parts = 0.;        ///< the finer pass of `thin_part_resolution` and its thin parts (0 without it)
   double total = 0.;             ///< the whole call, input checks included
   /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
   /// overlap and their sum exceeds `total`.
@@ -105,32 +104,28 @@ struct Stage_results
 };
 
 // The volumetric stages; returns whether the primitives were fitted (not if the distance field
-// shows that no piece bounds a volume). The fitting's own loops are short (one primitive at a
-// time), so its sequential part is the longest of the pipeline: the over-segmentation runs next
-// to it. The prior runs next to the distance field if `volume_expected`, else only once the field
-// shows a volume: an assembly of sheets then costs no prior. Either way the results are the same.
+// shows that no piece bounds a volume). The distance field is computed on the grid the prior asks
+// for. The fitting's own loops are short (one primitive at a time), so its sequential part is the
+// longest of the pipeline: the over-segmentation runs next to the volume stages.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces, bool volume_expected,
-                           Stage_results<GT>& s, Stage_timings& t)
+bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces, Stage_results<GT>& s,
+                           Stage_timings& t)
 {
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   bool fitted = false;
   s.volumetric.patches.assign(num_faces(tm), 0);
-  auto prior = [&] { add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); }); };
-  auto tsdf = [&] { add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf<ConcurrencyTag>(tm, np); }); };
   run_side_by_side<ConcurrencyTag>(
     [&] {
-      if(volume_expected) run_side_by_side<ConcurrencyTag>(prior, tsdf);
-      else tsdf();
+      add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); });
+      add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf_of_checked_mesh<ConcurrencyTag>(tm, &s.prior, np); });
       if(use_pieces)
       {
         s.volumetric_pieces = Part_decomposition::volumetric_pieces<ConcurrencyTag>(tm, s.pieces, s.tsdf, np);
         if(!any_of_flags(s.volumetric_pieces)) return;
       }
-      if(!volume_expected) prior();
       const int cap = read_fitting_parameters(np).fitting_resolution_cap;
       add_seconds(t.fitting_zones, [&] {
-        s.zones = compute_fitting_zones<ConcurrencyTag>(s.prior.classes, s.tsdf,
+        s.zones = compute_fitting_zones<ConcurrencyTag>(s.prior, s.tsdf,
                                                         fitting_resolutions(s.prior.resolutions, cap), np);
       });
       add_seconds(t.fitting, [&] { s.fitting = fit_superquadrics<ConcurrencyTag, GT>(s.prior, s.tsdf, s.zones, np); });
@@ -157,45 +152,12 @@ void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fit
     v.parts.assign(num_faces(tm), 0);
     const auto part_map = boost::make_iterator_property_map(v.parts.begin(), fim);
     v.part_to_primitive = assign_parts<ConcurrencyTag>(
-      tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.fitting.normalization,
-      part_map, np);
+      tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.tsdf, part_map, np);
     if(read_assignment_parameters(np).keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
     if(read_sheet_merging_parameters(np).merge_thin_sheets)
       merge_thin_sheet_parts<ConcurrencyTag>(tm, part_map, v.part_to_primitive, s.fitting, s.tsdf, np);
   }
   s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
-}
-
-// Per piece, whether it most likely bounds a volume of the distance field: it is closed or nearly
-// so, as a scan with a few holes (at most 2% of its edges are border edges, none for a closed
-// piece), and its bounding box spans at least a voxel of the finest grid on every axis (a thinner
-// plate has the outside one voxel away on both sides of its faces).
-template <typename TriangleMesh, typename NamedParameters>
-std::vector<std::uint8_t> likely_volume_pieces(const TriangleMesh& tm, const NamedParameters& np,
-                                               const Piece_segmentation& pieces)
-{
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const std::size_t n = pieces.number_of_pieces;
-  std::vector<std::size_t> border(n, 0), edges(n, 0);
-  std::vector<CGAL::Bbox_3> box(n);
-  for(auto f : faces(tm))
-  {
-    const std::size_t q = pieces.piece[std::size_t(get(maps.fim, f))];
-    for(auto h : halfedges_around_face(halfedge(f, tm), tm))
-    {
-      ++edges[q];
-      if(is_border(opposite(h, tm), tm)) ++border[q];
-      box[q] += get(maps.vpm, target(h, tm)).bbox();
-    }
-  }
-  const double voxel = 1. / (read_normalization(tm, np).scale() * double(read_voxel_resolutions(np).back()));
-  std::vector<std::uint8_t> result(n, 0);
-  for(std::size_t q = 0; q < n; ++q)
-  {
-    const double thinnest = (std::min)({box[q].x_span(), box[q].y_span(), box[q].z_span()});
-    result[q] = 50 * border[q] <= edges[q] && thinnest >= voxel;
-  }
-  return result;
 }
 
 // The parts of one decomposition: per face index its part, per part its superquadric.
@@ -206,26 +168,19 @@ struct Decomposition_pass
   std::vector<Superquadric<GeomTraits> > primitives;
   std::size_t number_of_parts = 0;
   std::size_t default_number_of_parts = 0; // at the default granularity (maximum_merge_cost)
-  double scale = 1.; // of the normalization: mesh lengths times this are lengths in the unit cube
 };
 
 // The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
-// it is not that of the composed parts. Without `as_requested` (a finer pass), `number_of_parts`
-// and `part_hierarchy` are ignored: the parts are those of the default granularity.
+// it is not that of the composed parts.
 template <typename GT, typename TriangleMesh, typename NamedParameters>
-void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, bool as_requested, Stage_results<GT>& s,
+void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
                    Decomposition_pass<GT>& out, Stage_timings& t)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  Hierarchy_parameters hp = read_hierarchy_parameters(np);
+  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
   Part_hierarchy<GT>* hierarchy_out =
     choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  if(!as_requested)
-  {
-    hp.has_number_of_parts = false;
-    hierarchy_out = nullptr;
-  }
   const std::size_t composed = s.composed.number_of_parts();
   std::size_t K = composed;
   out.default_number_of_parts = composed;
@@ -254,11 +209,10 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, bool as_re
   out.number_of_parts = K;
 }
 
-// `decompose()` at the resolutions of `np`, without the finer pass of `thin_part_resolution`: the
-// stage functions in their documented order, their results left in `s`. `np` holds the
-// normalization; `as_requested`: see cut_hierarchy().
+// `decompose()`: the stage functions in their documented order, their results left in `s`. `np`
+// holds the normalization.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const NamedParameters& np, bool as_requested, Stage_results<GT>& s,
+void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
                     Decomposition_pass<GT>& out, Stage_timings& timings)
 {
   timings.overlapping = is_parallel_tag<ConcurrencyTag>();
@@ -271,34 +225,11 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, bool as_r
     splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
   });
   const bool needs_volume = !use_pieces || any_of_flags(splittable);
-  bool volume_expected = !use_pieces;
-  if(use_pieces && needs_volume)
-  {
-    const std::vector<std::uint8_t> likely = likely_volume_pieces(tm, np, s.pieces);
-    for(std::size_t q = 0; q < splittable.size(); ++q) volume_expected = volume_expected || (splittable[q] && likely[q]);
-  }
-  const bool fitted =
-    needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, volume_expected, s, timings);
+  const bool fitted = needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, s, timings);
   add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
-  cut_hierarchy(tm, np, as_requested, s, out, timings);
-  out.scale = read_normalization(tm, np).scale();
+  cut_hierarchy(tm, np, s, out, timings);
 }
 
-// The parameters of one pass: `np` with its resolutions, caps and normalization given explicitly,
-// so that both passes of `thin_part_resolution` have one type (one instantiation of the pipeline).
-template <typename NamedParameters>
-auto pass_parameters(const NamedParameters& np, const std::vector<int>& resolutions, int fitting_cap, int prior_cap,
-                     const Normalization& normalization)
-{
-  return parameters::combine(np, parameters::voxel_resolutions(resolutions),
-                             parameters::fitting_resolution_cap(fitting_cap),
-                             parameters::prior_resolution_cap(prior_cap), parameters::normalization(normalization));
-}
-
-// A part of the finer pass is thin if its superquadric's smallest semi-axis is below this length
-// of the normalized cube (5 voxels of the default 64^3 grid; tuned on half A of the development
-// shapes, see benchmark/Part_decomposition/RESULTS.md).
-constexpr double thin_part_semi_axis = 5. / 64.;
 } // namespace internal
 
 /*!
@@ -428,24 +359,30 @@ public:
     return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
   }
 
-  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`.
+  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`; the distance
+  /// field, whose grid the prior shapes, is then out of date.
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
   {
     m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
     m_has_prior = true;
+    m_has_tsdf = false;
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
     drop_fitting();
     return m_s.prior;
   }
 
-  /// computes the truncated signed distance field with `compute_tsdf()`; once the pieces are
-  /// segmented too, an open piece that bounds a volume of it faces out of it (`volumetric_pieces()`).
+  /// computes the truncated signed distance field with `compute_tsdf()` on the grid the prior
+  /// asks for, computing the prior if missing; once the pieces are segmented too, an open piece
+  /// that bounds a volume of it faces out of it (`volumetric_pieces()`).
   template <typename ConcurrencyTag = CGAL::Sequential_tag,
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, with_mesh(np));
+    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
+    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np));
     m_has_tsdf = true;
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
@@ -465,7 +402,7 @@ public:
     if(!m_has_tsdf) compute_distance_field<ConcurrencyTag>(np);
     const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
     m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_s.prior.classes, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
+      m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
     m_has_zones = true;
     drop_fitting(false);
     return m_s.zones;
@@ -606,7 +543,7 @@ public:
   const Fitting_zones& fitting_zones() const { return m_s.zones; }
   /// the distance field.
   const Truncated_signed_distance_field& distance_field() const { return m_s.tsdf; }
-  /// the fitted primitives and claimed voxels.
+  /// the fitted primitives and claimed leaves.
   const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_s.fitting; }
   /// the patch of each face, indexed by the face index map.
   const std::vector<std::size_t>& patches() const { return m_s.volumetric.patches; }
@@ -679,121 +616,6 @@ private:
   bool m_has_pieces = false, m_has_prior = false, m_has_tsdf = false, m_has_zones = false, m_has_fitting = false,
        m_has_patches = false, m_has_parts = false, m_has_hierarchy = false;
 };
-
-namespace internal {
-
-// Per part of `finer`, 1 + its rank among the thin parts (smallest semi-axis below
-// thin_part_semi_axis), or 0; `number_of_thin` receives their number.
-template <typename GT>
-std::vector<std::size_t> thin_part_ranks(const Decomposition_pass<GT>& finer, std::size_t& number_of_thin)
-{
-  std::vector<std::size_t> thin(finer.number_of_parts, 0);
-  number_of_thin = 0;
-  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
-  {
-    const std::array<double, 3> a = finer.primitives[k].scales();
-    if((std::min)({a[0], a[1], a[2]}) * finer.scale < thin_part_semi_axis) thin[k] = ++number_of_thin;
-  }
-  return thin;
-}
-
-// The thin parts of `finer` replace, face by face, the parts of `pass`, each with its superquadric:
-// the parts of `pass` keep their order (those left without faces are dropped), the thin parts
-// follow in the order of `finer`.
-template <typename GT>
-void carve_thin_parts(Decomposition_pass<GT>& pass, const Decomposition_pass<GT>& finer)
-{
-  const std::size_t K = pass.number_of_parts, nf = pass.parts.size();
-  std::size_t number_of_thin = 0;
-  const std::vector<std::size_t> thin = thin_part_ranks(finer, number_of_thin);
-  if(number_of_thin == 0) return;
-  std::vector<std::size_t> part(nf);
-  std::vector<std::uint8_t> used(K, 0);
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    const std::size_t t = thin[finer.parts[i]];
-    part[i] = t > 0 ? K + t - 1 : pass.parts[i];
-    if(t == 0) used[pass.parts[i]] = 1;
-  }
-  std::vector<std::size_t> new_id(K + number_of_thin);
-  std::vector<Superquadric<GT> > primitives;
-  for(std::size_t k = 0; k < K; ++k)
-    if(used[k]) { new_id[k] = primitives.size(); primitives.push_back(pass.primitives[k]); }
-  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
-    if(thin[k] > 0) { new_id[K + thin[k] - 1] = primitives.size(); primitives.push_back(finer.primitives[k]); }
-  for(std::size_t i = 0; i < nf; ++i) pass.parts[i] = new_id[part[i]];
-  pass.primitives.swap(primitives);
-  pass.number_of_parts = pass.primitives.size();
-}
-
-// The thin parts of `finer` carved out of the composed parts `c`, face by face, as
-// carve_thin_parts() does for the parts: each is a part and a group of its own, with its
-// superquadric (and no primitive of the fitting), whose leaves are the leaves it cuts.
-template <typename GT>
-void carve_thin_parts(Composed_parts<GT>& c, const Decomposition_pass<GT>& finer)
-{
-  std::size_t number_of_thin = 0;
-  const std::vector<std::size_t> thin = thin_part_ranks(finer, number_of_thin);
-  if(number_of_thin == 0) return;
-  const std::size_t K = c.number_of_parts(), nf = c.parts.size();
-  const std::size_t groups = 1 + *std::max_element(c.part_groups.begin(), c.part_groups.end());
-  std::vector<std::pair<std::size_t, std::size_t> > leaf_key(nf);
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    const std::size_t t = thin[finer.parts[i]];
-    leaf_key[i] = {c.finest_parts[i], t};
-    if(t == 0) continue;
-    c.parts[i] = K + t - 1;
-    c.part_groups[i] = groups + t - 1;
-  }
-  // the leaves: (old leaf, thin part) pairs
-  index_of_keys(leaf_key, c.finest_parts);
-  c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
-  // the parts, with their primitives, renumbered by first face
-  std::vector<Superquadric<GT> > primitives(c.part_primitives);
-  std::vector<std::size_t> to_primitive(c.part_to_primitive);
-  std::vector<std::uint8_t> residual(c.residual_parts);
-  primitives.resize(K + number_of_thin);
-  to_primitive.resize(K + number_of_thin, no_primitive);
-  residual.resize(K + number_of_thin, 0);
-  for(std::size_t k = 0; k < finer.number_of_parts; ++k)
-    if(thin[k] > 0) primitives[K + thin[k] - 1] = finer.primitives[k];
-  std::vector<std::size_t> old_of;
-  renumber_by_first_face(c.parts, &old_of);
-  c.part_primitives.clear();
-  c.part_to_primitive.clear();
-  c.residual_parts.clear();
-  for(std::size_t old : old_of)
-  {
-    c.part_primitives.push_back(primitives[old]);
-    c.part_to_primitive.push_back(to_primitive[old]);
-    c.residual_parts.push_back(residual[old]);
-  }
-}
-
-// The resolution of the finer pass (0: none), checked: a power of two up to 256, at least twice
-// the finest of `voxel_resolutions`, and not with a `part_hierarchy` without `number_of_parts`
-// (the hierarchy is then that of one pass). With `number_of_parts`, 0 stands for twice the finest
-// resolution (none outside 4 to 256): the finer pass runs if at least two parts and at least the
-// default number of parts of the first pass are asked.
-template <typename TriangleMesh, typename NamedParameters>
-int read_thin_part_resolution(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const int finest = read_voxel_resolutions(np).back();
-  const bool told = read_hierarchy_parameters(np).has_number_of_parts;
-  const int r = choose_parameter(get_parameter(np, internal_np::thin_part_resolution), defaults::thin_part_resolution);
-  if(r == 0) return told && 2 * finest >= 4 && 2 * finest <= 256 ? 2 * finest : 0;
-  check_parameter(r >= 4 && r <= 256 && (r & (r - 1)) == 0 && r >= 2 * finest, "thin_part_resolution");
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
-  check_parameter(told || choose_parameter(get_parameter(np, internal_np::part_hierarchy),
-                                           static_cast<Part_hierarchy<GT>*>(nullptr)) == nullptr,
-                  "thin_part_resolution", "0 when a part_hierarchy is asked without number_of_parts");
-  return r;
-}
-
-} // namespace internal
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -1210,46 +1032,19 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   const auto t0 = std::chrono::steady_clock::now();
-  const int fine = internal::read_thin_part_resolution<TriangleMesh>(np);
   check_input(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  // the normalization of both passes; a given one must be it
+  // the normalization of every stage; a given one must be it
   const Normalization normalization = compute_normalization(tm, np);
   internal::check_parameter(
     internal::same_frame(choose_parameter(get_parameter(np, internal_np::normalization), normalization), normalization),
     "normalization", "the one computed from normalization_margin (same center and scale)");
   internal::check_stage_parameters(np);
-  const int prior_cap =
-    int(choose_parameter(get_parameter(np, internal_np::prior_resolution_cap), defaults::prior_resolution_cap));
   Stage_timings timings;
   internal::Decomposition_pass<GT> pass;
   internal::Stage_results<GT> s;
-  internal::decompose_once<ConcurrencyTag>(
-    tm, internal::pass_parameters(np, internal::read_voxel_resolutions(np),
-                                  internal::read_fitting_parameters(np).fitting_resolution_cap, prior_cap, normalization),
-    true, s, pass, timings);
-  const internal::Hierarchy_parameters hp = internal::read_hierarchy_parameters(np);
-  // told at least the parts of the default granularity, the count is trusted: thin parts of the
-  // finer pass are candidates, and the hierarchy merges down to it
-  const bool told_more =
-    hp.has_number_of_parts && hp.number_of_parts >= 2 && hp.number_of_parts >= pass.default_number_of_parts;
-  if(fine > 0 && (!hp.has_number_of_parts || told_more))
-    internal::add_seconds(timings.thin_parts, [&] {
-      internal::Decomposition_pass<GT> finer;
-      internal::Stage_results<GT> finer_stages;
-      Stage_timings finer_timings;
-      internal::decompose_once<ConcurrencyTag>(
-        tm, internal::pass_parameters(np, {fine / 4, fine / 2, fine}, fine / 4, fine / 2, normalization), false,
-        finer_stages, finer, finer_timings);
-      if(!hp.has_number_of_parts)
-        internal::carve_thin_parts(pass, finer);
-      else
-      {
-        // the tree of the first pass's parts with the thin ones carved out, cut at the count
-        internal::carve_thin_parts(s.composed, finer);
-        internal::cut_hierarchy(tm, np, true, s, pass, finer_timings);
-      }
-    });
+  internal::decompose_once<ConcurrencyTag>(tm, parameters::combine(np, parameters::normalization(normalization)), s,
+                                           pass, timings);
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;

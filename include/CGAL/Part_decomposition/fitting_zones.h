@@ -8,10 +8,11 @@
 #ifndef CGAL_PART_DECOMPOSITION_FITTING_ZONES_H
 #define CGAL_PART_DECOMPOSITION_FITTING_ZONES_H
 
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/leaf_distance.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
@@ -63,51 +64,96 @@ Fitting_zone_parameters read_fitting_zone_parameters(const NamedParameters& np)
   return p;
 }
 
+// The fused prior on the leaves of `grid`. A leaf as fine as the prior's finest voxels or finer
+// takes the resolution of the prior voxel that holds it if that voxel holds a sample, and its
+// class: the whole of a Freeze voxel is Freeze, a Flow voxel carries the surface only in its
+// leaves the surface may cross (their centre within half their diagonal of it). A coarser leaf
+// holds the prior voxels of its box: Freeze if one is, and the finest of their resolutions.
+inline void project_prior_on_leaves(const Hierarchical_prior& prior, const Adaptive_grid& grid,
+                                    const std::vector<double>& field, Fitting_zones& zones)
+{
+  const Voxel_grid<Voxel_class>& classes = prior.classes;
+  const int r = classes.resolution(), D = Adaptive_grid::depth_of(grid.finest_resolution());
+  const int shift = D - Adaptive_grid::depth_of(r);
+  const std::size_t n = grid.number_of_leaves();
+  zones.classes.assign(n, Voxel_class::EMPTY);
+  zones.leaf_resolution.assign(n, 0);
+  for(std::size_t l = 0; l < n; ++l)
+  {
+    const bool crossed = std::abs(field[l]) <= 0.5 * std::sqrt(3.) * grid.size(l) * (1. + 1e-9);
+    const Adaptive_grid::Voxel& c = grid.corner(l);
+    const int w = int(grid.width(l) >> shift); // in prior voxels, 0 for a finer leaf
+    const int i0 = int(c[0] >> shift), j0 = int(c[1] >> shift), k0 = int(c[2] >> shift);
+    if(w == 0)
+    {
+      const std::size_t v = classes.index(i0, j0, k0);
+      zones.leaf_resolution[l] = prior.leaf_resolution[v];
+      if(classes[v] == Voxel_class::FREEZE || (classes[v] == Voxel_class::FLOW && crossed)) zones.classes[l] = classes[v];
+      continue;
+    }
+    if(!crossed) continue;
+    Voxel_class cls = Voxel_class::EMPTY;
+    std::uint16_t res = 0;
+    for(int k = k0; k < k0 + w; ++k)
+      for(int j = j0; j < j0 + w; ++j)
+        for(int i = i0; i < i0 + w; ++i)
+        {
+          const std::size_t v = classes.index(i, j, k);
+          if(classes[v] == Voxel_class::EMPTY) continue;
+          if(cls != Voxel_class::FREEZE) cls = classes[v];
+          res = (std::max)(res, prior.leaf_resolution[v]);
+        }
+    zones.classes[l] = cls;
+    zones.leaf_resolution[l] = res;
+  }
+}
+
 // compute_fitting_zones() with its parameters read.
 template <typename ConcurrencyTag>
-Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes, const Voxel_grid<double>& field,
+Fitting_zones compute_fitting_zones(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf,
                                     const std::vector<int>& fitting_resolutions, const Fitting_zone_parameters& parameters)
 {
   static_check_concurrency_tag<ConcurrencyTag>();
   for(int r_fit : fitting_resolutions) check_parameter(r_fit > 0, "fitting_resolutions", "positive");
-  check_parameter(field.resolution() == classes.resolution(), "the distance field",
-                  "of the resolution of the classes");
-
-  const int r = classes.resolution();
+  const Adaptive_grid& grid = tsdf.grid;
+  check_parameter(tsdf.values.size() == grid.number_of_leaves() && prior.classes.resolution() > 0 &&
+                    grid.finest_resolution() >= prior.classes.resolution(),
+                  "the distance field", "computed on a grid at least as fine as the prior");
   Fitting_zones zones;
-  zones.occupied = Voxel_grid<std::uint8_t>(r, 0);
-  zones.exterior = Voxel_grid<std::uint8_t>(r, 0);
+  project_prior_on_leaves(prior, grid, tsdf.values, zones);
+  const std::size_t n = grid.number_of_leaves();
+  zones.occupied.assign(n, 0);
+  zones.exterior.assign(n, 0);
+  double occupied_reach = 0.; // the largest half diagonal of an occupied leaf
   // The exterior is what the distance field's sign puts outside, not the flood fill of the
   // paper's fillholes(): a hole in the surface would let the fill into the interior.
-  for(std::size_t i = 0; i < classes.size(); ++i)
+  for(std::size_t l = 0; l < n; ++l)
   {
-    zones.occupied[i] = classes[i] != Voxel_class::EMPTY ? 1 : 0;
-    zones.exterior[i] = (zones.occupied[i] == 0 && !std::signbit(field[i])) ? 1 : 0;
+    zones.occupied[l] = zones.classes[l] != Voxel_class::EMPTY ? 1 : 0;
+    zones.exterior[l] = (zones.occupied[l] == 0 && !std::signbit(tsdf.values[l])) ? 1 : 0;
+    if(zones.occupied[l]) occupied_reach = (std::max)(occupied_reach, 0.5 * std::sqrt(3.) * grid.size(l));
   }
   zones.freeze_zone = zones.exterior;
   if(parameters.use_freeze_zone)
-    for(std::size_t i = 0; i < classes.size(); ++i)
-      if(classes[i] == Voxel_class::FREEZE) zones.freeze_zone[i] = 1;
+    for(std::size_t l = 0; l < n; ++l)
+      if(zones.classes[l] == Voxel_class::FREEZE) zones.freeze_zone[l] = 1;
 
-  // One distance transform of the hull serves every dilation radius.
-  const Voxel_grid<double> to_hull = squared_distance_transform<ConcurrencyTag>(complement(zones.exterior));
+  // One search of the hull serves every dilation radius. An exterior leaf farther from the
+  // surface than the radius plus the reach of an occupied leaf is farther from every hull centre.
+  const double voxel = 1. / double(prior.classes.resolution());
+  double largest = 0.;
+  for(int r_fit : fitting_resolutions) largest = (std::max)(largest, parameters.flow_zone_tolerance / double(r_fit));
+  const std::vector<double> to_hull = leaf_squared_distances<ConcurrencyTag>(
+    grid, [&](std::size_t l) { return zones.exterior[l] == 0; },
+    [&](std::size_t l) { return tsdf.values[l] < largest + occupied_reach + voxel; });
   for(int r_fit : fitting_resolutions)
   {
     if(zones.flow_zone.count(r_fit) != 0) continue;
-    const double radius = parameters.flow_zone_tolerance * double(r) / double(r_fit);
-    const double limit = radius * radius * (1. + 1e-12) + 1e-9; // as in internal::dilate()
-    Voxel_grid<std::uint8_t> flow(r, 0), outside(r, 0);
-    for(std::size_t i = 0; i < flow.size(); ++i)
-    {
-      flow[i] = to_hull[i] <= limit ? 1 : 0;
-      outside[i] = 1 - flow[i];
-    }
-    const Voxel_grid<double> d2 = squared_distance_transform<ConcurrencyTag>(outside, true);
-    Voxel_grid<double> distance(r, 0.);
-    for(std::size_t i = 0; i < distance.size(); ++i)
-      if(flow[i] != 0) distance[i] = std::sqrt(d2[i]) / double(r);
+    const double radius = parameters.flow_zone_tolerance / double(r_fit);
+    const double limit = radius * radius * (1. + 1e-12) + 1e-9 * voxel * voxel; // as in internal::dilate()
+    std::vector<std::uint8_t> flow(n, 0);
+    for(std::size_t l = 0; l < n; ++l) flow[l] = to_hull[l] <= limit ? 1 : 0;
     zones.flow_zone.emplace(r_fit, std::move(flow));
-    zones.flow_zone_distance.emplace(r_fit, std::move(distance));
   }
   return zones;
 }
@@ -135,19 +181,22 @@ inline std::vector<int> fitting_resolutions(const std::vector<int>& resolutions,
 /*!
 \ingroup PkgPartDecompositionRef
 builds the volumetric zones of the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2 lines 1-4)
-from the fused Flow/Freeze classes on the finest grid, of resolution `r = classes.resolution()`,
-and the sign of the distance field `tsdf` on the same grid:
+on the leaves of the grid of the distance field `tsdf`, from the fused Flow/Freeze prior `prior`
+and the sign of the field:
 
-- `occupied` = `FLOW` or `FREEZE` voxels;
-- `exterior` (`ext_void`) = the voxels that are not occupied and whose centre the distance field
+- `classes` and `leaf_resolution`: the prior projected on the leaves. A leaf as fine as the
+  prior's finest voxels or finer takes the class and fused resolution \f$\mathcal{R}_{map}\f$ of
+  the prior voxel that holds it, if that voxel holds a surface sample and, for a finer leaf, if
+  the surface may cross the leaf (its centre lies within half its diagonal of the surface); a
+  coarser leaf holds the prior voxels of its box: it is `FREEZE` if one of them is, `FLOW` if
+  one holds a sample, and takes the finest of their resolutions;
+- `occupied` = `FLOW` or `FREEZE` leaves;
+- `exterior` (`ext_void`) = the leaves that are not occupied and whose centre the distance field
   puts outside (a non-negative value);
-- `freeze_zone` = `FREEZE` voxels or `exterior` (`exterior` only if `use_freeze_zone` is `false`);
-- for each \f$r_{fit}\f$ of `fitting_resolutions`: `flow_zone[r_fit]` = the voxels whose centre is
-  within \f$t \cdot r / r_{fit}\f$ voxels (Euclidean, between voxel centres) of a non-exterior voxel,
-  \f$t\f$ being the Flow-zone tolerance in voxels of \f$r_{fit}\f$; and `flow_zone_distance[r_fit]`
-  = the Euclidean distance, in normalized units, from the centre of each voxel of the Flow zone to
-  the centre of the nearest voxel outside it (the layer just outside the grid counts as outside),
-  0 outside the zone.
+- `freeze_zone` = `FREEZE` leaves or `exterior` (`exterior` only if `use_freeze_zone` is `false`);
+- for each \f$r_{fit}\f$ of `fitting_resolutions`: `flow_zone[r_fit]` = the leaves whose centre is
+  within \f$t / r_{fit}\f$ (Euclidean, between leaf centres) of the centre of a non-exterior leaf,
+  \f$t\f$ being the Flow-zone tolerance in voxels of \f$r_{fit}\f$.
 
 The paper takes the exterior as the complement of `fillholes(occupied)`, the unoccupied voxels that
 a flood fill reaches from the border of the grid. A hole in the surface wider than a voxel lets
@@ -157,19 +206,19 @@ differ only where an outside pocket is walled off by occupied voxels (a gap narr
 such as between two fingers), which the fill takes as inside; the
 `Tsdf_sign_method::FLOOD_FILL` sign is the paper's rule; `benchmark/Part_decomposition/RESULTS.md` measures both.
 
-The morphology is exact (linear-time Euclidean distance transforms) and deterministic.
+The distances between leaf centres are found in a kd-tree of the non-exterior leaves next to the
+exterior; on a uniform grid they are exact.
 
 \par Complexity
-Linear in the number of voxels \f$r^3\f$ for each distinct fitting resolution (exact linear-time
-Euclidean distance transforms).
+\f$O(n \log n)\f$ for the \f$n\f$ leaves of the grid.
 
 \tparam ConcurrencyTag enables sequential versus parallel computation (`CGAL::Sequential_tag`,
         `CGAL::Parallel_tag`, `CGAL::Parallel_if_available_tag`); the result does not depend on it.
 \tparam NamedParameters a sequence of named parameters
 
-\param classes the class of every voxel of the finest grid (the hierarchical prior projected on it)
-\param tsdf the distance field of the shape on the same grid (`compute_tsdf()`): its sign tells the
-       inside from the outside
+\param prior the Flow/Freeze prior of the shape (`compute_flow_freeze_prior()`)
+\param tsdf the distance field of the shape on its adaptive grid (`compute_tsdf()`): its sign tells
+       the inside from the outside
 \param fitting_resolutions the fitting resolutions \f$r_{fit}\f$ (paper: \f$\min(r, 32)\f$ for
        \f$r \in \{16, 32, 64\}\f$, i.e.\ 16 and 32)
 \param np an optional sequence of named parameters among the ones listed below
@@ -182,28 +231,26 @@ Euclidean distance transforms).
     \cgalParamDefault{`2.0`}
   \cgalParamNEnd
   \cgalParamNBegin{use_freeze_zone}
-    \cgalParamDescription{whether `FREEZE` voxels belong to the Freeze zone; `false` leaves the
+    \cgalParamDescription{whether `FREEZE` leaves belong to the Freeze zone; `false` leaves the
                           exterior only (the paper's "w/o Freeze" ablation)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the zones; `flow_zone` and `flow_zone_distance` have one entry per distinct fitting
-          resolution.
+\returns the zones; `flow_zone` has one entry per distinct fitting resolution.
 
 \throws Invalid_input with `Input_error::INVALID_PARAMETER` if a fitting resolution is not
-        positive, the tolerance is negative or not finite, or the distance field has another
-        resolution than `classes`.
+        positive, the tolerance is negative or not finite, or the grid of the distance field is
+        coarser than the prior's finest resolution.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Fitting_zones compute_fitting_zones(const Voxel_grid<Voxel_class>& classes,
-                                    const Truncated_signed_distance_field& tsdf,
+Fitting_zones compute_fitting_zones(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf,
                                     const std::vector<int>& fitting_resolutions,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::compute_fitting_zones<ConcurrencyTag>(classes, tsdf.values, fitting_resolutions,
+  return internal::compute_fitting_zones<ConcurrencyTag>(prior, tsdf, fitting_resolutions,
                                                          internal::read_fitting_zone_parameters(np));
 }
 

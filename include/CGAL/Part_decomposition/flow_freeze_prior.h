@@ -15,7 +15,7 @@
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/topology_score.h>
-#include <CGAL/Part_decomposition/internal/Flow_freeze_octree.h>
+#include <CGAL/Part_decomposition/internal/unit_cube_octree.h>
 #include <CGAL/Part_decomposition/internal/mean_curvature.h>
 #include <CGAL/Part_decomposition/internal/normal_deviation.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
@@ -203,7 +203,7 @@ inline std::vector<Level_mask> occupied_above_coarsest(const Level_classes& C, c
 
 // Gives the finest voxels with support under each non-empty leaf of `octree` the leaf's carried
 // class and resolution, and counts the leaves per level.
-inline void project_leaves_on_finest(const Flow_freeze_octree& octree, const Level_classes& C,
+inline void project_leaves_on_finest(const Unit_cube_octree& octree, const Level_classes& C,
                                      const Level_classes& carried, Hierarchical_prior& prior)
 {
   const std::size_t L = C.size();
@@ -298,7 +298,7 @@ inline Hierarchical_prior fuse_flow_freeze(const std::vector<Voxel_grid<Voxel_cl
 
   const int d0 = internal::log2_of_power_of_two(C[0].resolution());
   const int depth = d0 + int(L) - 1;
-  internal::Flow_freeze_octree octree;
+  internal::Unit_cube_octree octree;
   octree.refine([&](int d, const internal::Octree_cell& g) -> bool {
     const int i = int(g[0]), j = int(g[1]), k = int(g[2]);
     if(d < d0) return occupied[std::size_t(d)](i, j, k) != 0;
@@ -322,7 +322,6 @@ struct Prior_parameters
   std::vector<int> resolutions;
   Cue_parameters cues;
   Topology_score_parameters score;
-  std::vector<int> scored_resolutions; // the resolutions up to `prior_resolution_cap`
 };
 
 template <typename NamedParameters>
@@ -330,40 +329,8 @@ Prior_parameters read_prior_parameters(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  Prior_parameters p{read_voxel_resolutions(np), read_cue_parameters(np), read_topology_score_parameters(np), {}};
-  const int cap = int(choose_parameter(get_parameter(np, internal_np::prior_resolution_cap), defaults::prior_resolution_cap));
-  check_parameter(cap == 0 || std::find(p.resolutions.begin(), p.resolutions.end(), cap) != p.resolutions.end(),
-                  "prior_resolution_cap");
-  for(int r : p.resolutions)
-    if(cap == 0 || r <= cap) p.scored_resolutions.push_back(r);
+  Prior_parameters p{read_voxel_resolutions(np), read_cue_parameters(np), read_topology_score_parameters(np)};
   return p;
-}
-
-// Adds to `prior`, fused from its scored levels, the finer `resolutions` it lacks: their voxels
-// holding a sample (`sampled`, on the finest grid) take the class and leaf resolution of the
-// voxel of the finest scored level that contains them, and the finer levels have no leaves.
-inline void extend_prior_to_finer_levels(Hierarchical_prior& prior, const Voxel_grid<std::uint8_t>& sampled,
-                                         const std::vector<int>& resolutions)
-{
-  const Voxel_grid<Voxel_class> classes = std::move(prior.classes);
-  const Voxel_grid<std::uint16_t> leaf_resolution = std::move(prior.leaf_resolution);
-  const int R = sampled.resolution(), shift = log2_of_power_of_two(R / classes.resolution());
-  prior.classes = Voxel_grid<Voxel_class>(R, Voxel_class::EMPTY);
-  prior.leaf_resolution = Voxel_grid<std::uint16_t>(R, 0);
-  for(std::size_t v = 0; v < sampled.size(); ++v)
-  {
-    if(!sampled[v]) continue;
-    const std::array<int, 3> g = sampled.coordinates(v);
-    const std::size_t parent = classes.index(g[0] >> shift, g[1] >> shift, g[2] >> shift);
-    prior.classes[v] = classes[parent];
-    prior.leaf_resolution[v] = leaf_resolution[parent];
-  }
-  for(std::size_t l = prior.resolutions.size(); l < resolutions.size(); ++l)
-  {
-    prior.resolutions.push_back(resolutions[l]);
-    prior.number_of_flow_leaves.push_back(0);
-    prior.number_of_freeze_leaves.push_back(0);
-  }
 }
 
 } // namespace internal
@@ -478,14 +445,6 @@ resolutions, and the fusion.
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
-  \cgalParamNBegin{prior_resolution_cap}
-    \cgalParamDescription{the finest resolution at which the topology score is computed, cut and fused;
-                          the finer `voxel_resolutions` refine only the grid: their voxels holding a
-                          sample take the class and leaf resolution of the voxel of the cap that
-                          contains them. 0: every resolution is scored}
-    \cgalParamType{an integer type, 0 or one of `voxel_resolutions`}
-    \cgalParamDefault{`0`}
-  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns the prior: the fields at each scored resolution, the fused classes and leaf resolutions on the
@@ -517,18 +476,13 @@ Hierarchical_prior compute_flow_freeze_prior(const TriangleMesh& tm,
       : internal::face_normal_deviation<ConcurrencyTag>(mesh, parameters.cues.number_of_neighbors);
 
   // Every level from the samples binned at the finest resolution (the list is increasing).
-  // The levels above prior_resolution_cap are not scored: only their sampled voxels are needed.
-  const bool capped = parameters.scored_resolutions.size() < parameters.resolutions.size();
-  Voxel_grid<std::uint8_t> sampled;
   std::vector<Topology_score_field> fields = internal::topology_score_fields<ConcurrencyTag>(
-    mesh, c, phi, parameters.scored_resolutions, parameters.resolutions.back(), normalization, parameters.score,
-    capped ? &sampled : nullptr);
+    mesh, c, phi, parameters.resolutions, parameters.resolutions.back(), normalization, parameters.score, nullptr);
 
   std::vector<Voxel_grid<Voxel_class> > level_classes;
   level_classes.reserve(fields.size());
   for(const Topology_score_field& field : fields) level_classes.push_back(field.classes);
   Hierarchical_prior prior = fuse_flow_freeze(level_classes);
-  if(capped) internal::extend_prior_to_finer_levels(prior, sampled, parameters.resolutions);
   prior.fields = std::move(fields);
   prior.normalization = normalization;
   return prior;

@@ -35,12 +35,13 @@ namespace Part_decomposition {
   X(cue_weights_t, cue_weights, cue_weights)                                         \
   X(freeze_ratio_t, freeze_ratio, freeze_ratio)                                      \
   X(use_density_t, use_density, use_density)                                        \
-  X(prior_resolution_cap_t, prior_resolution_cap, prior_resolution_cap)              \
   /* normalization and TSDF (App. E.2) */                                            \
   X(normalization_t, normalization, normalization)                                   \
   X(normalization_margin_t, normalization_margin, normalization_margin)              \
   X(tsdf_truncation_t, tsdf_truncation, tsdf_truncation)                             \
   X(tsdf_sign_method_t, tsdf_sign_method, tsdf_sign_method)                          \
+  X(grid_resolution_t, grid_resolution, grid_resolution)                             \
+  X(adaptive_grid_t, adaptive_grid, adaptive_grid)                                   \
   /* superquadric fitting (App. E.2, Alg. A.2, A.3) */                               \
   X(flow_zone_tolerance_t, flow_zone_tolerance, flow_zone_tolerance)                 \
   X(trust_region_scales_t, trust_region_scales, trust_region_scales)                 \
@@ -82,7 +83,6 @@ namespace Part_decomposition {
   X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
   X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
   X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
-  X(thin_part_resolution_t, thin_part_resolution, thin_part_resolution)              \
   /* reading a mesh */                                                                \
   X(weld_tolerance_t, weld_tolerance, weld_tolerance)                                \
   /* the one-call decomposition */                                                   \
@@ -189,14 +189,16 @@ constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 0.}};
 constexpr double freeze_ratio = 0.15;
 /// the topology score is weighted by the density sqrt(n_i); false: the paper's ablation
 constexpr bool use_density = true;
-/// the finest resolution of the topology score (finer ones only refine the grid); 0: every resolution
-constexpr int prior_resolution_cap = 0;
 /// the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)
 constexpr double normalization_margin = 0.03125;
 /// tau: the truncation of the distance field, in voxels of the finest grid
 constexpr double tsdf_truncation = 8.;
 /// how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill
 constexpr Tsdf_sign_method tsdf_sign_method = Tsdf_sign_method::AUTOMATIC;
+/// the resolution of the finest leaves of the adaptive grid, where the shape is thin
+constexpr int grid_resolution = 128;
+/// the leaves of the grid follow the shape; false: every leaf a voxel of the finest voxel resolution (the paper)
+constexpr bool adaptive_grid = true;
 /// the dilation of the Flow zone, in voxels of the fitting resolution
 constexpr double flow_zone_tolerance = 2.;
 /// eta: the semi-axis trust-region scales of the retries
@@ -259,8 +261,6 @@ constexpr double residual_tolerance = 2.;
 constexpr bool merge_thin_sheets = true;
 /// the parts go on merging in the part hierarchy while a merge costs less; 0: none
 constexpr double maximum_merge_cost = 0.003;
-/// a finer pass at this resolution whose thin parts replace the default ones; 0: none (with number_of_parts: twice the finest voxel resolution)
-constexpr int thin_part_resolution = 0;
 /// print what each stage does on std::cerr
 constexpr bool verbose = false;
 // end of the defaults
@@ -341,9 +341,6 @@ constexpr Parameter_description parameter_table[] = {
   {"use_density", "bool", "true", "", Parameter_stage::PRIOR,
    "compute_topology_score(), compute_flow_freeze_prior()", true, true,
    "the topology score is weighted by the density sqrt(n_i); false: the paper's ablation"},
-  {"prior_resolution_cap", "int", "0", "0 or one of voxel_resolutions", Parameter_stage::PRIOR,
-   "compute_flow_freeze_prior()", true, false,
-   "the finest resolution of the topology score (finer ones only refine the grid); 0: every resolution"},
   {"normalization", "Normalization", "compute_normalization()", "", Parameter_stage::DISTANCE_FIELD,
    "every stage on the mesh", false, false, "the normalization of the mesh into the unit cube"},
   {"normalization_margin", "double", "0.03125", "in [0, 0.25]", Parameter_stage::DISTANCE_FIELD,
@@ -353,6 +350,11 @@ constexpr Parameter_description parameter_table[] = {
    true, false, "tau: the truncation of the distance field, in voxels of the finest grid"},
   {"tsdf_sign_method", "Tsdf_sign_method", "automatic", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true,
    false, "how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill"},
+  {"grid_resolution", "int", "128", "a power of two from the finest voxel resolution to 256",
+   Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, false,
+   "the resolution of the finest leaves of the adaptive grid, where the shape is thin"},
+  {"adaptive_grid", "bool", "true", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, true,
+   "the leaves of the grid follow the shape; false: every leaf a voxel of the finest voxel resolution (the paper)"},
   {"flow_zone_tolerance", "double", "2", "non-negative and finite", Parameter_stage::FITTING,
    "compute_fitting_zones(), fit_superquadrics()", true, false,
    "the dilation of the Flow zone, in voxels of the fitting resolution"},
@@ -421,12 +423,7 @@ constexpr Parameter_description parameter_table[] = {
   {"maximum_merge_cost", "double", "0.003", "non-negative and finite", Parameter_stage::HIERARCHY, "decompose()", true,
    false, "the parts go on merging in the part hierarchy while a merge costs less; 0: none"},
   {"number_of_parts", "std::size_t", "none", "at least 1", Parameter_stage::HIERARCHY, "decompose()", true, false,
-   "exactly this many parts, a level of the part hierarchy (at most its leaves), with the thin parts of a finer "
-   "pass if at least 2 and the default number; none: the default granularity"},
-  {"thin_part_resolution", "int", "0", "0, or a power of two up to 256 at least twice the finest voxel resolution",
-   Parameter_stage::HIERARCHY, "decompose()", true, false,
-   "a finer pass at this resolution whose thin parts replace the default ones; 0: none (with number_of_parts: "
-   "twice the finest voxel resolution)"},
+   "exactly this many parts, a level of the part hierarchy (at most its leaves); none: the default granularity"},
   {"part_hierarchy", "Part_hierarchy<GeomTraits>*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false,
    false, "receives the part hierarchy"},
   {"primitive_output_iterator", "an output iterator", "none", "", Parameter_stage::OUTPUT, "decompose()", false, false,

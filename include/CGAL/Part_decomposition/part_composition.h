@@ -302,9 +302,9 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   for(std::size_t i = 0; i < triangles.size(); ++i)
     for(int c = 0; c < 3; ++c)
       triangles[i][std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
-  const double depth = internal::bounding_probe_depth / double(tsdf.values.resolution());
-  const internal::Bounding_fractions sides =
-    internal::bounding_area_fractions(triangles, pieces.piece, pieces.number_of_pieces, tsdf.values, depth);
+  const double depth = internal::bounding_probe_depth * tsdf.voxel_size;
+  const internal::Bounding_fractions sides = internal::bounding_area_fractions(
+    triangles, pieces.piece, pieces.number_of_pieces, tsdf.grid, tsdf.values, depth);
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
   {

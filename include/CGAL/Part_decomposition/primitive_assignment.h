@@ -9,12 +9,12 @@
 #define CGAL_PART_DECOMPOSITION_PRIMITIVE_ASSIGNMENT_H
 
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/boundary_graph_cut.h>
-#include <CGAL/Part_decomposition/internal/claimed_voxel_search.h>
+#include <CGAL/Part_decomposition/internal/claimed_leaf_search.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
@@ -43,7 +43,7 @@ namespace internal {
 // Per face index: the nearest claimed voxel of the face centroid (label, normalized distance).
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
-                            const Claimed_voxel_search& search, const Normalization& normalization,
+                            const Claimed_leaf_search& search, const Normalization& normalization,
                             std::vector<std::int32_t>& face_label, std::vector<double>& face_distance)
 {
   const std::size_t nf = num_faces(tm);
@@ -64,109 +64,28 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
         ++n;
       }
       const std::array<double, 3> u = normalization.to_unit(c[0] / n, c[1] / n, c[2] / n);
-      const Claimed_voxel_search::Result r = search.nearest(u);
+      const Claimed_leaf_search::Result r = search.nearest(u);
       face_label[i] = r.label;
       face_distance[i] = r.distance;
     }
   }, 1024);
 }
 
-// Per voxel, the label of the claimed voxels within `window` voxels along each axis if they all
-// have one label, -1 if there are none, -2 if there are several: separable min and max filters.
-inline Voxel_grid<std::int32_t> window_labels(const Voxel_grid<std::int32_t>& claimed, int window)
-{
-  const int r = claimed.resolution();
-  Voxel_grid<std::int32_t> low(r, (std::numeric_limits<std::int32_t>::max)()), high(r, -1);
-  for(std::size_t v = 0; v < claimed.size(); ++v)
-    if(claimed[v] >= 0) low[v] = high[v] = claimed[v];
-  std::vector<std::int32_t> row_low(static_cast<std::size_t>(r)), row_high(static_cast<std::size_t>(r));
-  for(int axis = 0; axis < 3; ++axis)
-    for(int a = 0; a < r; ++a)
-      for(int b = 0; b < r; ++b)
-      {
-        const auto at = [&](int t) -> std::size_t {
-          return axis == 0 ? low.index(t, a, b) : axis == 1 ? low.index(a, t, b) : low.index(a, b, t);
-        };
-        for(int t = 0; t < r; ++t)
-        {
-          row_low[std::size_t(t)] = low[at(t)];
-          row_high[std::size_t(t)] = high[at(t)];
-        }
-        for(int t = 0; t < r; ++t)
-        {
-          std::int32_t l = row_low[std::size_t(t)], h = row_high[std::size_t(t)];
-          for(int u = (std::max)(t - window, 0); u <= (std::min)(t + window, r - 1); ++u)
-          {
-            l = (std::min)(l, row_low[std::size_t(u)]);
-            h = (std::max)(h, row_high[std::size_t(u)]);
-          }
-          low[at(t)] = l;
-          high[at(t)] = h;
-        }
-      }
-  Voxel_grid<std::int32_t> out(r, -1);
-  for(std::size_t v = 0; v < out.size(); ++v)
-    if(high[v] >= 0) out[v] = low[v] == high[v] ? high[v] : -2;
-  return out;
-}
-
-// Per voxel, 1 if it is claimed and its six face neighbours are claimed by the same label: from
-// a point outside it, its neighbour towards the point is strictly nearer, so it is never the
-// nearest voxel of its label.
-inline Voxel_grid<std::uint8_t> inner_voxels(const Voxel_grid<std::int32_t>& claimed)
-{
-  const int r = claimed.resolution();
-  Voxel_grid<std::uint8_t> inner(r, 0);
-  for(int z = 1; z + 1 < r; ++z)
-    for(int y = 1; y + 1 < r; ++y)
-      for(int x = 1; x + 1 < r; ++x)
-      {
-        const std::int32_t l = claimed(x, y, z);
-        inner(x, y, z) = l >= 0 && claimed(x - 1, y, z) == l && claimed(x + 1, y, z) == l && claimed(x, y - 1, z) == l &&
-                         claimed(x, y + 1, z) == l && claimed(x, y, z - 1) == l && claimed(x, y, z + 1) == l;
-      }
-  return inner;
-}
-
-// The claimed voxels within `window` voxels of voxel v along each axis that may be the nearest of
-// their label from a point of v: v itself if claimed, and the others that are not inner.
-inline void window_voxels(const Voxel_grid<std::int32_t>& claimed, const Voxel_grid<std::uint8_t>& inner,
-                          const std::array<int, 3>& v, int window,
-                          std::vector<std::pair<std::int32_t, Eigen::Vector3d> >& listed)
-{
-  const int r = claimed.resolution();
-  listed.clear();
-  for(int z = (std::max)(v[2] - window, 0); z <= (std::min)(v[2] + window, r - 1); ++z)
-    for(int y = (std::max)(v[1] - window, 0); y <= (std::min)(v[1] + window, r - 1); ++y)
-      for(int x = (std::max)(v[0] - window, 0); x <= (std::min)(v[0] + window, r - 1); ++x)
-      {
-        const std::int32_t l = claimed(x, y, z);
-        if(l < 0 || (inner(x, y, z) && (x != v[0] || y != v[1] || z != v[2]))) continue;
-        const std::array<double, 3> p = claimed.center(x, y, z);
-        listed.emplace_back(l, Eigen::Vector3d(p[0], p[1], p[2]));
-      }
-}
-
-// The candidate primitives of each face index for the final labelling: its nearest claimed voxel
-// (label k0, distance d0) and the other labels claimed within `window` voxels of its centroid at
-// a distance below d0 + `margin`, nearest first; a candidate at distance d costs
-// (face area / h^2) * (d - d0) / tau, so that the cost of a face is an area in voxels; a label
-// that is not a candidate costs at least the margin: `excluded`.
+// The candidate primitives of each face index for the final labelling: its nearest claimed leaf
+// (label k0, distance d0) and the other labels claimed within the window of the leaf holding its
+// centroid (`Claimed_leaf_search::labels_near()`) at a distance below d0 + `margin`, nearest
+// first; a candidate at distance d costs (face area / h^2) * (d - d0) / tau, so that the cost of a
+// face is an area in voxels of side h; a label that is not a candidate costs at least the margin:
+// `excluded`.
 template <typename ConcurrencyTag>
-Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel_search& search,
-                                const Voxel_grid<std::int32_t>& claimed, const Normalization& normalization,
-                                double tau, double margin, int window)
+Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_search& search,
+                                const Normalization& normalization, double h, double tau, double margin)
 {
   const std::size_t nf = corners.vertex.size() / 3;
-  const double h = claimed.voxel_size();
-  const Voxel_grid<std::int32_t> one_label = window_labels(claimed, window);
-  const Voxel_grid<std::uint8_t> inner = inner_voxels(claimed);
   Face_candidates out;
   out.resize(nf);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     std::vector<std::pair<double, std::int32_t> > near; // (distance, label), one per label
-    std::vector<std::pair<std::int32_t, Eigen::Vector3d> > listed; // the window of voxel `cached`
-    std::array<int, 3> cached{{-1, -1, -1}};
     for(std::size_t i = b; i < e; ++i)
     {
       std::array<Eigen::Vector3d, 3> u;
@@ -176,29 +95,17 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_voxel
         u[std::size_t(k)] = Eigen::Vector3d(q[0], q[1], q[2]);
       }
       const Eigen::Vector3d c = (u[0] + u[1] + u[2]) / 3.;
+      const std::array<double, 3> ca = {{c.x(), c.y(), c.z()}};
       const double area = 0.5 * (u[1] - u[0]).cross(u[2] - u[0]).norm() / (h * h);
-      const Claimed_voxel_search::Result nearest = search.nearest({{c.x(), c.y(), c.z()}});
+      const Claimed_leaf_search::Result nearest = search.nearest(ca);
       near.assign(1, std::make_pair(nearest.distance, nearest.label));
-      const std::array<int, 3> v = claimed.locate(c.x(), c.y(), c.z());
       out.excluded[i] = area * margin / tau;
-      const std::int32_t only = one_label(v[0], v[1], v[2]);
-      if(only == -1 || only == nearest.label) // the window adds no other label
+      for(std::int32_t k : search.labels_near(ca))
       {
-        out.label[i][0] = nearest.label;
-        continue;
-      }
-      if(v != cached) // faces come in runs of one voxel on fine meshes
-      {
-        cached = v;
-        window_voxels(claimed, inner, v, window, listed);
-      }
-      for(const std::pair<std::int32_t, Eigen::Vector3d>& w : listed)
-      {
-        const double d = (c - w.second).norm();
-        if(d > nearest.distance + margin) continue;
-        auto it = std::find_if(near.begin(), near.end(), [&](const std::pair<double, std::int32_t>& n) { return n.second == w.first; });
-        if(it == near.end()) near.emplace_back(d, w.first);
-        else it->first = (std::min)(it->first, d);
+        if(k < 0) break;
+        if(k == nearest.label) continue;
+        const double d = std::sqrt(search.squared_distance_to_label(k, ca));
+        if(d <= nearest.distance + margin) near.emplace_back(d, k);
       }
       std::sort(near.begin() + 1, near.end());
       const std::size_t n = (std::min)(near.size(), std::size_t(Face_candidates::capacity));
@@ -324,25 +231,25 @@ inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>
 }
 
 // The window and margin of the candidate primitives of a face, in voxels: a face farther than
-// three voxels from a primitive's claimed voxels than from its nearest one has no say in it.
-constexpr int candidate_window = 3;
+// three voxels from a primitive's claimed leaves than from its nearest one has no say in it.
+constexpr double candidate_window = 3.;
 constexpr double candidate_margin = 3.;
 // The cell of the clusters of the two-level final labelling, in voxels: the data costs vary at the
 // scale of a voxel, the cut is then refined face by face.
 constexpr double cluster_cell = 0.5;
 
-// The final labelling of `cut_face_labels()`: the primitive of each face index.
+// The final labelling of `cut_face_labels()`: the primitive of each face index; `h` is the voxel
+// of the finest prior resolution, the unit of lengths.
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                const VertexPointMap& vpm, const Face_adjacency& adj,
-                                               const Claimed_voxel_search& search,
-                                               const Voxel_grid<std::int32_t>& claimed_labels,
-                                               const Normalization& normalization, const Assignment_parameters& p)
+                                               const Claimed_leaf_search& search, double h,
+                                               const Normalization& normalization,
+                                               const Assignment_parameters& p)
 {
-  const double h = claimed_labels.voxel_size();
   const Face_corners corners(tm, fim, vpm);
   const Face_candidates candidates = face_candidates<ConcurrencyTag>(
-      corners, search, claimed_labels, normalization, p.vote_temperature * h, candidate_margin * h, candidate_window);
+      corners, search, normalization, h, p.vote_temperature * h, candidate_margin * h);
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
   const std::vector<int> outward(adj.number_of_faces, 1);
   return cut_face_labels<ConcurrencyTag>(adj, corners, candidates, outward,
@@ -357,13 +264,14 @@ std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const Fac
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                       const VertexPointMap& vpm, std::vector<std::size_t> patch,
-                                                      const Voxel_grid<std::int32_t>& claimed_labels,
+                                                      const std::vector<std::int32_t>& claimed_labels,
+                                                      const Adaptive_grid& grid, double h,
                                                       const Normalization& normalization,
                                                       const Assignment_parameters& p, const Face_adjacency& adj,
                                                       std::vector<std::size_t>& part)
 {
-  Claimed_voxel_search search;
-  search.build<ConcurrencyTag>(claimed_labels);
+  Claimed_leaf_search search;
+  search.build<ConcurrencyTag>(grid, claimed_labels, p.boundary_smoothness > 0. ? candidate_window * h : 0.);
   if(!search.any())
   {
     part.assign(patch.size(), 0);
@@ -372,7 +280,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
   if(p.boundary_smoothness > 0.)
   {
     const std::vector<std::int32_t> label =
-        cut_primitive_labels<ConcurrencyTag>(tm, fim, vpm, adj, search, claimed_labels, normalization, p);
+        cut_primitive_labels<ConcurrencyTag>(tm, fim, vpm, adj, search, h, normalization, p);
     std::iota(patch.begin(), patch.end(), std::size_t(0)); // one patch per face
     return parts_of_winners(label, patch, part);
   }
@@ -380,7 +288,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
   std::vector<std::int32_t> face_label;
   std::vector<double> face_distance;
   nearest_claimed_voxels<ConcurrencyTag>(tm, fim, vpm, search, normalization, face_label, face_distance);
-  const double tau = p.vote_temperature * claimed_labels.voxel_size();
+  const double tau = p.vote_temperature * h;
   const std::vector<std::int32_t> winner =
       vote_patch_labels<ConcurrencyTag>(patch, number_of_patches, face_label, face_distance, tau);
   return parts_of_winners(winner, patch, part);
@@ -390,17 +298,19 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
 
 /*!
 \ingroup PkgPartDecompositionRef
-transfers the primitives fitted in voxel space to the mesh (paper Sec.\ 3.3, App.\ E.4, Eq.\ 9).
-With `boundary_smoothness(0)`, as in the paper, each patch of an over-segmentation of `tm` (see
-`over_segment()`) is given one primitive by a distance-weighted vote of its faces, and the patches
-given the same primitive form one part:
-1. The centroid of each face \f$f\f$, mapped to the normalized cube by `normalization`, is matched
-   to the nearest centre of a claimed voxel (a voxel of `claimed_labels` holding a primitive index
-   \f$\ge 0\f$): \f$\hat k_f\f$ is that voxel's primitive and \f$d_f\f$ the Euclidean distance
-   (normalized units). One kd-tree holds the claimed voxels.
+transfers the primitives fitted on the leaves of the adaptive grid to the mesh (paper Sec.\ 3.3,
+App.\ E.4, Eq.\ 9). With `boundary_smoothness(0)`, as in the paper, each patch of an
+over-segmentation of `tm` (see `over_segment()`) is given one primitive by a distance-weighted vote
+of its faces, and the patches given the same primitive form one part:
+1. The centroid of each face \f$f\f$, mapped to the normalized cube by the normalization of
+   `tsdf`, is matched to the nearest centre of a claimed leaf (a leaf of `tsdf.grid` whose
+   `claimed_labels` entry is a primitive index \f$\ge 0\f$): \f$\hat k_f\f$ is that leaf's
+   primitive and \f$d_f\f$ the Euclidean distance (normalized units). A face in a claimed leaf
+   takes that leaf; the others are answered by a kd-tree of the claimed leaves next to
+   unclaimed ones.
 2. Each patch \f$j\f$ takes
    \f$k^*_j = \arg\max_k \sum_{f \in j} \exp(-d_f/\tau_v)\,[\hat k_f = k]\f$, the smallest \f$k\f$
-   on a tie, with \f$\tau_v\f$ = `vote_temperature` voxel sizes of `claimed_labels`.
+   on a tie, with \f$\tau_v\f$ = `vote_temperature` voxels \f$\Delta\f$ (`tsdf.voxel_size`).
 3. The patches with the same \f$k^*\f$ form one part. Parts are numbered `0` to `K-1` by increasing
    primitive index.
 
@@ -412,27 +322,26 @@ E(k) = \sum_f \frac{A_f}{h^2}\,\frac{d_f(k_f) - d_f}{\tau_v}
 \quad c(\theta) = -\log \max\left(10^{-3},\ \frac{\theta}{180^\circ} \cdot \begin{cases} 1 & \text{concave} \\ 0.08 & \text{convex}\end{cases}\right)
 \f]
 where \f$A_f\f$ is the area of face \f$f\f$, \f$d_f(k)\f$ the distance from its centroid to the
-nearest claimed voxel of primitive \f$k\f$, \f$h\f$ the voxel size, \f$\ell_e\f$ the length of
+nearest claimed leaf of primitive \f$k\f$, \f$h = \Delta\f$, \f$\ell_e\f$ the length of
 edge \f$e\f$ and \f$\theta_e\f$ its dihedral angle (concave for the orientation of `tm`): a cut is
 cheap along a concave crease and expensive across smooth or convex surface, as in
 `CGAL::Surface_mesh_segmentation`. A face may only take the primitives claimed within three
-voxels of its centroid and at most three voxels farther than its nearest one; the faces with a
-single such primitive take it, and each edge-connected set of the others is labelled by alpha
-expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by one minimum
-cut on the faces that may take the expanded primitive. Where the faces are much smaller than a
-voxel, a set is labelled in two levels: clusters of faces within half a voxel first, then face by
-face next to the cuts. The faces of one primitive form one part, and the patches of
+voxels of the leaf of its centroid and at most three voxels farther than its nearest one; the
+faces with a single such primitive take it, and each edge-connected set of the others is labelled
+by alpha expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by one
+minimum cut on the faces that may take the expanded primitive. Where the faces are much smaller
+than a voxel, a set is labelled in two levels: clusters of faces within half a voxel first, then
+face by face next to the cuts. The faces of one primitive form one part, and the patches of
 `face_patch_map` are not used.
-If no voxel is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
+If no leaf is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
 The result does not depend on the number of threads.
 
 \par Complexity
-\f$O(V \log V + F \log V)\f$ for \f$V\f$ claimed voxels and \f$F\f$ faces: one kd-tree of the claimed voxels and one
-nearest-neighbour query per face (most answered by a local search in the 27 voxels around the
-centroid); the vote is linear.
+\f$O(n \log n + F \log n)\f$ for \f$n\f$ leaves and \f$F\f$ faces: one kd-tree of the claimed leaves and
+at most one nearest-neighbour query per face; the vote is linear.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB); the
-        nearest-voxel queries and the votes run in parallel.
+        nearest-leaf queries and the votes run in parallel.
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam FacePatchMap a model of `ReadablePropertyMap` with
         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and an unsigned integer
@@ -444,9 +353,10 @@ centroid); the vote is linear.
 
 \param tm the triangle mesh
 \param face_patch_map the patch of each face; ids need not be consecutive
-\param claimed_labels for each voxel of the finest grid, the index of the primitive that claims
-       it, or a negative value
-\param normalization the map from the coordinates of `tm` to the cube of `claimed_labels`
+\param claimed_labels for each leaf of `tsdf.grid`, the index of the primitive that claims it, or
+       a negative value (the `labels` of `fit_superquadrics()`)
+\param tsdf the distance field whose grid the labels are given on; its normalization maps the
+       coordinates of `tm` to the normalized cube, its `voxel_size` is the unit of lengths
 \param face_part_map receives the part id of each face, in `[0, K)`
 \param np an optional sequence of named parameters among the ones listed below
 
@@ -467,8 +377,8 @@ centroid); the vote is linear.
     \cgalParamDefault{an automatically indexed internal map}
   \cgalParamNEnd
   \cgalParamNBegin{vote_temperature}
-    \cgalParamDescription{the temperature \f$\tau_v\f$ of the vote, in voxel sizes of
-                          `claimed_labels`: a face one \f$\tau_v\f$ farther weighs \f$1/e\f$ as much}
+    \cgalParamDescription{the temperature \f$\tau_v\f$ of the vote, in voxels \f$\Delta\f$: a face
+                          one \f$\tau_v\f$ farther weighs \f$1/e\f$ as much}
     \cgalParamType{`double`, positive}
     \cgalParamDefault{`1.0`}
   \cgalParamNEnd
@@ -490,14 +400,14 @@ centroid); the vote is linear.
 
 \returns the primitive index of each part, increasing: `K` values.
 
-\throws Invalid_input (`INVALID_PARAMETER`) if `vote_temperature` is not a positive finite number or
-`boundary_smoothness` is negative.
+\throws Invalid_input (`INVALID_PARAMETER`) if `vote_temperature` is not a positive finite number,
+`boundary_smoothness` is negative, or `claimed_labels` does not have one entry per leaf.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename FacePatchMap,
           typename FacePartMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_patch_map,
-                                      const Voxel_grid<std::int32_t>& claimed_labels,
-                                      const Normalization& normalization, FacePartMap face_part_map,
+                                      const std::vector<std::int32_t>& claimed_labels,
+                                      const Truncated_signed_distance_field& tsdf, FacePartMap face_part_map,
                                       const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::static_check_concurrency_tag<ConcurrencyTag>();
@@ -506,6 +416,8 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
                                                       get_const_property_map(CGAL::vertex_point, tm));
   const FIM fim = CGAL::get_initialized_face_index_map(tm, np);
   const internal::Assignment_parameters p = internal::read_assignment_parameters(np);
+  internal::check_parameter(claimed_labels.size() == tsdf.grid.number_of_leaves() && tsdf.voxel_size > 0.,
+                            "claimed_labels", "one label per leaf of the grid of the distance field");
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
 
   // the one conversion from the caller's map, and the one to the other
@@ -515,7 +427,7 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
                                           ? internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np)
                                           : internal::Face_adjacency();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
-      tm, fim, vpm, std::move(patch), claimed_labels, normalization, p, adj, part);
+      tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj, part);
   internal::put_face_values(tm, fim, part, face_part_map);
   return primitives;
 }

@@ -11,6 +11,7 @@
 // The results of the stages, without the code that computes them: a header that only passes
 // results on (the fitter reads the prior and the distance field) includes this one.
 
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
@@ -78,8 +79,7 @@ struct Hierarchical_prior
 {
   /// the resolutions, coarse to fine, each twice the previous one (default 16, 32, 64).
   std::vector<int> resolutions;
-  /// the score field and Flow/Freeze cut at each scored resolution, in the order of `resolutions`:
-  /// all of them, or the first ones up to the `prior_resolution_cap` of `compute_flow_freeze_prior()`.
+  /// the score field and Flow/Freeze cut at each resolution, in the order of `resolutions`.
   std::vector<Topology_score_field> fields;
   /// the class of the fused leaf that contains each voxel of the finest grid; `EMPTY` outside
   /// the surface support of the finest grid.
@@ -98,16 +98,22 @@ struct Hierarchical_prior
 
 /*!
 \ingroup PkgPartDecompositionRef
-A truncated signed distance field \f$d_\mathcal{M}\f$ of a mesh sampled at the voxel centres of a
-grid of the normalized cube: negative inside, positive outside, clipped to
+A truncated signed distance field \f$d_\mathcal{M}\f$ of a mesh sampled at the leaf centres of an
+adaptive grid of the normalized cube: negative inside, positive outside, clipped to
 \f$[-\tau, \tau]\f$.
 */
 struct Truncated_signed_distance_field
 {
-  /// the signed distances in normalized units, clipped to `[-truncation, truncation]`.
-  Voxel_grid<double> values;
+  /// the leaves on which the field is sampled.
+  Adaptive_grid grid;
+  /// the signed distance at the centre of each leaf of `grid`, in normalized units, clipped to
+  /// `[-truncation, truncation]`.
+  std::vector<double> values;
   /// \f$\tau\f$ in normalized units.
   double truncation = 0.;
+  /// \f$\Delta\f$: the side of a voxel of the finest of `voxel_resolutions`, the unit in which the
+  /// lengths of the method (truncation, bands, temperatures) are given, in normalized units.
+  double voxel_size = 0.;
   /// the map from input coordinates to the normalized cube.
   Normalization normalization;
   /// the sign method actually used (never `AUTOMATIC`).
@@ -117,29 +123,32 @@ struct Truncated_signed_distance_field
 /*!
 \ingroup PkgPartDecompositionRef
 The volumetric zones that constrain the superquadric fitter (paper App.\ E.2 (A.1), Alg.\ A.2
-lines 1-4), on the finest grid of the prior. Masks hold 1 inside the zone and 0 outside.
+lines 1-4), one value per leaf of the grid of the distance field. Masks hold 1 inside the zone and
+0 outside.
 */
 struct Fitting_zones
 {
-  /// the carrier: `FLOW` or `FREEZE` voxels of the prior.
-  Voxel_grid<std::uint8_t> occupied;
-  /// `ext_void`: the exterior of the shape, the unoccupied voxels the distance field puts outside.
-  Voxel_grid<std::uint8_t> exterior;
-  /// \f$\Omega_{freeze}\f$: the `FREEZE` voxels and the exterior.
-  Voxel_grid<std::uint8_t> freeze_zone;
-  /// \f$\Omega_{flow}\f$ for each fitting resolution \f$r_{fit}\f$: the non-exterior voxels
-  /// dilated by the Flow-zone tolerance (in voxels of \f$r_{fit}\f$).
-  std::map<int, Voxel_grid<std::uint8_t> > flow_zone;
-  /// for each fitting resolution, the Euclidean distance (normalized units) from each voxel of the
-  /// Flow zone to the nearest voxel outside it; 0 outside the zone.
-  std::map<int, Voxel_grid<double> > flow_zone_distance;
+  /// the class of the fused prior leaf at each leaf; `EMPTY` for a leaf without surface support.
+  std::vector<Voxel_class> classes;
+  /// \f$\mathcal{R}_{map}\f$: the resolution of the fused prior leaf at each leaf, 0 for a leaf
+  /// without surface support (valid from the first stage).
+  std::vector<std::uint16_t> leaf_resolution;
+  /// the carrier: the leaves with surface support (`FLOW` or `FREEZE`).
+  std::vector<std::uint8_t> occupied;
+  /// `ext_void`: the exterior of the shape, the unoccupied leaves the distance field puts outside.
+  std::vector<std::uint8_t> exterior;
+  /// \f$\Omega_{freeze}\f$: the `FREEZE` leaves and the exterior.
+  std::vector<std::uint8_t> freeze_zone;
+  /// \f$\Omega_{flow}\f$ for each fitting resolution \f$r_{fit}\f$: the leaves whose centre lies
+  /// within the Flow-zone tolerance (in voxels of \f$r_{fit}\f$) of the centre of a non-exterior leaf.
+  std::map<int, std::vector<std::uint8_t> > flow_zone;
 };
 
 
 /*!
 \ingroup PkgPartDecompositionRef
-The output of `fit_superquadrics()`: the accepted superquadrics in acceptance order, what they
-claimed on the finest grid of the prior, and statistics of the run. Primitive `k` is the `k`-th
+The output of `fit_superquadrics()`: the accepted superquadrics in acceptance order, the leaves of
+the grid of the distance field they claimed, and statistics of the run. Primitive `k` is the `k`-th
 entry of every per-primitive vector.
 */
 template <typename GeomTraits>
@@ -156,23 +165,22 @@ struct Superquadric_fitting_result
   std::vector<int> stage_resolution;
   /// whether each primitive grew from a body seed (EDT maximum) or a surface seed (component centroid).
   std::vector<bool> body_seeded;
-  /// the seed voxel (linear index in the finest grid) of each primitive.
-  std::vector<std::size_t> seed_voxel;
+  /// the seed leaf of each primitive.
+  std::vector<std::size_t> seed_leaf;
   /// the trust-region scale \f$\eta\f$ of the fit that passed the Flow-zone test.
   std::vector<double> semi_axis_scale;
   /// the FitSDF cost \f$\sum w r^2 / |P_a|\f$ of each accepted fit.
   std::vector<double> fit_cost;
-  /// the finest-grid voxels of each primitive in `labels` (claimed, then merged residuals), in
-  /// increasing index.
-  std::vector<std::vector<std::size_t> > claimed_voxels;
+  /// the leaves of each primitive in `labels` (claimed, then merged residuals), in increasing index.
+  std::vector<std::vector<std::size_t> > claimed_leaves;
   /// @}
 
-  /// \name Grids
+  /// \name Leaves
   /// @{
 
-  /// on the finest grid of the prior: the primitive that claimed each voxel (hard-clipped claims
-  /// plus small residual regions merged into the nearest primitive), or -1.
-  Voxel_grid<std::int32_t> labels;
+  /// per leaf of the grid of the distance field: the primitive that claimed it (hard-clipped
+  /// claims plus small residual regions merged into the nearest primitive), or -1.
+  std::vector<std::int32_t> labels;
   /// the map from input coordinates to the normalized cube (from the prior).
   Normalization normalization;
   /// @}
@@ -188,7 +196,7 @@ struct Superquadric_fitting_result
   std::size_t number_of_solves = 0;         ///< least-squares solves (FitSDF calls times outer passes)
   std::size_t number_of_evaluations = 0;    ///< residual evaluations in all solves
   std::size_t number_of_samples = 0;        ///< samples over all FitSDF calls
-  std::size_t merged_voxels = 0;            ///< residual voxels merged into a primitive
+  std::size_t merged_leaves = 0;            ///< residual leaves merged into a primitive
   std::vector<double> stage_coverage;       ///< coverage of \f$\Omega_{valid}\f$ at the end of each stage
   double seconds = 0.;                      ///< wall-clock time of the call
   /// @}

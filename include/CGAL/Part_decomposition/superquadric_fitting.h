@@ -10,7 +10,7 @@
 
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
@@ -100,34 +100,35 @@ inline void check_prior_and_distance_field(const Hierarchical_prior& prior, cons
 {
   bool consistent = !prior.resolutions.empty() && prior.resolutions.front() >= 1 &&
                     prior.resolutions.back() == prior.classes.resolution() &&
-                    tsdf.values.resolution() == prior.classes.resolution();
+                    tsdf.values.size() == tsdf.grid.number_of_leaves() &&
+                    tsdf.grid.finest_resolution() >= prior.classes.resolution();
   for(std::size_t l = 1; consistent && l < prior.resolutions.size(); ++l)
     consistent = prior.resolutions[l - 1] < prior.resolutions[l];
   check_parameter(consistent, "the prior and the distance field", "computed with the same voxel_resolutions");
 }
 
-inline void check_fitting_zones(const Fitting_zones& zones, const Hierarchical_prior& prior,
+inline void check_fitting_zones(const Fitting_zones& zones, const Truncated_signed_distance_field& tsdf,
                                 const std::vector<int>& stage_fitting_resolutions)
 {
-  const int r = prior.classes.resolution();
-  bool match = zones.freeze_zone.resolution() == r && zones.exterior.resolution() == r;
+  const std::size_t n = tsdf.grid.number_of_leaves();
+  bool match = zones.freeze_zone.size() == n && zones.exterior.size() == n && zones.classes.size() == n &&
+               zones.leaf_resolution.size() == n;
   for(int r_fit : stage_fitting_resolutions)
-    match = match && zones.flow_zone.count(r_fit) == 1 && zones.flow_zone_distance.count(r_fit) == 1 &&
-            zones.flow_zone.at(r_fit).resolution() == r && zones.flow_zone_distance.at(r_fit).resolution() == r;
-  check_parameter(match, "the fitting zones", "computed from this prior at its fitting_resolutions()");
+    match = match && zones.flow_zone.count(r_fit) == 1 && zones.flow_zone.at(r_fit).size() == n;
+  check_parameter(match, "the fitting zones", "computed from this prior and distance field at its fitting_resolutions()");
 }
 
-// The voxels of the shape's volume that a primitive may claim: neither exterior nor Freeze, or, if
-// there are none (every voxel of a thin shape is Freeze), all the voxels that are not exterior.
+// The leaves of the shape's volume that a primitive may claim: neither exterior nor Freeze, or, if
+// there are none (every leaf of a thin shape is Freeze), all the leaves that are not exterior.
 inline std::vector<std::size_t> claimable_volume(const Fitting_zones& zones)
 {
-  std::vector<std::size_t> voxels;
-  for(std::size_t v = 0; v < zones.exterior.size(); ++v)
-    if(!zones.freeze_zone[v]) voxels.push_back(v);
-  if(voxels.empty())
-    for(std::size_t v = 0; v < zones.exterior.size(); ++v)
-      if(!zones.exterior[v]) voxels.push_back(v);
-  return voxels;
+  std::vector<std::size_t> leaves;
+  for(std::size_t l = 0; l < zones.exterior.size(); ++l)
+    if(!zones.freeze_zone[l]) leaves.push_back(l);
+  if(leaves.empty())
+    for(std::size_t l = 0; l < zones.exterior.size(); ++l)
+      if(!zones.exterior[l]) leaves.push_back(l);
+  return leaves;
 }
 
 // A fit that accepted no primitive on a shape that bounds a volume gets one: the box-like
@@ -136,33 +137,36 @@ inline std::vector<std::size_t> claimable_volume(const Fitting_zones& zones)
 // volume to stand for.
 template <typename GeomTraits>
 bool fall_back_to_one_primitive(Superquadric_fitting_result<GeomTraits>& result, const Fitting_zones& zones,
-                                const Normalization& normalization)
+                                const Adaptive_grid& grid, const Normalization& normalization)
 {
-  const std::vector<std::size_t> voxels = claimable_volume(zones);
-  if(voxels.empty()) return false;
+  const std::vector<std::size_t> leaves = claimable_volume(zones);
+  if(leaves.empty()) return false;
   Part_box box;
   std::vector<Eigen::Vector3d> points;
-  points.reserve(voxels.size());
-  for(std::size_t v : voxels)
+  points.reserve(leaves.size());
+  double half = 0.;
+  for(std::size_t l : leaves)
   {
-    const std::array<double, 3> c = zones.exterior.center(v);
+    const std::array<double, 3> c = grid.center(l);
+    const double v = grid.volume(l);
     points.push_back(Eigen::Vector3d(c[0], c[1], c[2]));
-    box.area += 1.;
-    box.first += points.back();
-    box.second += points.back() * points.back().transpose();
-    result.labels[v] = 0;
+    box.area += v;
+    box.first += v * points.back();
+    box.second += v * points.back() * points.back().transpose();
+    result.labels[l] = 0;
+    half = (std::max)(half, 0.5 * grid.size(l));
   }
   fit_box_to_points(box, points);
-  box.half += Eigen::Vector3d::Constant(0.5 * zones.exterior.voxel_size()); // the voxels' own extent
+  box.half += Eigen::Vector3d::Constant(half); // the leaves' own extent
   const Superquadric<GeomTraits> sq = box_superquadric<GeomTraits>(box, Eigen::Vector3d::Zero());
   result.primitives.push_back(sq);
   result.input_primitives.push_back(sq.in_input_coordinates(normalization));
-  result.stage_resolution.push_back(zones.exterior.resolution());
+  result.stage_resolution.push_back(grid.finest_resolution());
   result.body_seeded.push_back(false);
-  result.seed_voxel.push_back(voxels[voxels.size() / 2]);
+  result.seed_leaf.push_back(leaves[leaves.size() / 2]);
   result.semi_axis_scale.push_back(0.);
   result.fit_cost.push_back(0.);
-  result.claimed_voxels.assign(1, voxels);
+  result.claimed_leaves.assign(1, leaves);
   return true;
 }
 
@@ -174,7 +178,7 @@ void report_no_primitive(const Superquadric_fitting_result<GeomTraits>& result, 
             << result.rejected_by_flow_zone << " left the Flow zone, " << result.rejected_by_volume
             << " claimed less than V_min, " << result.rejected_degenerate << " had too few samples; "
             << (fell_back ? "one box-like superquadric of the whole volume stands for the shape ("
-                              + std::to_string(result.claimed_voxels.front().size()) + " voxels)\n"
+                              + std::to_string(result.claimed_leaves.front().size()) + " leaves)\n"
                           : "the shape bounds no volume on the grid\n");
 }
 
@@ -197,22 +201,21 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
     zone_parameters.flow_zone_tolerance = parameters.flow_zone_tolerance;
     zone_parameters.use_freeze_zone = parameters.use_freeze_zone;
     own_zones = compute_fitting_zones<ConcurrencyTag>(
-      prior.classes, tsdf.values, fitting_resolutions(prior.resolutions, parameters.fitting_resolution_cap),
-      zone_parameters);
+      prior, tsdf, fitting_resolutions(prior.resolutions, parameters.fitting_resolution_cap), zone_parameters);
     zones = &own_zones;
   }
   else
-    check_fitting_zones(*zones, prior, fit_res);
+    check_fitting_zones(*zones, tsdf, fit_res);
   Superquadric_fitter<ConcurrencyTag, GeomTraits> fitter(prior, tsdf, *zones, fit_res, parameters);
   Superquadric_fitting_result<GeomTraits> result = fitter.run();
   if(result.primitives.empty())
   {
-    const bool fell_back = fall_back_to_one_primitive(result, *zones, prior.normalization);
+    const bool fell_back = fall_back_to_one_primitive(result, *zones, tsdf.grid, prior.normalization);
     if(parameters.verbose) report_no_primitive(result, fell_back);
   }
   if(parameters.merge_primitives)
-    merge_explained_primitives(result, prior.classes, tsdf.values, parameters.minimum_merge_iou,
-                               primitive_merge_freeze_fraction);
+    merge_explained_primitives(result, zones->classes, tsdf, 1. / double(prior.resolutions.back()),
+                               parameters.minimum_merge_iou, primitive_merge_freeze_fraction);
   return result;
 }
 

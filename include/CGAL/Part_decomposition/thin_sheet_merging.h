@@ -140,7 +140,7 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, FacePartMap face_part
   const internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
   std::vector<std::size_t> part(num_faces(tm));
   for(auto f : faces(tm)) part[std::size_t(get(fim, f))] = std::size_t(get(face_part_map, f));
-  const std::size_t K = internal::merge_thin_sheets_on_faces<ConcurrencyTag>(tm, vpm, fim, adj, tsdf.values,
+  const std::size_t K = internal::merge_thin_sheets_on_faces<ConcurrencyTag>(tm, vpm, fim, adj, tsdf,
                                                                              fitting, part, part_to_primitive);
   internal::put_face_values(tm, fim, part, face_part_map);
   return K;

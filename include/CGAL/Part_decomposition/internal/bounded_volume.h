@@ -15,7 +15,7 @@
 // fraction of its area whose faces have the field's inside at `depth` on one side and its outside
 // at `depth` on the other, and on which side the outside mostly is.
 
-#include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 
@@ -28,12 +28,14 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// The trilinear interpolation of the values at the voxel centres; beyond the outermost centres
-// the nearest ones hold (the mesh lies well inside the cube).
-inline double interpolate_field(const Voxel_grid<double>& field, const Vec3& p)
+// The value of a field on the leaves of `grid` at p: the trilinear interpolation of the values at
+// the centres of the eight leaves around p when they are as large as the leaf of p (beyond the
+// outermost centres the nearest ones hold), else the value of the leaf of p.
+inline double interpolate_field(const Adaptive_grid& grid, const std::vector<double>& field, const Vec3& p)
 {
-  const int r = field.resolution();
-  if(r == 1) return field[0];
+  const std::size_t own = grid.locate(p[0], p[1], p[2]);
+  const int r = grid.resolution(own);
+  if(r == 1) return field[own];
   int i0[3];
   double t[3];
   for(int a = 0; a < 3; ++a)
@@ -42,12 +44,17 @@ inline double interpolate_field(const Voxel_grid<double>& field, const Vec3& p)
     i0[a] = (std::min)((std::max)(int(std::floor(u)), 0), r - 2);
     t[a] = (std::min)((std::max)(u - double(i0[a]), 0.), 1.);
   }
+  const std::uint32_t width = grid.width(own);
   double value = 0.;
   for(int c = 0; c < 8; ++c)
   {
     const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
     const double w = (di ? t[0] : 1. - t[0]) * (dj ? t[1] : 1. - t[1]) * (dk ? t[2] : 1. - t[2]);
-    if(w > 0.) value += w * field(i0[0] + di, i0[1] + dj, i0[2] + dk);
+    if(!(w > 0.)) continue;
+    const std::size_t l = grid.leaf_of_voxel(std::uint32_t(i0[0] + di) * width, std::uint32_t(i0[1] + dj) * width,
+                                             std::uint32_t(i0[2] + dk) * width);
+    if(grid.width(l) != width) return field[own];
+    value += w * field[l];
   }
   return value;
 }
@@ -65,7 +72,8 @@ struct Bounding_fractions
 
 inline Bounding_fractions bounding_area_fractions(const std::vector<Triangle_points>& triangles,
                                                   const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
-                                                  const Voxel_grid<double>& field, double depth)
+                                                  const Adaptive_grid& grid, const std::vector<double>& field,
+                                                  double depth)
 {
   std::vector<double> area(number_of_pieces, 0.);
   Bounding_fractions out;
@@ -85,8 +93,8 @@ inline Bounding_fractions bounding_area_fractions(const std::vector<Triangle_poi
       above[a] = c + step;
     }
     area[piece[i]] += twice_area;
-    const bool inside_below = std::signbit(interpolate_field(field, below));
-    if(inside_below == std::signbit(interpolate_field(field, above))) continue;
+    const bool inside_below = std::signbit(interpolate_field(grid, field, below));
+    if(inside_below == std::signbit(interpolate_field(grid, field, above))) continue;
     out.bounding[piece[i]] += twice_area;
     out.outward[piece[i]] += inside_below ? twice_area : -twice_area;
   }

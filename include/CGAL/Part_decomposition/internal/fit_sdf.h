@@ -26,9 +26,10 @@ namespace Part_decomposition {
 namespace internal {
 
 // The samples of one fit (structure of arrays): positions in the normalized cube and d_M.
+// Sample points, their values of d_M and the volumes they stand for (weights of the residuals).
 struct Fit_samples
 {
-  std::vector<double> x, y, z, d;
+  std::vector<double> x, y, z, d, volume;
   std::size_t size() const { return d.size(); }
   void clear()
   {
@@ -36,13 +37,15 @@ struct Fit_samples
     y.clear();
     z.clear();
     d.clear();
+    volume.clear();
   }
-  void push_back(double px, double py, double pz, double pd)
+  void push_back(double px, double py, double pz, double pd, double pv = 1.)
   {
     x.push_back(px);
     y.push_back(py);
     z.push_back(pz);
     d.push_back(pd);
+    volume.push_back(pv);
   }
 };
 
@@ -215,7 +218,7 @@ private:
 // Buffers reused across fits (one per thread when fits run concurrently).
 struct Fit_sdf_workspace
 {
-  std::vector<double> px, py, pz, d, sqrt_w, clip;
+  std::vector<double> px, py, pz, d, sqrt_w, clip, volume;
   std::vector<double> dt; // d~ of each active sample at the current parameters (theta0 first)
   std::vector<Fit_sdf_block_sums> block_sums;
   std::vector<unsigned char> interior; // interior regime: Gaussian weight
@@ -230,7 +233,7 @@ inline void select_active_samples(const Fit_samples& P, const Superquadric_data&
   const double tau = settings.truncation;
   const double near_band = settings.near_surface_fraction * tau;
   ws.px.clear(); ws.py.clear(); ws.pz.clear(); ws.d.clear();
-  ws.sqrt_w.clear(); ws.clip.clear(); ws.dt.clear(); ws.interior.clear();
+  ws.sqrt_w.clear(); ws.clip.clear(); ws.dt.clear(); ws.interior.clear(); ws.volume.clear();
   for(std::size_t i = 0; i < P.size(); ++i)
   {
     const double p[3] = {P.x[i], P.y[i], P.z[i]};
@@ -246,7 +249,8 @@ inline void select_active_samples(const Fit_samples& P, const Superquadric_data&
     else
       interior = true;
     ws.px.push_back(p[0]); ws.py.push_back(p[1]); ws.pz.push_back(p[2]); ws.d.push_back(dm);
-    ws.sqrt_w.push_back(std::sqrt(w));
+    ws.sqrt_w.push_back(std::sqrt(w * P.volume[i]));
+    ws.volume.push_back(P.volume[i]);
     ws.clip.push_back(std::abs(dm) < near_band ? near_band : tau);
     ws.dt.push_back(dt);
     ws.interior.push_back(interior ? 1 : 0);
@@ -297,7 +301,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
       {
         const double e = clipped_residual(i, dt[i]);
         const double p = std::exp(-e * e / (2. * s2));
-        ws.sqrt_w[i] = std::sqrt(p / (C + p));
+        ws.sqrt_w[i] = std::sqrt(ws.volume[i] * p / (C + p));
       }
   };
   set_interior_weights(ws.dt, sigma2);

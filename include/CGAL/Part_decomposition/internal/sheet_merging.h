@@ -11,10 +11,9 @@
 // The steps of `merge_thin_sheet_parts()` (thin_sheet_merging.h), on vectors indexed by the face
 // index map and on the face graph of the over-segmentation.
 
-#include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/leaf_distance.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/Union_find.h>
@@ -58,21 +57,22 @@ struct Sheet_merging_thresholds
   double fold_angle = 45.;
 };
 
-// Whether each part is a thin sheet: its primitive is flat and claims no voxel deeper than the
-// maximum depth inside the shape (`tsdf_values`: negative inside).
+// Whether each part is a thin sheet: its primitive is flat and claims no leaf deeper than the
+// maximum depth inside the shape (`tsdf`: negative inside).
 template <typename ConcurrencyTag, typename GeomTraits>
-std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
+std::vector<char> thin_sheet_parts(const Truncated_signed_distance_field& tsdf,
                                    const Superquadric_fitting_result<GeomTraits>& fitting,
                                    const std::vector<std::size_t>& part_to_primitive,
                                    const Sheet_merging_thresholds& th)
 {
-  // Depth of each voxel inside the shape, in voxels: its distance to the nearest outside voxel.
-  const std::size_t n_voxels = tsdf_values.size();
-  Voxel_grid<std::uint8_t> outside(tsdf_values.resolution(), 0);
-  for(std::size_t v = 0; v < n_voxels; ++v) outside[v] = tsdf_values[v] > 0. ? 1 : 0;
-  const Voxel_grid<double> depth2 = squared_distance_transform<ConcurrencyTag>(outside);
+  // Depth of each claimed leaf inside the shape: the distance from its centre to the nearest
+  // centre of an outside leaf.
+  const std::size_t n_leaves = tsdf.values.size();
+  const std::vector<double> depth2 = leaf_squared_distances<ConcurrencyTag>(
+    tsdf.grid, [&](std::size_t l) { return tsdf.values[l] > 0.; },
+    [&](std::size_t l) { return l < fitting.labels.size() && fitting.labels[l] >= 0; });
 
-  const double max_depth = th.maximum_depth * double(tsdf_values.resolution()); // in voxels
+  const double max_depth = th.maximum_depth;
   const std::size_t K = part_to_primitive.size();
   std::vector<char> sheet(K, 0);
   for(std::size_t k = 0; k < K; ++k)
@@ -82,9 +82,9 @@ std::vector<char> thin_sheet_parts(const Voxel_grid<double>& tsdf_values,
     std::array<double, 3> a = fitting.primitives[q].scales();
     std::sort(a.begin(), a.end());
     double deepest2 = 0.;
-    for(std::size_t v : fitting.claimed_voxels[q])
-      if(v < n_voxels) deepest2 = (std::max)(deepest2, depth2[v]);
-    sheet[k] = (a[0] * th.flatness_ratio < a[1] && deepest2 <= max_depth * max_depth) ? 1 : 0;
+    for(std::size_t l : fitting.claimed_leaves[q])
+      if(l < n_leaves) deepest2 = (std::max)(deepest2, depth2[l]);
+    sheet[k] = (a[0] * th.flatness_ratio < a[1] && deepest2 <= max_depth * max_depth * (1. + 1e-12)) ? 1 : 0;
   }
   return sheet;
 }
@@ -232,7 +232,7 @@ std::vector<std::size_t> largest_primitives(const std::vector<std::size_t>& old_
   for(std::size_t k = 0; k < old_to_new.size(); ++k)
   {
     const std::size_t n = old_to_new[k], q = part_to_primitive[k];
-    const std::size_t size = q < fitting.claimed_voxels.size() ? fitting.claimed_voxels[q].size() + 1 : 0;
+    const std::size_t size = q < fitting.claimed_leaves.size() ? fitting.claimed_leaves[q].size() + 1 : 0;
     if(!has[n] || size > volume[n])
     {
       primitive[n] = q;
@@ -251,7 +251,7 @@ the primitive of each part; both are renumbered in place. Returns the new number
 template <typename ConcurrencyTag, typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap,
           typename GeomTraits>
 std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& fim,
-                                       const Face_adjacency& adj, const Voxel_grid<double>& tsdf_values,
+                                       const Face_adjacency& adj, const Truncated_signed_distance_field& tsdf,
                                        const Superquadric_fitting_result<GeomTraits>& fitting,
                                        std::vector<std::size_t>& part,
                                        std::vector<std::size_t>& part_to_primitive,
@@ -259,7 +259,7 @@ std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPoint
 {
   const std::size_t K = part_to_primitive.size();
   if(K < 2) return K;
-  const std::vector<char> sheet = thin_sheet_parts<ConcurrencyTag>(tsdf_values, fitting, part_to_primitive, th);
+  const std::vector<char> sheet = thin_sheet_parts<ConcurrencyTag>(tsdf, fitting, part_to_primitive, th);
   if(std::find(sheet.begin(), sheet.end(), 1) == sheet.end()) return K;
 
   std::vector<double> angles;

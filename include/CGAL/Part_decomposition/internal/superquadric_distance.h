@@ -241,6 +241,27 @@ inline void superquadric_half_extents(const Superquadric_data& q, double e[3])
 // d~ <= margin (margin >= 0), or g <= 1 when margin == 0 (the plain inside test). Voxels are
 // visited in increasing linear index. Local coordinates are updated incrementally along i, and
 // any point with |x_l| > a_l + margin is rejected before any power is taken (then d~ > margin).
+// Whether the point of local coordinates x has d~ <= margin (margin >= 0), or g <= 1 when margin
+// == 0 (the plain inside test). Any point with |x_l| > a_l + margin is rejected before any power
+// is taken (then d~ > margin).
+inline bool local_point_within(const Superquadric_data& q, const double x[3], double margin)
+{
+  if(std::abs(x[0]) > q.a[0] + margin || std::abs(x[1]) > q.a[1] + margin || std::abs(x[2]) > q.a[2] + margin)
+    return false;
+  // quick accept: the solid contains the octahedron |X|+|Y|+|Z| <= 1, and the ellipsoid
+  // X^2+Y^2+Z^2 <= 1 when both exponents are <= 1 (the gauge decreases with p = 2/eps)
+  const double X = std::abs(x[0]) / q.a[0], Y = std::abs(x[1]) / q.a[1], Z = std::abs(x[2]) / q.a[2];
+  if(X + Y + Z <= 1. || (q.e1 <= 1. && q.e2 <= 1. && X * X + Y * Y + Z * Z <= 1.)) return true;
+  if(margin == 0.)
+    return p_norm_value(p_norm_value(X, Y, 2. / clamp_exponent(q.e2)), Z, 2. / clamp_exponent(q.e1)) <= 1.;
+  const double rr = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const double u[3] = {x[0] / rr, x[1] / rr, x[2] / rr}; // rr > 0: the centre passed the quick accept
+  return rr - 1. / superquadric_gauge(q, u) <= margin;
+}
+
+// Calls f(i, j, k, linear_index) for every voxel of the r-grid of [-0.5,0.5]^3 whose centre is
+// within the superquadric (local_point_within()), in increasing linear index. Local coordinates
+// are updated incrementally along i.
 template <typename F>
 void for_each_voxel_within(const Superquadric_data& q, int r, double margin, const F& f)
 {
@@ -257,9 +278,6 @@ void for_each_voxel_within(const Superquadric_data& q, int r, double margin, con
     hi[l] = (std::min)(r - 1, int(std::floor(b)));
     if(!(a <= b) || lo[l] > hi[l]) return;
   }
-  const double lim[3] = {q.a[0] + margin, q.a[1] + margin, q.a[2] + margin};
-  const double p1 = 2. / clamp_exponent(q.e1), p2 = 2. / clamp_exponent(q.e2);
-  const bool round_or_boxy = q.e1 <= 1. && q.e2 <= 1.;
   // local step along the world x axis: R^T e_x h = first row of R times h
   const double step[3] = {q.R[0] * h, q.R[1] * h, q.R[2] * h};
   for(int k = lo[2]; k <= hi[2]; ++k)
@@ -273,20 +291,7 @@ void for_each_voxel_within(const Superquadric_data& q, int r, double margin, con
       {
         const double t = double(i - lo[0]);
         const double x[3] = {x0[0] + t * step[0], x0[1] + t * step[1], x0[2] + t * step[2]};
-        if(std::abs(x[0]) > lim[0] || std::abs(x[1]) > lim[1] || std::abs(x[2]) > lim[2]) continue;
-        // quick accept: the solid contains the octahedron |X|+|Y|+|Z| <= 1, and the ellipsoid
-        // X^2+Y^2+Z^2 <= 1 when both exponents are <= 1 (the gauge decreases with p = 2/eps)
-        const double X = std::abs(x[0]) / q.a[0], Y = std::abs(x[1]) / q.a[1], Z = std::abs(x[2]) / q.a[2];
-        bool inside = X + Y + Z <= 1. || (round_or_boxy && X * X + Y * Y + Z * Z <= 1.);
-        if(!inside && margin == 0.)
-          inside = p_norm_value(p_norm_value(X, Y, p2), Z, p1) <= 1.;
-        else if(!inside)
-        {
-          const double rr = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-          const double u[3] = {x[0] / rr, x[1] / rr, x[2] / rr}; // rr > 0: the centre passed the quick accept
-          inside = rr - 1. / superquadric_gauge(q, u) <= margin;
-        }
-        if(inside) f(i, j, k, idx);
+        if(local_point_within(q, x, margin)) f(i, j, k, idx);
       }
     }
 }

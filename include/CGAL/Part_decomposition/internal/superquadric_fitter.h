@@ -9,15 +9,19 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_SUPERQUADRIC_FITTER_H
 
 // SDFSQFit (paper Alg. A.2): the coarse-to-fine loop of seeds, fits, claims and rejections behind
-// fit_superquadrics(), one method per step of the algorithm.
+// fit_superquadrics(), one method per step of the algorithm, on the leaves of the adaptive grid of
+// the distance field. Volumes, coverage and sample weights are leaf volumes; distances are
+// between leaf centres; lengths are in normalized units, Delta being the side of the finest
+// leaves.
 
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/fit_sdf.h>
-#include <CGAL/Part_decomposition/internal/grid_morphology.h>
+#include <CGAL/Part_decomposition/internal/leaf_distance.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+#include <CGAL/Part_decomposition/internal/superquadric_leaves.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <algorithm>
@@ -114,14 +118,14 @@ public:
   Superquadric_fitter(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf,
                       const Fitting_zones& zones, const std::vector<int>& fitting_resolutions,
                       const Fitting_parameters& parameters)
-    : m_prior(prior), m_tsdf(tsdf), m_zones(zones), m_stage_resolutions(prior.resolutions),
-      m_fitting_resolutions(fitting_resolutions), m_parameters(parameters),
-      m_R(prior.classes.resolution()), m_N(prior.classes.size()), m_RR(std::size_t(m_R)),
-      m_delta(1. / double(m_R)),
-      m_freeze(parameters.use_freeze_zone ? zones.freeze_zone : zones.exterior)
+    : m_prior(prior), m_tsdf(tsdf), m_grid(tsdf.grid), m_zones(zones), m_stage_resolutions(prior.resolutions),
+      m_fitting_resolutions(fitting_resolutions), m_parameters(parameters), m_N(tsdf.grid.number_of_leaves()),
+      m_delta(1. / double(tsdf.grid.finest_resolution())),
+      m_freeze(parameters.use_freeze_zone ? zones.freeze_zone : zones.exterior),
+      m_sample_voxel(1. / double(prior.resolutions.back()))
   {
     m_result.normalization = prior.normalization;
-    m_result.labels = Voxel_grid<std::int32_t>(m_R, -1);
+    m_result.labels.assign(m_N, -1);
   }
 
   Result run()
@@ -142,7 +146,7 @@ public:
     }
     m_times.time(Step_times::MERGE, [&] {
       merge_small_residual_regions();
-      collect_claimed_voxels();
+      collect_claimed_leaves();
     });
     m_result.seconds = seconds_since(start);
     if(m_parameters.verbose) report_times();
@@ -153,13 +157,13 @@ private:
   // Fixed choices, not parameters:
   // - samples above this count are taken on a lattice of stride 2 or 4: bounds the cost of a solve;
   static constexpr std::size_t maximum_samples = 4096;
-  // - spacing of the Flow-zone test samples, in finest voxels (the zone tolerance is >= 4 of them);
+  // - spacing of the Flow-zone test samples, in voxels of Delta (the zone tolerance is >= 4 of them);
   static constexpr double surface_test_spacing = 1.;
   // - a rejected surface seed excludes this fraction of rho: the rest of its component is seeded again;
   static constexpr double surface_exclusion = 0.5;
   // - relative gain below which a solve stops: scipy's default ftol;
   static constexpr double function_tolerance = 1e-8;
-  // - the sample band d_M < 1.5 Delta and M_fit = {d~ <= 2 Delta}, in finest voxels (paper B.1, B.3);
+  // - the sample band d_M < 1.5 Delta and M_fit = {d~ <= 2 Delta} (paper B.1, B.3);
   static constexpr double sample_band = 1.5;
   static constexpr double claim_band = 2.;
   // - a stage tries at most this many seeds per allowed primitive (at least 16 primitives): a
@@ -170,20 +174,19 @@ private:
   {
     int r = 0, r_fit = 0;
     double delta_fit = 0., rho = 0.; // Delta^{r_fit} and the ROI radius, normalized units
-    const Voxel_grid<std::uint8_t>* flow = nullptr;
-    const Voxel_grid<double>* flow_distance = nullptr;
-    std::size_t vmin_body = 0, vmin_surface = 0; // in finest voxels
-    std::size_t valid_voxels = 0, covered_voxels = 0, seeds = 0, rejections_in_a_row = 0;
+    const std::vector<std::uint8_t>* flow = nullptr;
+    double vmin_body = 0., vmin_surface = 0.; // normalized volumes
+    double valid_volume = 0., covered_volume = 0.;
+    std::size_t seeds = 0, rejections_in_a_row = 0;
   };
 
   struct Seed
   {
-    std::size_t voxel = 0;
+    std::size_t leaf = 0;
     bool body = false;
-    double depth_sqd = 0.; // the largest squared EDT of Omega_Body (a body seed's own)
-    std::array<int, 3> ijk = {{0, 0, 0}};
+    double depth_sqd = 0.; // the largest squared distance to the outside of Omega_Body (a body seed's own)
     std::array<double, 3> center = {{0., 0., 0.}};
-    double ball_sqd = 0.; // squared ROI radius in finest voxels
+    double ball_sqd = 0.; // squared ROI radius
   };
 
   struct Initial_superquadric
@@ -208,19 +211,13 @@ private:
     if(!m_parameters.use_tsdf_guidance)
     {
       // without TSDF guidance: -tau in the hull, +tau in ext_void
-      m_binary_field = Voxel_grid<double>(m_R, tau);
-      for(std::size_t v = 0; v < m_N; ++v) m_binary_field[v] = m_zones.exterior[v] ? tau : -tau;
+      m_binary_field.assign(m_N, tau);
+      for(std::size_t l = 0; l < m_N; ++l) m_binary_field[l] = m_zones.exterior[l] ? tau : -tau;
     }
     m_dM = m_parameters.use_tsdf_guidance ? &m_tsdf.values : &m_binary_field;
     if(m_parameters.use_exterior_band_samples) collect_exterior_band();
-    // 2 on the stride-4 lattice, 1 on the stride-2 lattice, else 0
-    m_lattice_level.assign(m_N, 0);
-    for(std::size_t v = 0; v < m_N; ++v)
-    {
-      const std::size_t i = v % m_RR, j = (v / m_RR) % m_RR, k = v / (m_RR * m_RR);
-      const std::size_t o = i | j | k;
-      m_lattice_level[v] = (o & 3) == 0 ? 2 : ((o & 1) == 0 ? 1 : 0);
-    }
+    set_lattice_levels();
+    prepare_hull_distances();
     m_excluded.assign(m_N, 0);
     m_valid.assign(m_N, 0);
     m_spec.assign(m_N, 0);
@@ -232,34 +229,56 @@ private:
     m_settings.function_tolerance = function_tolerance;
   }
 
-  // Exterior evidence: ext_void voxels of the thin outer band, which the ROI (ball minus the
+  // The distance from the centre of each exterior leaf larger than Delta to the nearest centre of
+  // the hull (the leaves that are not exterior), for the Flow-zone test at points.
+  void prepare_hull_distances()
+  {
+    auto coarse = [&](std::size_t l) { return m_zones.exterior[l] && m_grid.size(l) > m_delta * (1. + 1e-9); };
+    m_hull.build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return m_zones.exterior[l] == 0; });
+    m_hull_sqd = leaf_squared_distances<ConcurrencyTag>(
+      m_grid, [&](std::size_t l) { return m_zones.exterior[l] == 0; }, coarse);
+  }
+
+  // Per leaf, the coarsest of the lattices of Delta, 2 Delta, 4 Delta (0, 1, 2) its smallest corner
+  // lies on, -1 for a leaf finer than Delta off the lattice of Delta.
+  void set_lattice_levels()
+  {
+    const int shift = Adaptive_grid::depth_of(m_grid.finest_resolution()) - Adaptive_grid::depth_of(int(std::lround(1. / m_sample_voxel)));
+    const std::uint32_t finer = (std::uint32_t(1) << shift) - 1;
+    m_lattice_level.assign(m_N, 0);
+    for(std::size_t l = 0; l < m_N; ++l)
+    {
+      const Adaptive_grid::Voxel& c = m_grid.corner(l);
+      const std::uint32_t fine = (c[0] | c[1] | c[2]) & finer, o = (c[0] | c[1] | c[2]) >> shift;
+      m_lattice_level[l] = fine != 0 ? -1 : ((o & 3) == 0 ? 2 : ((o & 1) == 0 ? 1 : 0));
+    }
+  }
+
+  // Exterior evidence: ext_void leaves of the thin outer band, which the ROI (ball minus the
   // Freeze zone) would otherwise drop; they are sampled but never claimed.
   void collect_exterior_band()
   {
-    const Voxel_grid<std::uint8_t>& exterior = m_zones.exterior;
-    const Voxel_grid<double>& dM = *m_dM;
+    const std::vector<std::uint8_t>& exterior = m_zones.exterior;
+    const std::vector<double>& dM = *m_dM;
     if(m_parameters.use_tsdf_guidance)
     {
-      for(std::size_t v = 0; v < m_N; ++v)
-        if(exterior[v] && dM[v] < sample_band * m_delta) m_exterior_band_voxels.push_back(v);
+      for(std::size_t l = 0; l < m_N; ++l)
+        if(exterior[l] && dM[l] < sample_band * m_delta) m_exterior_band_leaves.push_back(l);
       return;
     }
-    const Voxel_grid<std::uint8_t> grown = dilate<ConcurrencyTag>(complement(exterior), sample_band);
-    for(std::size_t v = 0; v < m_N; ++v)
-      if(exterior[v] && grown[v]) m_exterior_band_voxels.push_back(v);
+    const double band2 = sample_band * m_delta * sample_band * m_delta * (1. + 1e-12);
+    const std::vector<double> d2 = leaf_squared_distances<ConcurrencyTag>(
+      m_grid, [&](std::size_t l) { return exterior[l] == 0; }, [&](std::size_t l) { return exterior[l] != 0; });
+    for(std::size_t l = 0; l < m_N; ++l)
+      if(exterior[l] && d2[l] <= band2) m_exterior_band_leaves.push_back(l);
   }
 
-  // V_min, given in voxels of r_fit, in voxels of the finest grid. A volume above the grid's is
-  // never reached: clamped to N + 1 voxels, the same comparisons without a cast out of the range
-  // of std::size_t (undefined) for huge parameters.
-  std::size_t finest_voxels(double volume, int r_fit) const
-  {
-    const double v = volume * std::pow(double(m_R) / double(r_fit), 3);
-    return std::size_t(std::ceil((std::min)(v, double(m_N) + 1.) - 1e-9));
-  }
+  // A volume given in voxels of r_fit, in normalized units.
+  static double volume_of_voxels(double voxels, int r_fit) { return voxels / std::pow(double(r_fit), 3); }
 
   // Omega_valid = {R_map <= r} \ Omega_freeze (R_map = 0 inside: valid from the first stage),
-  // Omega_spec = {R_map > r}, Omega_Body = Omega_valid \ claimed, and the EDT of Omega_Body.
+  // Omega_spec = {R_map > r}, Omega_Body = Omega_valid \ claimed, and the distances of Omega_Body
+  // to its outside.
   Stage set_up_stage(std::size_t s)
   {
     Stage st;
@@ -268,26 +287,25 @@ private:
     st.delta_fit = 1. / double(st.r_fit);
     st.rho = m_parameters.roi_radius * st.delta_fit;
     st.flow = &m_zones.flow_zone.at(st.r_fit);
-    st.flow_distance = &m_zones.flow_zone_distance.at(st.r_fit);
-    st.vmin_body = finest_voxels(m_parameters.minimum_body_volume, st.r_fit);
-    st.vmin_surface = finest_voxels(m_parameters.minimum_surface_volume, st.r_fit);
-    const Voxel_grid<std::int32_t>& labels = m_result.labels;
+    st.vmin_body = volume_of_voxels(m_parameters.minimum_body_volume, st.r_fit);
+    st.vmin_surface = volume_of_voxels(m_parameters.minimum_surface_volume, st.r_fit);
+    const std::vector<std::int32_t>& labels = m_result.labels;
     m_body_candidates.clear();
-    for(std::size_t v = 0; v < m_N; ++v)
+    for(std::size_t l = 0; l < m_N; ++l)
     {
-      const int res = int(m_prior.leaf_resolution[v]);
-      m_valid[v] = (!m_freeze[v] && res <= st.r) ? 1 : 0;
-      m_spec[v] = res > st.r ? 1 : 0;
-      m_body[v] = (m_valid[v] && labels[v] < 0) ? 1 : 0;
-      m_excluded[v] = 0;
-      st.valid_voxels += m_valid[v];
-      if(m_valid[v] && labels[v] >= 0) ++st.covered_voxels;
-      if(m_body[v]) m_body_candidates.push_back(v);
+      const int res = int(m_zones.leaf_resolution[l]);
+      m_valid[l] = (!m_freeze[l] && res <= st.r) ? 1 : 0;
+      m_spec[l] = res > st.r ? 1 : 0;
+      m_body[l] = (m_valid[l] && labels[l] < 0) ? 1 : 0;
+      m_excluded[l] = 0;
+      if(m_valid[l]) st.valid_volume += m_grid.volume(l);
+      if(m_valid[l] && labels[l] >= 0) st.covered_volume += m_grid.volume(l);
+      if(m_body[l]) m_body_candidates.push_back(l);
     }
-    // in voxels^2, lowered incrementally as claims grow (A.2)
-    Voxel_grid<std::uint8_t> not_body(m_R, 0);
-    for(std::size_t v = 0; v < m_N; ++v) not_body[v] = m_body[v] ? 0 : 1;
-    m_body_sqd = squared_distance_transform<ConcurrencyTag>(not_body);
+    // lowered incrementally as claims grow (A.2)
+    m_body_sqd = leaf_squared_distances<ConcurrencyTag>(
+      m_grid, [&](std::size_t l) { return m_body[l] == 0; }, [&](std::size_t l) { return m_body[l] != 0; });
+    m_flow_outside.build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return (*st.flow)[l] == 0; }, true);
     return st;
   }
 
@@ -296,18 +314,18 @@ private:
     const std::size_t seed_limit =
       seeds_per_primitive * (std::max<std::size_t>)(m_parameters.maximum_number_of_primitives, 16);
     const std::size_t rejection_limit = m_parameters.maximum_rejections_in_a_row;
-    return st.valid_voxels > 0 && double(st.covered_voxels) < m_parameters.coverage_target * double(st.valid_voxels) &&
+    return st.valid_volume > 0. && st.covered_volume < m_parameters.coverage_target * st.valid_volume &&
            m_result.primitives.size() < m_parameters.maximum_number_of_primitives && st.seeds < seed_limit &&
            (rejection_limit == 0 || st.rejections_in_a_row < rejection_limit);
   }
 
   void end_stage(const Stage& st)
   {
-    m_result.stage_coverage.push_back(st.valid_voxels > 0 ? double(st.covered_voxels) / double(st.valid_voxels) : 1.);
+    m_result.stage_coverage.push_back(st.valid_volume > 0. ? st.covered_volume / st.valid_volume : 1.);
     if(m_parameters.verbose)
       std::cerr << "stage " << st.r << " (r_fit " << st.r_fit << "): coverage " << m_result.stage_coverage.back()
-                << " of " << st.valid_voxels << " valid voxels, " << m_result.primitives.size() << " primitives, "
-                << st.seeds << " seeds\n";
+                << " of a valid volume of " << st.valid_volume << ", " << m_result.primitives.size()
+                << " primitives, " << st.seeds << " seeds\n";
   }
 
   // ---- BodyOrSurfaceSeed (A.2-A.4)
@@ -315,28 +333,27 @@ private:
   // false if no seed is left in the stage
   bool pick_seed(const Stage& st, Seed& seed)
   {
-    deepest_body_voxel(seed);
-    seed.body = m_parameters.use_body_seeds && seed.voxel < m_N &&
-                std::sqrt(seed.depth_sqd) * m_delta >= m_parameters.body_seed_threshold * st.delta_fit;
+    deepest_body_leaf(seed);
+    seed.body = m_parameters.use_body_seeds && seed.leaf < m_N &&
+                std::sqrt(seed.depth_sqd) >= m_parameters.body_seed_threshold * st.delta_fit;
     if(!seed.body && !surface_seed(st, seed)) return false;
-    seed.ijk = m_prior.classes.coordinates(seed.voxel);
-    seed.center = m_prior.classes.center(seed.voxel);
-    seed.ball_sqd = (st.rho / m_delta) * (st.rho / m_delta) * (1. + 1e-12);
+    seed.center = m_grid.center(seed.leaf);
+    seed.ball_sqd = st.rho * st.rho * (1. + 1e-12);
     return true;
   }
 
-  // The EDT maximum of the candidates still in Omega_Body and not excluded (dropping the others).
-  void deepest_body_voxel(Seed& seed)
+  // The deepest of the candidates still in Omega_Body and not excluded (dropping the others).
+  void deepest_body_leaf(Seed& seed)
   {
-    seed.voxel = m_N;
+    seed.leaf = m_N;
     seed.depth_sqd = 0.;
     std::size_t kept = 0;
     for(std::size_t c = 0; c < m_body_candidates.size(); ++c)
     {
-      const std::size_t v = m_body_candidates[c];
-      if(!m_body[v] || m_excluded[v]) continue;
-      m_body_candidates[kept++] = v;
-      if(m_body_sqd[v] > seed.depth_sqd) seed.depth_sqd = m_body_sqd[v], seed.voxel = v;
+      const std::size_t l = m_body_candidates[c];
+      if(!m_body[l] || m_excluded[l]) continue;
+      m_body_candidates[kept++] = l;
+      if(m_body_sqd[l] > seed.depth_sqd) seed.depth_sqd = m_body_sqd[l], seed.leaf = l;
     }
     m_body_candidates.resize(kept);
   }
@@ -344,25 +361,25 @@ private:
   // The candidate nearest the centroid of the largest 6-connected component of the candidates.
   bool surface_seed(const Stage& st, Seed& seed)
   {
-    Voxel_grid<std::uint8_t> open(m_R, 0);
-    for(std::size_t v : m_body_candidates) open[v] = 1;
-    const Grid_components comps = connected_components(open);
+    m_candidate_mark.reset(m_N);
+    for(std::size_t l : m_body_candidates) m_candidate_mark.insert(l);
+    const Leaf_components comps =
+      leaf_components(m_grid, [&](std::size_t l) { return m_candidate_mark.contains(l); }, &m_body_candidates);
     std::size_t best = comps.size();
     for(std::size_t c = 0; c < comps.size(); ++c)
-      if(comps.sizes[c] >= st.vmin_surface && (best == comps.size() || comps.sizes[c] > comps.sizes[best])) best = c;
+      if(comps.volumes[c] >= st.vmin_surface && (best == comps.size() || comps.volumes[c] > comps.volumes[best])) best = c;
     // components below V_min cannot be accepted: left to the final merge
-    for(std::size_t v : m_body_candidates)
-      if(best == comps.size() || comps.sizes[std::size_t(comps.labels[v])] < st.vmin_surface) m_excluded[v] = 1;
+    for(std::size_t l : m_body_candidates)
+      if(best == comps.size() || comps.volumes[std::size_t(comps.labels[l])] < st.vmin_surface) m_excluded[l] = 1;
     if(best == comps.size()) return false;
     const std::array<double, 3>& g = comps.centroids[best];
     double best_d = std::numeric_limits<double>::infinity();
-    for(std::size_t v : m_body_candidates)
-      if(comps.labels[v] == int(best))
+    for(std::size_t l : m_body_candidates)
+      if(comps.labels[l] == int(best))
       {
-        const std::array<int, 3> ijk = m_prior.classes.coordinates(v);
-        const double d = (ijk[0] - g[0]) * (ijk[0] - g[0]) + (ijk[1] - g[1]) * (ijk[1] - g[1]) +
-                         (ijk[2] - g[2]) * (ijk[2] - g[2]);
-        if(d < best_d) best_d = d, seed.voxel = v;
+        const std::array<double, 3> c = m_grid.center(l);
+        const double d = (c[0] - g[0]) * (c[0] - g[0]) + (c[1] - g[1]) * (c[1] - g[1]) + (c[2] - g[2]) * (c[2] - g[2]);
+        if(d < best_d) best_d = d, seed.leaf = l;
       }
     return true;
   }
@@ -388,8 +405,8 @@ private:
       reject(st, seed);
       return;
     }
-    const std::size_t net = m_times.time(Step_times::CLAIM, [&] { return claim(outcome.fit.theta); });
-    if(net < (seed.body ? st.vmin_body : st.vmin_surface))
+    const double net = m_times.time(Step_times::CLAIM, [&] { return claim(outcome.fit.theta); });
+    if(net < (seed.body ? st.vmin_body : st.vmin_surface) * (1. - 1e-9))
     {
       ++m_result.rejected_by_volume;
       report_rejection(st, seed, "net claim below V_min");
@@ -399,37 +416,36 @@ private:
     m_times.time(Step_times::CLAIM, [&] { accept(st, seed, outcome); });
   }
 
-  bool in_seed_ball(const Seed& seed, int i, int j, int k) const
+  bool in_seed_ball(const Seed& seed, std::size_t l) const
   {
-    const std::array<int, 3>& s = seed.ijk;
-    const double d2 = double((i - s[0]) * (i - s[0]) + (j - s[1]) * (j - s[1]) + (k - s[2]) * (k - s[2]));
+    const std::array<double, 3> c = m_grid.center(l);
+    const double d2 = (c[0] - seed.center[0]) * (c[0] - seed.center[0]) + (c[1] - seed.center[1]) * (c[1] - seed.center[1]) +
+                      (c[2] - seed.center[2]) * (c[2] - seed.center[2]);
     return d2 <= seed.ball_sqd;
   }
 
-  // ROI = ball(s, rho) n Omega_valid \ claimed, and in m_reached the voxels the claim may start from.
+  // ROI = ball(s, rho) n Omega_valid \ claimed, and in m_reached the leaves the claim may start from.
   void select_region_of_interest(const Stage& st, const Seed& seed)
   {
-    m_roi_voxels.clear();
+    m_roi_leaves.clear();
     m_reached.reset(m_N);
     if(m_parameters.use_reachable_regions) reachable_region(seed);
     else ball_region(st, seed);
   }
 
-  // The part of the ball reachable from the seed without crossing Freeze or claimed voxels.
+  // The part of the ball reachable from the seed without crossing Freeze or claimed leaves.
   void reachable_region(const Seed& seed)
   {
-    const Voxel_grid<std::int32_t>& labels = m_result.labels;
+    const std::vector<std::int32_t>& labels = m_result.labels;
     m_queue.clear();
-    m_queue.push_back(seed.voxel);
-    m_reached.insert(seed.voxel);
+    m_queue.push_back(seed.leaf);
+    m_reached.insert(seed.leaf);
     for(std::size_t head = 0; head < m_queue.size(); ++head)
     {
-      const std::size_t v = m_queue[head];
-      if(m_valid[v] && labels[v] < 0) m_roi_voxels.push_back(v);
-      for_each_face_neighbor(v, m_RR, [&](std::size_t n) {
-        if(m_reached.contains(n) || m_freeze[n] || labels[n] >= 0) return;
-        const std::array<int, 3> c = m_prior.classes.coordinates(n);
-        if(!in_seed_ball(seed, c[0], c[1], c[2])) return;
+      const std::size_t l = m_queue[head];
+      if(m_valid[l] && labels[l] < 0) m_roi_leaves.push_back(l);
+      m_grid.for_each_neighbor(l, [&](std::size_t n) {
+        if(m_reached.contains(n) || m_freeze[n] || labels[n] >= 0 || !in_seed_ball(seed, n)) return;
         m_reached.insert(n);
         m_queue.push_back(n);
       });
@@ -438,46 +454,41 @@ private:
 
   void ball_region(const Stage& st, const Seed& seed)
   {
-    const Voxel_grid<std::int32_t>& labels = m_result.labels;
-    const std::array<int, 3>& s = seed.ijk;
-    const int ball = int(std::ceil((std::min)(st.rho / m_delta, 2. * m_R))); // the grid at most
-    for(int k = (std::max)(0, s[2] - ball); k <= (std::min)(m_R - 1, s[2] + ball); ++k)
-      for(int j = (std::max)(0, s[1] - ball); j <= (std::min)(m_R - 1, s[1] + ball); ++j)
-        for(int i = (std::max)(0, s[0] - ball); i <= (std::min)(m_R - 1, s[0] + ball); ++i)
-        {
-          const std::size_t v = m_prior.classes.index(i, j, k);
-          if(m_valid[v] && labels[v] < 0 && in_seed_ball(seed, i, j, k))
-          {
-            m_roi_voxels.push_back(v);
-            m_reached.insert(v);
-          }
-        }
+    const std::vector<std::int32_t>& labels = m_result.labels;
+    const std::array<double, 3>& s = seed.center;
+    m_grid.for_each_leaf_in_box({{s[0] - st.rho, s[1] - st.rho, s[2] - st.rho}},
+                                {{s[0] + st.rho, s[1] + st.rho, s[2] + st.rho}}, [&](std::size_t l) {
+                                  if(m_valid[l] && labels[l] < 0 && in_seed_ball(seed, l)) m_roi_leaves.push_back(l);
+                                });
+    std::sort(m_roi_leaves.begin(), m_roi_leaves.end());
+    for(std::size_t l : m_roi_leaves) m_reached.insert(l);
   }
 
-  // P_s: ROI voxels of the band d_M < 1.5 Delta plus exterior evidence in the ball (B.1), on the
-  // densest lattice (stride 1, 2 or 4) that keeps at most maximum_samples of them.
+  // P_s: ROI leaves of the band d_M < 1.5 Delta plus exterior evidence in the ball (B.1), on the
+  // densest lattice (stride 1, 2 or 4 voxels of Delta) that keeps at most maximum_samples of them;
+  // each stands for its volume, or the lattice cell's if that is larger, in lattice cells (the
+  // solver is not quite invariant under a common scale of the weights).
   void collect_samples(const Seed& seed)
   {
-    const Voxel_grid<double>& dM = *m_dM;
-    m_sample_voxels.clear();
-    for(std::size_t v : m_roi_voxels)
-      if(dM[v] < sample_band * m_delta) m_sample_voxels.push_back(v);
-    for(std::size_t v : m_exterior_band_voxels)
-    {
-      const int i = int(v % m_RR), j = int((v / m_RR) % m_RR), k = int(v / (m_RR * m_RR));
-      if(in_seed_ball(seed, i, j, k)) m_sample_voxels.push_back(v);
-    }
+    const std::vector<double>& dM = *m_dM;
+    m_sample_leaves.clear();
+    for(std::size_t l : m_roi_leaves)
+      if(dM[l] < sample_band * m_delta) m_sample_leaves.push_back(l);
+    for(std::size_t l : m_exterior_band_leaves)
+      if(in_seed_ball(seed, l)) m_sample_leaves.push_back(l);
     std::size_t count[3] = {0, 0, 0};
-    for(std::size_t v : m_sample_voxels)
-      for(int l = 0; l <= int(m_lattice_level[v]); ++l) ++count[l];
+    for(std::size_t l : m_sample_leaves)
+      for(int level = 0; level <= int(m_lattice_level[l]); ++level) ++count[level];
     int level = 0;
     while(level < 2 && count[level] > maximum_samples) ++level;
+    const double voxel_volume = std::pow(m_sample_voxel, 3), cell = std::pow(double(1 << level), 3);
     m_samples.clear();
-    for(std::size_t v : m_sample_voxels)
-      if(int(m_lattice_level[v]) >= level)
+    for(std::size_t l : m_sample_leaves)
+      if(int(m_lattice_level[l]) >= level)
       {
-        const std::array<double, 3> c = m_prior.classes.center(v);
-        m_samples.push_back(c[0], c[1], c[2], dM[v]);
+        const std::array<double, 3> c = m_grid.center(l);
+        const double volume = m_grid.volume(l) / voxel_volume;
+        m_samples.push_back(c[0], c[1], c[2], dM[l], (std::max)(volume, cell) / cell);
       }
     m_result.number_of_samples += m_samples.size();
   }
@@ -490,8 +501,8 @@ private:
     const std::array<double, 3>& s = seed.center;
     const double rho = st.rho;
     const double a_lower = st.delta_fit / 4., a_upper = (std::max)(rho, st.delta_fit / 4.);
-    const double a0 =
-      (std::min)(a_upper, (std::max)(a_lower, (std::min)(st.delta_fit, (*st.flow_distance)[seed.voxel])));
+    const double to_outside = (*st.flow)[seed.leaf] ? std::sqrt(m_flow_outside.squared_distance(seed.leaf)) : 0.;
+    const double a0 = (std::min)(a_upper, (std::max)(a_lower, (std::min)(st.delta_fit, to_outside)));
     for(int i = 0; i < 3; ++i) init.theta.a[i] = a0, init.theta.c[i] = s[i];
     const double inf = std::numeric_limits<double>::infinity();
     const double e_min = superquadric_minimum_exponent;
@@ -529,49 +540,62 @@ private:
 
   bool surface_in_flow_zone(const Stage& st, const Superquadric_data& theta) const
   {
-    const Voxel_grid<std::uint8_t>& flow = *st.flow;
     return for_each_surface_sample(theta, surface_test_spacing * m_delta, [&](const double p[3]) {
       for(int l = 0; l < 3; ++l)
         if(!(p[l] >= -0.5 && p[l] <= 0.5)) return false;
-      const std::size_t v = m_prior.classes.index(voxel_coordinate(p[0], m_R), voxel_coordinate(p[1], m_R),
-                                                  voxel_coordinate(p[2], m_R));
-      return flow[v] != 0;
+      return in_flow_zone(st, p);
     });
   }
 
-  // ---- Claim: M_fit = {d~ <= 2 Delta} minus Freeze and claimed voxels, kept where connected to
-  // the seed's region; returns the net volume, without the voxels reserved for finer stages (B.3).
-  std::size_t claim(const Superquadric_data& theta)
+  // Whether the point p is in the Flow zone: in a leaf of the zone no larger than Delta, as the
+  // zone is defined at leaf centres; in a larger exterior leaf, if p itself lies within the
+  // tolerance of a centre of the hull (a leaf is not the unit of the test where it is coarse).
+  bool in_flow_zone(const Stage& st, const double p[3]) const
   {
-    const Voxel_grid<std::int32_t>& labels = m_result.labels;
+    const std::size_t l = m_grid.locate(p[0], p[1], p[2]);
+    if(!m_zones.exterior[l] || m_grid.size(l) <= m_delta * (1. + 1e-9)) return (*st.flow)[l] != 0;
+    const double radius = m_parameters.flow_zone_tolerance * st.delta_fit, reach = 0.5 * std::sqrt(3.) * m_grid.size(l);
+    const double d = std::sqrt(m_hull_sqd[l]);
+    if(d + reach <= radius) return true;
+    if(d - reach > radius) return false;
+    const std::array<double, 3> q = {{p[0], p[1], p[2]}};
+    return m_hull.nearest(q).second <= radius * radius * (1. + 1e-12);
+  }
+
+  // ---- Claim: M_fit = {d~ <= 2 Delta} minus Freeze and claimed leaves, kept where connected to
+  // the seed's region; returns the net volume, without the leaves reserved for finer stages (B.3).
+  double claim(const Superquadric_data& theta)
+  {
+    const std::vector<std::int32_t>& labels = m_result.labels;
     m_claim.clear();
     m_claim_mark.reset(m_N);
-    for_each_voxel_within(theta, m_R, claim_band * m_delta, [&](int, int, int, std::size_t v) {
-      if(!m_freeze[v] && labels[v] < 0)
+    for_each_leaf_within(theta, m_grid, claim_band * m_delta, [&](std::size_t l) {
+      if(!m_freeze[l] && labels[l] < 0)
       {
-        m_claim.push_back(v);
-        m_claim_mark.insert(v);
+        m_claim.push_back(l);
+        m_claim_mark.insert(l);
       }
     });
+    std::sort(m_claim.begin(), m_claim.end());
     if(m_parameters.use_reachable_regions) keep_claim_connected_to_region();
-    std::size_t net = 0;
-    for(std::size_t v : m_claim) net += m_spec[v] ? 0 : 1;
+    double net = 0.;
+    for(std::size_t l : m_claim) net += m_spec[l] ? 0. : m_grid.volume(l);
     return net;
   }
 
-  // A claim never jumps across a Freeze wall: keep its voxels connected to the reachable region.
+  // A claim never jumps across a Freeze wall: keep its leaves connected to the reachable region.
   void keep_claim_connected_to_region()
   {
     m_queue.clear();
     m_kept.reset(m_N);
-    for(std::size_t v : m_claim)
-      if(m_reached.contains(v))
+    for(std::size_t l : m_claim)
+      if(m_reached.contains(l))
       {
-        m_kept.insert(v);
-        m_queue.push_back(v);
+        m_kept.insert(l);
+        m_queue.push_back(l);
       }
     for(std::size_t head = 0; head < m_queue.size(); ++head)
-      for_each_face_neighbor(m_queue[head], m_RR, [&](std::size_t n) {
+      m_grid.for_each_neighbor(m_queue[head], [&](std::size_t n) {
         if(m_claim_mark.contains(n) && !m_kept.contains(n))
         {
           m_kept.insert(n);
@@ -579,32 +603,71 @@ private:
         }
       });
     std::size_t m = 0;
-    for(std::size_t v : m_claim)
-      if(m_kept.contains(v)) m_claim[m++] = v;
+    for(std::size_t l : m_claim)
+      if(m_kept.contains(l)) m_claim[m++] = l;
     m_claim.resize(m);
   }
 
-  // ---- Accept (claimed voxels include reserved voxels of finer stages, Alg. A.2 line 22) or reject
+  // ---- Accept (claimed leaves include reserved leaves of finer stages, Alg. A.2 line 22) or reject
 
   void accept(Stage& st, const Seed& seed, const Fit_outcome& outcome)
   {
-    Voxel_grid<std::int32_t>& labels = m_result.labels;
+    std::vector<std::int32_t>& labels = m_result.labels;
     const std::int32_t label = std::int32_t(m_result.primitives.size());
     m_new_body_features.clear();
-    for(std::size_t v : m_claim)
+    for(std::size_t l : m_claim)
     {
-      labels[v] = label;
-      if(m_valid[v]) ++st.covered_voxels;
-      if(m_body[v])
+      labels[l] = label;
+      if(m_valid[l]) st.covered_volume += m_grid.volume(l);
+      if(m_body[l])
       {
-        m_body[v] = 0;
-        m_new_body_features.push_back(v);
+        m_body[l] = 0;
+        m_new_body_features.push_back(l);
       }
     }
-    m_excluded[seed.voxel] = 1;
+    m_excluded[seed.leaf] = 1;
     st.rejections_in_a_row = 0;
-    add_features_to_squared_distance_transform<ConcurrencyTag>(m_body_sqd, m_new_body_features);
+    lower_body_distances();
     record_primitive(st, seed, outcome);
+  }
+
+  // The candidates' distances to the outside of Omega_Body after the leaves of
+  // m_new_body_features left it: only those nearer the box of the new leaves than their distance
+  // can change.
+  void lower_body_distances()
+  {
+    if(m_new_body_features.empty()) return;
+    std::array<double, 3> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for(std::size_t l : m_new_body_features)
+    {
+      const std::array<double, 3> c = m_grid.center(l);
+      for(int a = 0; a < 3; ++a) lo[a] = (std::min)(lo[a], c[a]), hi[a] = (std::max)(hi[a], c[a]);
+    }
+    m_affected.clear();
+    for(std::size_t l : m_body_candidates)
+    {
+      if(!m_body[l]) continue;
+      const std::array<double, 3> c = m_grid.center(l);
+      double d2 = 0.;
+      for(int a = 0; a < 3; ++a)
+      {
+        const double e = (std::max)((std::max)(lo[a] - c[a], c[a] - hi[a]), 0.);
+        d2 += e * e;
+      }
+      if(d2 < m_body_sqd[l]) m_affected.push_back(l);
+    }
+    if(m_affected.empty()) return;
+    Leaf_feature_search added;
+    added.build_on<ConcurrencyTag>(m_grid, m_new_body_features);
+    for_each_range<ConcurrencyTag>(m_affected.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
+      {
+        const std::size_t l = m_affected[i];
+        m_body_sqd[l] = (std::min)(m_body_sqd[l], added.squared_distance(l));
+      }
+    }, 256);
   }
 
   void record_primitive(const Stage& st, const Seed& seed, const Fit_outcome& outcome)
@@ -613,14 +676,14 @@ private:
     const Superquadric<GeomTraits> sq(q);
     if(m_parameters.verbose)
       std::cerr << "  SQ " << m_result.primitives.size() << " stage " << st.r << (seed.body ? " body" : " surface")
-                << " seed " << seed.voxel << " a = (" << q.a[0] << ", " << q.a[1] << ", " << q.a[2] << ") eps = ("
-                << q.e1 << ", " << q.e2 << ") eta " << outcome.eta << " claim " << m_claim.size() << " samples "
+                << " seed " << seed.leaf << " a = (" << q.a[0] << ", " << q.a[1] << ", " << q.a[2] << ") eps = ("
+                << q.e1 << ", " << q.e2 << ") eta " << outcome.eta << " claim " << m_claim.size() << " leaves, samples "
                 << m_samples.size() << "\n";
     m_result.primitives.push_back(sq);
     m_result.input_primitives.push_back(sq.in_input_coordinates(m_prior.normalization));
     m_result.stage_resolution.push_back(st.r);
     m_result.body_seeded.push_back(seed.body);
-    m_result.seed_voxel.push_back(seed.voxel);
+    m_result.seed_leaf.push_back(seed.leaf);
     m_result.semi_axis_scale.push_back(outcome.eta);
     m_result.fit_cost.push_back(outcome.fit.cost);
   }
@@ -628,8 +691,8 @@ private:
   void report_rejection(const Stage& st, const Seed& seed, const char* reason) const
   {
     if(m_parameters.verbose)
-      std::cerr << "  rejected: stage " << st.r << (seed.body ? " body" : " surface") << " seed " << seed.voxel
-                << ", ROI of " << m_roi_voxels.size() << " voxels: " << reason << "\n";
+      std::cerr << "  rejected: stage " << st.r << (seed.body ? " body" : " surface") << " seed " << seed.leaf
+                << ", ROI of " << m_roi_leaves.size() << " leaves: " << reason << "\n";
   }
 
   // Excludes the seed from later seeds of the stage and, with seed exclusion, the ball around it
@@ -640,71 +703,71 @@ private:
     ++m_result.number_of_rejected_seeds;
     ++st.rejections_in_a_row;
     if(m_parameters.use_seed_exclusion)
-      exclude_ball(seed.ijk, seed.body ? (std::max)(1., std::sqrt(seed.depth_sqd))
-                                       : (std::max)(1., (surface_exclusion * st.rho) / m_delta));
-    m_excluded[seed.voxel] = 1;
+      exclude_ball(seed.center, seed.body ? (std::max)(m_delta, std::sqrt(seed.depth_sqd))
+                                          : (std::max)(m_delta, surface_exclusion * st.rho));
+    m_excluded[seed.leaf] = 1;
   }
 
-  void exclude_ball(const std::array<int, 3>& s, double radius)
+  void exclude_ball(const std::array<double, 3>& s, double radius)
   {
-    // a ball wider than the grid covers it all: the loop bound is clamped before the cast
-    const int ir = int(std::floor((std::min)(radius, 2. * m_R)));
-    for(int k = (std::max)(0, s[2] - ir); k <= (std::min)(m_R - 1, s[2] + ir); ++k)
-      for(int j = (std::max)(0, s[1] - ir); j <= (std::min)(m_R - 1, s[1] + ir); ++j)
-        for(int i = (std::max)(0, s[0] - ir); i <= (std::min)(m_R - 1, s[0] + ir); ++i)
-        {
-          const double d2 = double((i - s[0]) * (i - s[0]) + (j - s[1]) * (j - s[1]) + (k - s[2]) * (k - s[2]));
-          if(d2 <= radius * radius) m_excluded[m_prior.classes.index(i, j, k)] = 1;
-        }
+    const double r2 = radius * radius * (1. + 1e-12);
+    m_grid.for_each_leaf_in_box({{s[0] - radius, s[1] - radius, s[2] - radius}},
+                                {{s[0] + radius, s[1] + radius, s[2] + radius}}, [&](std::size_t l) {
+                                  const std::array<double, 3> c = m_grid.center(l);
+                                  const double d2 = (c[0] - s[0]) * (c[0] - s[0]) + (c[1] - s[1]) * (c[1] - s[1]) +
+                                                    (c[2] - s[2]) * (c[2] - s[2]);
+                                  if(d2 <= r2) m_excluded[l] = 1;
+                                });
   }
 
   // ---- Small residual regions merged into the nearest primitive: unclaimed, non-Freeze components
-  // of the hull smaller than V_min (surface, last stage) take the label of the nearest claimed voxel,
-  // by a breadth-first search from all claimed voxels through the hull (6-neighbour steps; ties go
-  // to the voxel reached first from the lowest claimed index).
+  // of the hull smaller than V_min (surface, last stage) take the label of the nearest claimed leaf,
+  // by a breadth-first search from all claimed leaves through the hull (face-neighbour steps; ties
+  // go to the leaf reached first from the lowest claimed index).
   void merge_small_residual_regions()
   {
-    Voxel_grid<std::int32_t>& labels = m_result.labels;
+    std::vector<std::int32_t>& labels = m_result.labels;
     if(m_result.primitives.empty()) return;
-    const int r_fit_last = m_fitting_resolutions.empty() ? m_R : m_fitting_resolutions.back();
-    const std::size_t vmin = finest_voxels(m_parameters.minimum_surface_volume, r_fit_last);
-    Voxel_grid<std::uint8_t> residual(m_R, 0);
-    for(std::size_t v = 0; v < m_N; ++v) residual[v] = (!m_freeze[v] && labels[v] < 0) ? 1 : 0;
-    const Grid_components comps = connected_components(residual);
-    auto is_target = [&](std::size_t v) {
-      return residual[v] && comps.sizes[std::size_t(comps.labels[v])] < vmin;
+    const int r_fit_last = m_fitting_resolutions.empty() ? m_stage_resolutions.back() : m_fitting_resolutions.back();
+    const double vmin = volume_of_voxels(m_parameters.minimum_surface_volume, r_fit_last);
+    auto residual = [&](std::size_t l) { return !m_freeze[l] && labels[l] < 0; };
+    const Leaf_components comps = leaf_components(m_grid, residual);
+    auto is_target = [&](std::size_t l) {
+      return residual(l) && comps.volumes[std::size_t(comps.labels[l])] < vmin * (1. - 1e-9);
     };
     std::size_t targets = 0;
-    for(std::size_t v = 0; v < m_N; ++v)
-      if(is_target(v)) ++targets;
+    for(std::size_t l = 0; l < m_N; ++l)
+      if(is_target(l)) ++targets;
     if(targets == 0) return;
-    std::vector<std::int32_t> reached(labels.values());
+    std::vector<std::uint8_t> target(m_N, 0);
+    for(std::size_t l = 0; l < m_N; ++l) target[l] = is_target(l) ? 1 : 0;
+    std::vector<std::int32_t> reached(labels);
     m_queue.clear();
-    for(std::size_t v = 0; v < m_N; ++v)
-      if(labels[v] >= 0) m_queue.push_back(v);
+    for(std::size_t l = 0; l < m_N; ++l)
+      if(labels[l] >= 0) m_queue.push_back(l);
     for(std::size_t head = 0; head < m_queue.size() && targets > 0; ++head)
     {
-      const std::size_t v = m_queue[head];
-      for_each_face_neighbor(v, m_RR, [&](std::size_t n) {
+      const std::size_t l = m_queue[head];
+      m_grid.for_each_neighbor(l, [&](std::size_t n) {
         if(reached[n] >= 0 || m_zones.exterior[n]) return;
-        reached[n] = reached[v];
+        reached[n] = reached[l];
         m_queue.push_back(n);
-        if(is_target(n))
+        if(target[n])
         {
-          labels[n] = reached[v];
-          ++m_result.merged_voxels;
+          labels[n] = reached[l];
+          ++m_result.merged_leaves;
           --targets;
         }
       });
     }
   }
 
-  void collect_claimed_voxels()
+  void collect_claimed_leaves()
   {
-    const Voxel_grid<std::int32_t>& labels = m_result.labels;
-    m_result.claimed_voxels.assign(m_result.primitives.size(), std::vector<std::size_t>());
-    for(std::size_t v = 0; v < m_N; ++v)
-      if(labels[v] >= 0) m_result.claimed_voxels[std::size_t(labels[v])].push_back(v);
+    const std::vector<std::int32_t>& labels = m_result.labels;
+    m_result.claimed_leaves.assign(m_result.primitives.size(), std::vector<std::size_t>());
+    for(std::size_t l = 0; l < m_N; ++l)
+      if(labels[l] >= 0) m_result.claimed_leaves[std::size_t(labels[l])].push_back(l);
   }
 
   void report_times() const
@@ -716,41 +779,47 @@ private:
               << m_times.milliseconds(T::CLAIM) << ", merge " << m_times.milliseconds(T::MERGE) << ", total "
               << 1e3 * m_result.seconds << "; " << m_result.number_of_seeds << " seeds, "
               << m_result.number_of_solves << " solves, " << m_result.number_of_evaluations << " evaluations of "
-              << m_result.number_of_samples << " samples\n";
+              << m_result.number_of_samples << " samples, " << m_N << " leaves\n";
   }
 
   // inputs
   const Hierarchical_prior& m_prior;
   const Truncated_signed_distance_field& m_tsdf;
+  const Adaptive_grid& m_grid;
   const Fitting_zones& m_zones;
   const std::vector<int>& m_stage_resolutions;
   const std::vector<int>& m_fitting_resolutions;
   const Fitting_parameters m_parameters;
-  const int m_R;
-  const std::size_t m_N, m_RR;
-  const double m_delta; // Delta of the finest grid
-  const Voxel_grid<std::uint8_t>& m_freeze; // the Freeze zone, or the exterior without it
+  const std::size_t m_N;
+  const double m_delta; // Delta: the side of the finest leaves, the unit of the bands
+  const std::vector<std::uint8_t>& m_freeze; // the Freeze zone, or the exterior without it
+  const double m_sample_voxel; // the voxel of the finest prior resolution: the unit of the sample lattices
 
   // fields of the run
-  Voxel_grid<double> m_binary_field;          // d_M without TSDF guidance
-  const Voxel_grid<double>* m_dM = nullptr;   // d_M as the fit sees it
-  std::vector<std::size_t> m_exterior_band_voxels;
-  std::vector<std::uint8_t> m_lattice_level;  // 2 on the stride-4 lattice, 1 on stride 2, else 0
+  std::vector<double> m_binary_field;          // d_M without TSDF guidance
+  const std::vector<double>* m_dM = nullptr;   // d_M as the fit sees it
+  std::vector<std::size_t> m_exterior_band_leaves;
+  std::vector<std::int8_t> m_lattice_level;    // see set_lattice_levels()
   Fit_sdf_settings m_settings;
 
   // sets of the current stage
   std::vector<std::uint8_t> m_valid, m_spec, m_body, m_excluded;
-  std::vector<std::size_t> m_body_candidates; // Omega_Body voxels not yet excluded (compacted lazily)
-  Voxel_grid<double> m_body_sqd;              // squared EDT of Omega_Body, in voxels^2
+  std::vector<std::size_t> m_body_candidates; // Omega_Body leaves not yet excluded (compacted lazily)
+  std::vector<double> m_body_sqd;             // squared distance of Omega_Body to its outside
+  Leaf_feature_search m_flow_outside;         // the leaves outside the stage's Flow zone
+  Leaf_feature_search m_hull;                 // the leaves that are not exterior
+  std::vector<double> m_hull_sqd;             // per coarse exterior leaf, its squared distance to them
+  std::vector<std::size_t> m_affected;        // candidates whose distance may drop
 
   // buffers of the current seed
-  Stamp_set m_reached;                        // voxels of the seed's region
-  std::vector<std::size_t> m_roi_voxels, m_sample_voxels;
+  Stamp_set m_reached;                        // leaves of the seed's region
+  Stamp_set m_candidate_mark;                 // the surface seed's candidates
+  std::vector<std::size_t> m_roi_leaves, m_sample_leaves;
   Fit_samples m_samples;
   Fit_sdf_workspace m_workspace;
   std::vector<std::size_t> m_claim;
   Stamp_set m_claim_mark, m_kept;             // M_fit candidates; those connected to the region
-  std::vector<std::size_t> m_new_body_features; // voxels that left Omega_Body with an acceptance
+  std::vector<std::size_t> m_new_body_features; // leaves that left Omega_Body with an acceptance
   std::vector<std::size_t> m_queue;           // breadth-first searches
 
   Result m_result;

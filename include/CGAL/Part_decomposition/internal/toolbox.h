@@ -208,6 +208,8 @@ void group_indices(std::size_t n, std::size_t number_of_keys, const Key& key, co
 // ---- 3D vectors of doubles (the inner loops work on plain arrays, not on kernel objects)
 
 typedef std::array<double, 3> Vec3;
+// the three corners of a triangle
+typedef std::array<Vec3, 3> Triangle_points;
 
 inline Vec3 sub3(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
 inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }

@@ -34,8 +34,6 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-typedef std::array<Vec3, 3> Triangle_points;
-
 // Signed solid angle of triangle (a,b,c) seen from q (Van Oosterom-Strackee), in [-2pi, 2pi];
 // positive when q is on the side opposite to the normal (b-a)x(c-a), i.e. behind the triangle.
 inline double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& q)

@@ -5,8 +5,8 @@
 //
 // Author(s)     : The Part_decomposition authors
 
-#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_FLOW_FREEZE_OCTREE_H
-#define CGAL_PART_DECOMPOSITION_INTERNAL_FLOW_FREEZE_OCTREE_H
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_UNIT_CUBE_OCTREE_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_UNIT_CUBE_OCTREE_H
 
 #include <CGAL/config.h>
 #include <CGAL/version.h>
@@ -49,14 +49,14 @@ struct Unit_cube_octree_traits : CGAL::Orthtree_traits_base<CGAL::Simple_cartesi
   }
 };
 
-class Flow_freeze_octree
+class Unit_cube_octree
 {
   typedef CGAL::Orthtree<Unit_cube_octree_traits> Tree;
 
 public:
-  Flow_freeze_octree() : m_tree(Unit_cube_octree_traits()) {}
-  Flow_freeze_octree(const Flow_freeze_octree&) = delete;
-  Flow_freeze_octree& operator=(const Flow_freeze_octree&) = delete;
+  Unit_cube_octree() : m_tree(Unit_cube_octree_traits()) {}
+  Unit_cube_octree(const Unit_cube_octree&) = delete;
+  Unit_cube_octree& operator=(const Unit_cube_octree&) = delete;
 
   // Call once: the predicate is asked for every node created.
   void refine(const std::function<bool(int, const Octree_cell&)>& split)
@@ -79,7 +79,7 @@ private:
 
 #else // CGAL 5.x
 
-class Flow_freeze_octree
+class Unit_cube_octree
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef K::Point_3 Point;
@@ -91,9 +91,9 @@ class Flow_freeze_octree
   static Range corners() { return {Point(-0.5, -0.5, -0.5), Point(0.5, 0.5, 0.5)}; }
 
 public:
-  Flow_freeze_octree() : m_corners(corners()), m_tree(m_corners, CGAL::Identity_property_map<Point>(), 1.0) {}
-  Flow_freeze_octree(const Flow_freeze_octree&) = delete;
-  Flow_freeze_octree& operator=(const Flow_freeze_octree&) = delete;
+  Unit_cube_octree() : m_corners(corners()), m_tree(m_corners, CGAL::Identity_property_map<Point>(), 1.0) {}
+  Unit_cube_octree(const Unit_cube_octree&) = delete;
+  Unit_cube_octree& operator=(const Unit_cube_octree&) = delete;
 
   // Call once: in 5.5.1 a second refine() discards the first one.
   void refine(const std::function<bool(int, const Octree_cell&)>& split)
@@ -122,4 +122,4 @@ private:
 } // namespace Part_decomposition
 } // namespace CGAL
 
-#endif // CGAL_PART_DECOMPOSITION_INTERNAL_FLOW_FREEZE_OCTREE_H
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_UNIT_CUBE_OCTREE_H
