@@ -175,10 +175,7 @@ struct Result
   std::vector<Primitive> primitives;
   PD::Stage_timings timings;
   double read_seconds = 0.;
-  // the levels of labels_at(): none with thin parts and no number of parts (the finer pass is then
-  // outside the tree)
-  bool has_hierarchy = false;
-  PD::Part_hierarchy<K> hierarchy;
+  PD::Part_hierarchy<K> hierarchy; // the levels of labels_at()
   PD::IO::Mesh_file_info info; // mesh faces to input faces
 };
 
@@ -196,10 +193,9 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
 {
   std::vector<std::size_t> part(num_faces(mesh), 0);
   std::vector<Superquadric> primitives;
-  r.has_hierarchy = p.thin_part_resolution == 0 || p.number_of_parts;
   auto np = PDP::combine(Part_decomposition_tools::named_parameters(p),
                          PDP::primitive_output_iterator(std::back_inserter(primitives)),
-                         PDP::stage_timings(&r.timings), PDP::part_hierarchy(r.has_hierarchy ? &r.hierarchy : nullptr));
+                         PDP::stage_timings(&r.timings), PDP::part_hierarchy(&r.hierarchy));
 #ifdef CGAL_LINKED_WITH_TBB
   // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
   tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);
@@ -250,15 +246,11 @@ py::array_t<std::int64_t> part_faces(const Result& r, py::ssize_t k)
   return index_array(faces);
 }
 
-std::size_t number_of_levels(const Result& r) { return r.has_hierarchy ? r.hierarchy.number_of_leaves() : 0; }
+std::size_t number_of_levels(const Result& r) { return r.hierarchy.number_of_leaves(); }
 
-// The labels of level k of the hierarchy, numbered as decompose(number_of_parts=k) numbers them
-// (which, from the default number of parts on, looks finer first and may give other parts).
+// The labels of level k of the hierarchy, numbered as decompose(number_of_parts=k) numbers them.
 py::array_t<std::int64_t> labels_at(const Result& r, py::ssize_t k)
 {
-  if(!r.has_hierarchy)
-    throw py::value_error(
-      "no part hierarchy: a decomposition with thin_part_resolution and no number_of_parts has only its own parts");
   const std::size_t levels = number_of_levels(r);
   if(k < 1 || std::size_t(k) > levels)
     throw py::value_error("labels_at(" + std::to_string(k) + "): the levels are 1 to " + std::to_string(levels));
@@ -277,7 +269,6 @@ py::dict timings_dict(const Result& r)
   d["over_segmentation"] = r.timings.over_segmentation;
   d["assignment"] = r.timings.assignment;
   d["hierarchy"] = r.timings.hierarchy;
-  d["thin_parts"] = r.timings.thin_parts;
   d["total"] = r.timings.total;
   d["overlapping"] = r.timings.overlapping;
   return d;
@@ -445,11 +436,10 @@ PYBIND11_MODULE(_core, m)
     .def("part_faces", &part_faces, py::arg("k"), "(n_k,) int64: the input faces of part k, increasing")
     .def_property_readonly("levels", [](const Result& r) {
         return py::module_::import("builtins").attr("range")(1, number_of_levels(r) + 1);
-      }, "the numbers of parts labels_at() accepts: range(1, leaves + 1), empty with thin_part_resolution "
-         "and no number_of_parts")
+      }, "the numbers of parts labels_at() accepts: range(1, leaves + 1)")
     .def("labels_at", &labels_at, py::arg("k"),
-         "(m,) int64: the part of each input face at level k of this result's part hierarchy (k parts; "
-         "decompose(number_of_parts=k) gives the same below the default number of parts)")
+         "(m,) int64: the part of each input face at level k of this result's part hierarchy (k parts, "
+         "those of decompose(number_of_parts=k))")
     .def("__repr__", [](const Result& r) {
       return "Decomposition(" + std::to_string(r.labels.size()) + " faces, " + std::to_string(r.number_of_parts) + " parts)";
     });

@@ -5,16 +5,17 @@
 //                         mesh.off...
 // The ground truth of NAME.off is NAME_0.seg (Princeton benchmark) or NAME.seg. Purity is the
 // accuracy of the best labelling that is constant on each patch: an upper bound for the
-// assignment. The assignment is timed on a synthetic claimed grid (r = 64): the voxels whose
-// centre is inside the mesh, claimed by 8 primitives, one per octant around the centre.
+// assignment. The assignment is timed on synthetic claims on the adaptive grid of the mesh's
+// distance field (compute_tsdf() with its prior, as decompose() computes it): the leaves the field
+// puts inside, claimed by 8 primitives, one per octant around the centre.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Side_of_triangle_mesh.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
-#include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/tsdf.h>
 
 #include <algorithm>
 #include <chrono>
@@ -56,17 +57,15 @@ Timing median_ms(const F& f)
   return Timing{wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
-PD::Voxel_grid<std::int32_t> synthetic_claims(const Mesh& m, const PD::Normalization& n)
+// Per leaf of the field's grid: the octant of its centre (0 to 7) if the field puts it inside, -1.
+std::vector<std::int32_t> synthetic_claims(const PD::Truncated_signed_distance_field& tsdf)
 {
-  const int r = 64;
-  PD::Voxel_grid<std::int32_t> claimed(r, -1);
-  CGAL::Side_of_triangle_mesh<Mesh, K> inside(m);
-  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  std::vector<std::int32_t> claimed(tsdf.grid.number_of_leaves(), -1);
+  for(std::size_t l = 0; l < claimed.size(); ++l)
   {
-    const auto u = claimed.center(idx);
-    const auto p = n.from_unit(u);
-    if(inside(K::Point_3(p[0], p[1], p[2])) != CGAL::ON_BOUNDED_SIDE) continue;
-    claimed[idx] = (u[0] > 0 ? 1 : 0) + (u[1] > 0 ? 2 : 0) + (u[2] > 0 ? 4 : 0);
+    if(!(tsdf.values[l] < 0.)) continue;
+    const auto u = tsdf.grid.center(l);
+    claimed[l] = (u[0] > 0 ? 1 : 0) + (u[1] > 0 ? 2 : 0) + (u[2] > 0 ? 4 : 0);
   }
   return claimed;
 }
@@ -107,23 +106,24 @@ void run(const std::string& file, double min_size, double max_size, double q, in
   std::size_t count = 0;
   const Timing ms_over = median_ms([&] { count = PD::internal::over_segment_labels<Tag>(m, fim, label, np, &st); });
 
-  const PD::Normalization n = PD::compute_normalization(m);
-  const PD::Voxel_grid<std::int32_t> claimed = synthetic_claims(m, n);
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Tag>(m);
+  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Tag>(m, prior);
+  const std::vector<std::int32_t> claimed = synthetic_claims(tsdf);
   auto patch = m.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
   auto part = m.add_property_map<Mesh::Face_index, std::size_t>("f:part", 0).first;
   for(auto f : faces(m)) patch[f] = label[std::size_t(f)];
   std::size_t parts = 0;
-  const Timing ms_assign = median_ms([&] { parts = PD::assign_parts<Tag>(m, patch, claimed, n, part).size(); });
+  const Timing ms_assign = median_ms([&] { parts = PD::assign_parts<Tag>(m, patch, claimed, tsdf, part).size(); });
   std::size_t claimed_count = 0;
-  for(std::int32_t l : claimed.values()) claimed_count += l >= 0;
+  for(std::int32_t l : claimed) claimed_count += l >= 0;
 
   const double p = purity(file, label, count);
   const std::string name = file.substr(file.find_last_of('/') + 1);
   std::cout << name << ' ' << num_faces(m) << ' ' << st.threshold << ' ' << st.number_of_cut_edges << ' '
             << st.number_of_components << ' ' << st.number_of_split_patches << ' '
             << st.number_of_merged_patches << ' ' << st.number_of_smoothed_faces << ' ' << count << ' ' << p
-            << ' ' << ms_over.wall << ' ' << ms_over.cpu << ' ' << claimed_count << ' ' << parts << ' '
-            << ms_assign.wall << ' ' << ms_assign.cpu << '\n';
+            << ' ' << ms_over.wall << ' ' << ms_over.cpu << ' ' << claimed.size() << ' ' << claimed_count << ' '
+            << parts << ' ' << ms_assign.wall << ' ' << ms_assign.cpu << '\n';
   counts.push_back(double(count));
   if(p >= 0.) purities.push_back(p);
 }
@@ -147,7 +147,7 @@ int main(int argc, char** argv)
     else files.push_back(a);
   }
   std::cout << "mesh faces threshold_deg cut_edges components after_split after_cleanup smoothed A purity"
-               " over_segment_wall_ms over_segment_cpu_ms claimed_voxels parts assign_wall_ms assign_cpu_ms\n";
+               " over_segment_wall_ms over_segment_cpu_ms leaves claimed_leaves parts assign_wall_ms assign_cpu_ms\n";
   std::vector<double> counts, purities;
   for(const std::string& file : files)
   {

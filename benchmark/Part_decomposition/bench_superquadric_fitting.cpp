@@ -3,10 +3,11 @@
 // Usage: bench_superquadric_fitting [--threads N] [--runs R] [--mode mps|oneshot] [--roi X]
 //        [--no-exterior-band] [--no-connected] [--max-evals N] [--rejections K]
 //        [--verbose] mesh...
-// Per mesh: the median fitting time over R runs (prior and TSDF excluded), the number of
-// primitives, seeds, rejections, solves and residual evaluations; then, if NAME_k.seg files lie
-// next to the mesh, the mean mIoU / RI / VoI / SC over them of the segmentation obtained with
-// over_segment() + assign_parts() (the paper's protocol, 10000 area-weighted samples).
+// Per mesh: the leaves of the adaptive grid of the distance field, the median fitting time over R
+// runs (prior and TSDF excluded), the number of primitives, seeds, rejections, solves and residual
+// evaluations; then, if NAME_k.seg files lie next to the mesh, the mean mIoU / RI / VoI / SC over
+// them of the segmentation obtained with over_segment() + assign_parts() (the paper's protocol,
+// 10000 area-weighted samples).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -121,13 +122,13 @@ PD::Superquadric_fitting_result<K> timed_fit(const PD::Hierarchical_prior& prior
 // The mean scores (mIoU, RI, VoI, SC) of the induced segmentation against every BASE_k.seg whose
 // size matches; the number of them in `n_gt`.
 std::array<double, 4> mean_scores(Mesh& mesh, const PD::IO::Mesh_file_info& info,
-                                  const PD::Superquadric_fitting_result<K>& res, const PD::Hierarchical_prior& prior,
-                                  const std::string& base, int& n_gt)
+                                  const PD::Superquadric_fitting_result<K>& res,
+                                  const PD::Truncated_signed_distance_field& tsdf, const std::string& base, int& n_gt)
 {
   auto patch = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   PD::over_segment<Tag>(mesh, patch);
   auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  PD::assign_parts<Tag>(mesh, patch, res.labels, prior.normalization, part);
+  PD::assign_parts<Tag>(mesh, patch, res.labels, tsdf, part); // labels per leaf of the field's grid
   std::array<double, 4> s = {{0, 0, 0, 0}};
   n_gt = 0;
   for(int k = 0; k < 32; ++k)
@@ -159,7 +160,7 @@ int main(int argc, char** argv)
     control.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads)));
 #endif
   std::cout << std::fixed << std::setprecision(3);
-  std::cout << "mesh\tfaces\tfit_ms\tprims\tseeds\tbody\trej_flow\trej_vol\tsolves\tevals\tsamples\tcov16\tcov32\tcov64"
+  std::cout << "mesh\tfaces\tleaves\tfit_ms\tprims\tseeds\tbody\trej_flow\trej_vol\tsolves\tevals\tsamples\tcov16\tcov32\tcov64"
                "\tmIoU\tRI\tVoI\tSC\n";
   double sum[4] = {0, 0, 0, 0};
   std::size_t scored = 0;
@@ -178,16 +179,17 @@ int main(int argc, char** argv)
       continue;
     }
     const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Tag>(mesh);
-    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Tag>(mesh);
+    // the grid the prior asks for, as decompose() computes it
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Tag>(mesh, prior);
     double t = 0.;
     const PD::Superquadric_fitting_result<K> res = timed_fit(prior, tsdf, o, t);
     all_times.push_back(t);
 
     const std::string base = file.substr(0, file.find_last_of('.'));
     int n_gt = 0;
-    const std::array<double, 4> s = mean_scores(mesh, info, res, prior, base, n_gt);
+    const std::array<double, 4> s = mean_scores(mesh, info, res, tsdf, base, n_gt);
     const std::string name = base.substr(base.find_last_of('/') + 1);
-    std::cout << name << "\t" << num_faces(mesh) << "\t" << 1000. * t << "\t" << res.primitives.size() << "\t"
+    std::cout << name << "\t" << num_faces(mesh) << "\t" << tsdf.grid.number_of_leaves() << "\t" << 1000. * t << "\t" << res.primitives.size() << "\t"
               << res.number_of_seeds << "\t" << res.number_of_body_seeds << "\t" << res.rejected_by_flow_zone << "\t"
               << res.rejected_by_volume << "\t" << res.number_of_solves << "\t" << res.number_of_evaluations << "\t"
               << res.number_of_samples;

@@ -3,7 +3,8 @@
 // Usage: superquadric_example [mesh.off|obj|ply|stl]
 // Without argument, the shipped table (or, if it is missing, a generated shape) is used.
 // The primitives are written in the input coordinates to <input>_primitives.off, next to the
-// input (in the current directory for the default mesh), and their parameters are printed.
+// input (in the current directory for the default mesh), and their parameters are printed with
+// the leaves of the adaptive grid each claimed and their volume.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -56,20 +57,27 @@ int main(int argc, char** argv)
   std::cout << input << ": " << num_faces(mesh) << " faces" << std::endl;
 
   const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Concurrency>(mesh);
-  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Concurrency>(mesh);
+  // the distance field on the grid the prior asks for, as decompose() computes it
+  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<Concurrency>(mesh, prior);
   const PD::Superquadric_fitting_result<K> fit = PD::fit_superquadrics<Concurrency, K>(prior, tsdf);
 
   std::cout << fit.primitives.size() << " superquadrics (" << fit.number_of_seeds << " seeds, "
-            << fit.number_of_solves << " solves, " << fit.seconds << " s); in input coordinates:" << std::endl;
+            << fit.number_of_solves << " solves, " << fit.seconds << " s) on " << tsdf.grid.number_of_leaves()
+            << " leaves; in input coordinates:" << std::endl;
+  const double scale = tsdf.normalization.scale(); // input lengths to normalized ones
   Mesh out;
   for(std::size_t k = 0; k < fit.input_primitives.size(); ++k)
   {
     const PD::Superquadric<K>& sq = fit.input_primitives[k];
     const auto a = sq.scales();
+    // the leaves differ in size: the claimed volume is the sum of theirs
+    double volume = 0.;
+    for(std::size_t l : fit.claimed_leaves[k]) volume += tsdf.grid.volume(l);
     std::cout << "  " << k << ": stage " << fit.stage_resolution[k] << (fit.body_seeded[k] ? " body" : " surface")
               << ", centre (" << sq.center() << "), semi-axes (" << a[0] << ", " << a[1] << ", " << a[2]
               << "), eps (" << sq.epsilon1() << ", " << sq.epsilon2() << "), axis x (" << sq.axis(0) << "), "
-              << fit.claimed_voxels[k].size() << " voxels" << std::endl;
+              << "claimed " << fit.claimed_leaves[k].size() << " leaves of volume " << volume / (scale * scale * scale)
+              << " (its own " << sq.volume() << ")" << std::endl;
     sq.to_triangle_mesh(out, 24);
   }
   if(!CGAL::IO::write_polygon_mesh(output, out, CGAL::parameters::stream_precision(17)))

@@ -1,23 +1,22 @@
-// Computes the truncated signed distance field of a mesh and writes its three middle slices as
-// images: tsdf_x.ppm, tsdf_y.ppm, tsdf_z.ppm (blue inside, red outside, white on the surface,
-// lighter inside the truncation band, black on the zero crossings).
+// Computes the truncated signed distance field of a mesh on the adaptive grid that its Flow/Freeze
+// prior asks for, and reports the grid (its leaves per depth, against the dense grid of its finest
+// leaves) and the field (its range, the leaves inside and in the truncation band, the volume
+// inside, the value at the centre of the bounding box).
 //
-// usage: tsdf_example [mesh.off|obj|ply|stl] [output_prefix]
+// usage: tsdf_example [mesh.off|obj|ply|stl]
 // Without a mesh, a torus pierced by a box (two overlapping closed parts) is generated.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/tsdf.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -70,52 +69,6 @@ static const char* name(PD::Tsdf_sign_method m)
   }
 }
 
-// Writes the slice `index` across `axis` as a PPM image, `scale` pixels per voxel.
-static bool write_slice(const PD::Truncated_signed_distance_field& tsdf, int axis, int index, const std::string& file)
-{
-  const int r = tsdf.values.resolution(), scale = std::max(1, 512 / r);
-  auto value = [&](int a, int b) {
-    int ijk[3];
-    ijk[axis] = index;
-    ijk[(axis + 1) % 3] = a;
-    ijk[(axis + 2) % 3] = b;
-    return tsdf.values(ijk[0], ijk[1], ijk[2]);
-  };
-  std::ofstream out(file, std::ios::binary);
-  if(!out) return false;
-  out << "P6\n" << r * scale << " " << r * scale << "\n255\n";
-  for(int y = r * scale - 1; y >= 0; --y) // image rows top to bottom
-    for(int x = 0; x < r * scale; ++x)
-    {
-      const int a = x / scale, b = y / scale;
-      const double v = value(a, b), t = std::min(1., std::abs(v) / tsdf.truncation);
-      // Diverging map: white at 0, towards blue (inside) or red (outside); the clipped region is
-      // drawn darker than the band so that the band is visible.
-      double s = 0.25 + 0.6 * t;
-      if(t >= 1.) s = 1.;
-      unsigned char rgb[3];
-      const double hi = 255 * (1. - 0.15 * (t >= 1.)), lo = 255 * (1. - s);
-      if(v < 0.)
-      {
-        rgb[0] = static_cast<unsigned char>(lo);
-        rgb[1] = static_cast<unsigned char>(lo + 0.3 * (hi - lo));
-        rgb[2] = static_cast<unsigned char>(hi);
-      }
-      else
-      {
-        rgb[0] = static_cast<unsigned char>(hi);
-        rgb[1] = static_cast<unsigned char>(lo);
-        rgb[2] = static_cast<unsigned char>(lo);
-      }
-      // Zero crossing: a sign change towards the next voxel, drawn on the shared pixel border.
-      const bool edge_a = a + 1 < r && (x % scale == scale - 1) && ((value(a + 1, b) < 0.) != (v < 0.));
-      const bool edge_b = b + 1 < r && (y % scale == scale - 1) && ((value(a, b + 1) < 0.) != (v < 0.));
-      if(edge_a || edge_b) rgb[0] = rgb[1] = rgb[2] = 0;
-      out.write(reinterpret_cast<const char*>(rgb), 3);
-    }
-  return bool(out);
-}
-
 int main(int argc, char** argv)
 {
   Mesh mesh;
@@ -133,32 +86,50 @@ int main(int argc, char** argv)
   }
   else
     mesh = generated_mesh();
-  const std::string prefix = argc > 2 ? argv[2] : "tsdf";
 
+  // The prior tells how fine the grid must be along the surface: coarse on smooth Flow regions,
+  // fine at the Freeze boundaries (and down to grid_resolution where the shape is thin).
   const auto t0 = std::chrono::steady_clock::now();
-  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<CGAL::Parallel_if_available_tag>(mesh);
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<CGAL::Parallel_if_available_tag>(mesh);
+  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf<CGAL::Parallel_if_available_tag>(mesh, prior);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
-  const int r = tsdf.values.resolution();
+  const PD::Adaptive_grid& grid = tsdf.grid;
+  const int R = grid.finest_resolution(), r = int(std::lround(1. / tsdf.voxel_size)); // 128 and 64 by default
+  std::cout << num_faces(mesh) << " faces, closed: " << (CGAL::is_closed(mesh) ? "yes" : "no")
+            << "; prior and field computed in " << ms << " ms\n"
+            << "grid of finest resolution " << R << ": " << grid.number_of_leaves() << " leaves (a dense " << r
+            << "^3 grid has " << std::size_t(r) * r * r << " voxels)\n";
+  for(int d = 0; (1 << d) <= R; ++d)
+    if(grid.number_of_leaves_of_depth(d) > 0)
+      std::cout << "  depth " << d << " (side 1/" << (1 << d) << "): " << grid.number_of_leaves_of_depth(d) << " leaves\n";
+
+  // One value per leaf, at its centre; a leaf's volume weighs it.
+  double lo = tsdf.values.front(), hi = lo, inside_volume = 0.;
   std::size_t inside = 0, band = 0;
-  for(double v : tsdf.values.values())
+  for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
   {
-    inside += v < 0.;
+    const double v = tsdf.values[l];
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
     band += std::abs(v) < tsdf.truncation;
-  }
-  std::cout << num_faces(mesh) << " faces, closed: " << (CGAL::is_closed(mesh) ? "yes" : "no") << "\n"
-            << "TSDF " << r << "^3, truncation " << tsdf.truncation << " (normalized units), sign method "
-            << name(tsdf.sign_method) << "\n"
-            << inside << " voxels inside, " << band << " in the band, computed in " << ms << " ms\n";
-  for(int axis = 0; axis < 3; ++axis)
-  {
-    const std::string file = prefix + "_" + "xyz"[axis] + ".ppm";
-    if(!write_slice(tsdf, axis, r / 2, file))
+    if(v < 0.)
     {
-      std::cerr << "cannot write " << file << "\n";
-      return EXIT_FAILURE;
+      ++inside;
+      inside_volume += grid.volume(l);
     }
-    std::cout << "wrote " << file << " (slice " << r / 2 << " across " << "xyz"[axis] << ")\n";
   }
+  const double scale = tsdf.normalization.scale(); // input lengths to normalized ones
+  std::cout << "field in [" << lo << ", " << hi << "], truncation " << tsdf.truncation << " (normalized units, "
+            << tsdf.truncation / tsdf.voxel_size << " voxels of " << r << "^3), sign method "
+            << name(tsdf.sign_method) << "\n"
+            << inside << " leaves inside, " << band << " in the band; volume inside "
+            << inside_volume / (scale * scale * scale) << " (input units)\n";
+
+  // Any point of the cube lies in one leaf: here the centre of the bounding box, the origin of the
+  // normalized cube.
+  const std::size_t c = grid.locate(0., 0., 0.);
+  std::cout << "centre of the bounding box: leaf " << c << " of depth " << grid.depth(c) << ", value "
+            << tsdf.values[c] << "\n";
   return EXIT_SUCCESS;
 }

@@ -58,12 +58,11 @@ class Decomposition:
     @property
     def levels(self) -> range:
         """The numbers of parts labels_at() accepts, range(1, L + 1) for a hierarchy of L leaves
-        (the finest parts); empty for a decomposition with thin_part_resolution, which has no
-        hierarchy. number_of_parts is one of them."""
+        (the finest parts). number_of_parts is one of them."""
     def labels_at(self, k: int) -> NDArray[np.int64]:
-        """(m,) the part of each input face at level k of the part hierarchy: k parts, numbered as
-        decompose(..., number_of_parts=k) numbers them. A level is the union of parts of every finer
-        level; labels_at(number_of_parts) is labels. Raises ValueError unless k is in levels."""
+        """(m,) the part of each input face at level k of the part hierarchy: k parts, those of
+        decompose(..., number_of_parts=k), numbered alike. A level is the union of parts of every
+        finer level; labels_at(number_of_parts) is labels. Raises ValueError unless k is in levels."""
 
 class _MeshWithFaces(Protocol):
     """A mesh as trimesh.Trimesh gives it."""

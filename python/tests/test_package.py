@@ -86,26 +86,26 @@ def test_labels_at_is_decompose_with_that_number_of_parts(dumbbell):
         fixed = pd.decompose(vertices, faces, number_of_parts=k, **FAST)
         assert fixed.number_of_parts == k
         assert np.array_equal(fixed.labels_at(k), fixed.labels)
-        if k < r.number_of_parts:
-            # below the default number of parts, one pass: the levels of the default tree
-            assert np.array_equal(r.labels_at(k), fixed.labels)
-            assert fixed.timings["thin_parts"] == 0
-        else:
-            # from it on, the thin parts of a finer pass are carved out first
-            assert fixed.timings["thin_parts"] > 0
+        # one pass, one tree: a level of the default tree, below the default number of parts and beyond
+        assert np.array_equal(r.labels_at(k), fixed.labels)
+        assert fixed.levels == r.levels
 
 
-def test_thin_parts_have_no_hierarchy(dumbbell):
+def test_the_grid_keywords_reach_the_library(dumbbell):
     vertices, faces = dumbbell
-    r = pd.decompose(vertices, faces, thin_part_resolution=64, **FAST)
-    assert len(r.levels) == 0
-    with pytest.raises(ValueError, match="thin_part_resolution"):
-        r.labels_at(r.number_of_parts)
-    assert len(r.parts()) == r.number_of_parts
-    # told the number of parts, the tree is built with the thin parts
-    told = pd.decompose(vertices, faces, thin_part_resolution=64, number_of_parts=2, **FAST)
-    assert told.number_of_parts == 2
-    assert np.array_equal(told.labels_at(2), told.labels)
+    # the paper's dense grid, and an adaptive grid whose finest leaves are coarser: parts and hierarchy
+    for keywords in ({"adaptive_grid": False}, {"grid_resolution": 64}):
+        r = pd.decompose(vertices, faces, **keywords, **FAST)
+        assert r.labels.shape == (len(faces),) and r.number_of_parts in r.levels
+        assert np.array_equal(r.labels_at(r.number_of_parts), r.labels)
+    # a power of two up to 256 (raised to the finest voxel resolution when below it)
+    coarse = pd.decompose(vertices, faces, grid_resolution=16, **FAST)
+    assert np.array_equal(coarse.labels, pd.decompose(vertices, faces, grid_resolution=32, **FAST).labels)
+    for bad in (0, 96, 512):
+        with pytest.raises(pd.InvalidInput, match="grid_resolution"):
+            pd.decompose(vertices, faces, grid_resolution=bad, **FAST)
+    with pytest.raises(TypeError, match="adaptive_grid"):
+        pd.decompose(vertices, faces, adaptive_grid="no", **FAST)
 
 
 class TrackedArray(np.ndarray):

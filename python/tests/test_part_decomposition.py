@@ -56,15 +56,15 @@ def test_every_named_parameter_is_a_keyword_with_its_default():
     names = {
         "voxel_resolutions", "number_of_points_per_face", "number_of_neighbors", "curvature_percentile",
         "use_concave_curvature",
-        "cue_weights", "freeze_ratio", "use_density", "prior_resolution_cap", "normalization_margin", "tsdf_truncation",
-        "tsdf_sign_method", "flow_zone_tolerance", "trust_region_scales", "body_seed_threshold",
+        "cue_weights", "freeze_ratio", "use_density", "normalization_margin", "tsdf_truncation",
+        "tsdf_sign_method", "grid_resolution", "adaptive_grid", "flow_zone_tolerance", "trust_region_scales", "body_seed_threshold",
         "minimum_body_volume", "minimum_surface_volume", "exterior_penalty", "coverage_target", "roi_radius",
         "interior_weight_mode", "maximum_number_of_primitives", "use_freeze_zone", "use_tsdf_guidance",
         "use_body_seeds", "fitting_resolution_cap", "use_exterior_band_samples", "use_reachable_regions",
         "use_seed_exclusion", "maximum_solver_evaluations", "maximum_rejections_in_a_row",
         "dihedral_percentile", "smoothing_iterations", "minimum_patch_size", "patch_split_size",
         "vote_temperature", "boundary_smoothness", "merge_primitives", "minimum_merge_iou", "merge_thin_sheets", "use_pieces", "crease_angle", "minimum_part_area",
-        "maximum_merge_cost", "number_of_parts", "keep_residual_patches", "residual_tolerance", "thin_part_resolution",
+        "maximum_merge_cost", "number_of_parts", "keep_residual_patches", "residual_tolerance",
         "threads", "verbose", "weld_tolerance"}
     assert set(pd.DEFAULTS) == names
     d = pd.DEFAULTS
@@ -72,6 +72,7 @@ def test_every_named_parameter_is_a_keyword_with_its_default():
     assert d["number_of_points_per_face"] == 36
     assert d["freeze_ratio"] == 0.15
     assert d["tsdf_sign_method"] == "automatic" and d["interior_weight_mode"] == "one_shot"
+    assert d["grid_resolution"] == 128 and d["adaptive_grid"] is True
     assert d["number_of_parts"] is None and d["threads"] is None
     for name in names:
         assert name in pd.decompose.__doc__

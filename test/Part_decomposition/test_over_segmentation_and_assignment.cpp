@@ -2,8 +2,12 @@
 // into patches, and the distance-weighted vote (Eq. 9) that turns patches into parts.
 #include <catch2/catch.hpp>
 
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/tsdf.h>
+#include <CGAL/Part_decomposition/internal/claimed_leaf_search.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -90,16 +94,35 @@ Mesh make_strip(double x0, double w, int n, double y0, double h, double z)
   return s.mesh();
 }
 
-std::vector<std::size_t> assign(Mesh& m, const std::vector<std::size_t>& patch,
-                                const PD::Voxel_grid<std::int32_t>& claimed, std::vector<std::size_t>& part,
-                                double temperature = 1.0, double smoothness = 0.)
+// Claims as assign_parts() reads them: one label per leaf of the grid of a distance field, whose
+// normalization and voxel size are the frame and the unit of lengths.
+struct Claims
+{
+  PD::Truncated_signed_distance_field tsdf;
+  std::vector<std::int32_t> labels;
+};
+
+// The claims of a dense grid on the uniform grid of its voxels (leaf index == voxel index), in the
+// identity frame, lengths in its voxels.
+Claims uniform_claims(const PD::Voxel_grid<std::int32_t>& claimed)
+{
+  Claims c;
+  c.tsdf.grid = PD::Adaptive_grid::uniform(claimed.resolution());
+  c.tsdf.values.assign(c.tsdf.grid.number_of_leaves(), 0.);
+  c.tsdf.voxel_size = claimed.voxel_size();
+  c.labels = claimed.values();
+  return c;
+}
+
+std::vector<std::size_t> assign(Mesh& m, const std::vector<std::size_t>& patch, const Claims& claimed,
+                                std::vector<std::size_t>& part, double temperature = 1.0, double smoothness = 0.)
 {
   Mesh& mm = m;
   auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_in", 0).first;
   auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:test_out", 0).first;
   for(face_descriptor f : faces(m)) pmap[f] = patch[f];
   const std::vector<std::size_t> prim =
-      PD::assign_parts(m, pmap, claimed, PD::Normalization(), qmap,
+      PD::assign_parts(m, pmap, claimed.labels, claimed.tsdf, qmap,
                        PDP::combine(PDP::vote_temperature(temperature), PDP::boundary_smoothness(smoothness)));
   part.clear();
   for(face_descriptor f : faces(m)) part.push_back(qmap[f]);
@@ -108,26 +131,52 @@ std::vector<std::size_t> assign(Mesh& m, const std::vector<std::size_t>& patch,
   return prim;
 }
 
-// Brute-force Eq. 9: nearest claimed voxel centre over the whole grid, weights, argmax.
+double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The nearest claimed leaf of a point u of the cube as specified, by brute force: the leaf of u if
+// it is claimed, else the nearest centre of the claimed leaves with an unclaimed face neighbour
+// (on a uniform grid, the nearest claimed centre).
+PD::internal::Claimed_leaf_search::Result specified_nearest(const PD::Adaptive_grid& grid,
+                                                            const std::vector<std::int32_t>& labels,
+                                                            const std::array<double, 3>& u)
+{
+  PD::internal::Claimed_leaf_search::Result r;
+  const std::size_t own = grid.locate(u[0], u[1], u[2]);
+  if(labels[own] >= 0)
+  {
+    r.label = labels[own];
+    r.distance = distance3(u, grid.center(own));
+    return r;
+  }
+  r.distance = 1e30;
+  for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
+  {
+    if(labels[l] < 0) continue;
+    bool boundary = false;
+    grid.for_each_neighbor(l, [&](std::size_t n) { boundary = boundary || labels[n] < 0; });
+    if(!boundary) continue;
+    const double d = distance3(u, grid.center(l));
+    if(d < r.distance) r.distance = d, r.label = labels[l];
+  }
+  return r;
+}
+
+// Brute-force Eq. 9: the specified nearest claimed leaf of each face centroid, weights, argmax.
 std::vector<std::int32_t> brute_force_votes(const Mesh& m, const std::vector<std::size_t>& patch,
-                                            const PD::Voxel_grid<std::int32_t>& claimed, double temperature)
+                                            const Claims& claimed, double temperature)
 {
   std::map<std::size_t, std::map<std::int32_t, double> > votes;
-  const double tau = temperature / claimed.resolution();
+  const double tau = temperature * claimed.tsdf.voxel_size;
   for(face_descriptor f : faces(m))
   {
     const Point c = CGAL::centroid(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
                                    m.point(target(next(halfedge(f, m), m), m)));
-    double best = 1e30;
-    std::int32_t label = -1;
-    for(std::size_t idx = 0; idx < claimed.size(); ++idx)
-    {
-      if(claimed[idx] < 0) continue;
-      const auto q = claimed.center(idx);
-      const double d = std::sqrt(CGAL::squared_distance(c, Point(q[0], q[1], q[2])));
-      if(d < best) best = d, label = claimed[idx];
-    }
-    votes[patch[f]][label] += std::exp(-best / tau);
+    const PD::internal::Claimed_leaf_search::Result r =
+      specified_nearest(claimed.tsdf.grid, claimed.labels, claimed.tsdf.normalization.to_unit(c.x(), c.y(), c.z()));
+    votes[patch[f]][r.label] += std::exp(-r.distance / tau);
   }
   std::vector<std::int32_t> out;
   for(const auto& pv : votes)
@@ -141,19 +190,26 @@ std::vector<std::int32_t> brute_force_votes(const Mesh& m, const std::vector<std
   return out;
 }
 
-
-// The ball of radius 0.4 and three primitives claiming slabs of it: 9 for x < -0.1, 5 for
-// -0.1 <= x < 0.15, 2 above.
-PD::Voxel_grid<std::int32_t> three_slab_claims()
+// Three primitives claiming slabs of the ball of radius 0.3: 9 for x < -0.1, 5 for
+// -0.1 <= x < 0.15, 2 above; on the leaves of `grid` whose centre lies in the ball.
+std::vector<std::int32_t> three_slab_labels(const PD::Adaptive_grid& grid)
 {
-  PD::Voxel_grid<std::int32_t> claimed(16, -1);
-  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+  std::vector<std::int32_t> labels(grid.number_of_leaves(), -1);
+  for(std::size_t l = 0; l < labels.size(); ++l)
   {
-    const auto c = claimed.center(idx);
+    const auto c = grid.center(l);
     if(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 0.3 * 0.3) continue;
-    claimed[idx] = c[0] < -0.1 ? 9 : (c[0] < 0.15 ? 5 : 2);
+    labels[l] = c[0] < -0.1 ? 9 : (c[0] < 0.15 ? 5 : 2);
   }
-  return claimed;
+  return labels;
+}
+
+// The three slabs on the voxels of the 16^3 grid.
+Claims three_slab_claims()
+{
+  Claims c = uniform_claims(PD::Voxel_grid<std::int32_t>(16, -1));
+  c.labels = three_slab_labels(c.tsdf.grid);
+  return c;
 }
 
 } // namespace
@@ -361,38 +417,116 @@ TEST_CASE("the former names of dihedral_percentile and patch_split_size still wo
   CHECK(n_renamed < PD::over_segment(m, CGAL::make_property_map(by_default)));
 }
 
-TEST_CASE("the nearest claimed voxel is exact, near and far from the claims", "[assignment]")
+TEST_CASE("the nearest claimed leaf of a uniform grid is exact, near and far from the claims", "[assignment]")
 {
   const int r = 16;
   PD::Voxel_grid<std::int32_t> claimed(r, -1);
   CGAL::Random rng(7);
   for(std::size_t idx = 0; idx < claimed.size(); ++idx)
     if(rng.get_double() < 0.03) claimed[idx] = rng.get_int(0, 5);
-  // a solid block too, so that the kd-tree skips interior voxels
+  // a solid block too, so that the kd-tree skips interior leaves
   for(int k = 2; k < 7; ++k)
     for(int j = 2; j < 7; ++j)
       for(int i = 2; i < 7; ++i) claimed(i, j, k) = 9;
-  PD::internal::Claimed_voxel_search search;
-  search.build<CGAL::Sequential_tag>(claimed);
+  const PD::Adaptive_grid grid = PD::Adaptive_grid::uniform(r);
+  const std::vector<std::int32_t>& labels = claimed.values();
+  PD::internal::Claimed_leaf_search search;
+  search.build<CGAL::Sequential_tag>(grid, labels);
   REQUIRE(search.any());
   std::size_t claimed_count = 0;
-  for(std::int32_t l : claimed.values()) claimed_count += l >= 0;
+  for(std::int32_t l : labels) claimed_count += l >= 0;
   CHECK(search.tree_size() <= claimed_count - 27); // the 3x3x3 core of the block is left out
   for(int n = 0; n < 3000; ++n)
   {
     const std::array<double, 3> u = {{rng.get_double(-0.8, 0.8), rng.get_double(-0.8, 0.8), rng.get_double(-0.8, 0.8)}};
     double best = 1e30;
     std::int32_t label = -1;
-    for(std::size_t idx = 0; idx < claimed.size(); ++idx)
+    for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
     {
-      if(claimed[idx] < 0) continue;
-      const auto c = claimed.center(idx);
-      const double d = std::sqrt((u[0] - c[0]) * (u[0] - c[0]) + (u[1] - c[1]) * (u[1] - c[1]) + (u[2] - c[2]) * (u[2] - c[2]));
-      if(d < best) best = d, label = claimed[idx];
+      if(labels[l] < 0) continue;
+      const double d = distance3(u, grid.center(l));
+      if(d < best) best = d, label = labels[l];
     }
-    const PD::internal::Claimed_voxel_search::Result res = search.nearest(u);
+    const PD::internal::Claimed_leaf_search::Result res = search.nearest(u);
     CHECK(res.distance == Approx(best).epsilon(1e-12));
     CHECK(res.label == label);
+  }
+  // nothing claimed
+  PD::internal::Claimed_leaf_search none;
+  none.build<CGAL::Sequential_tag>(grid, std::vector<std::int32_t>(grid.number_of_leaves(), -1));
+  CHECK_FALSE(none.any());
+}
+
+namespace {
+
+// A random octree of the cube down to resolution 32: the cube and its children always split,
+// deeper cells with probability one half.
+PD::Adaptive_grid random_octree(CGAL::Random& rng)
+{
+  std::vector<PD::Adaptive_grid::Cell> cells;
+  std::vector<PD::Adaptive_grid::Cell> stack(1, PD::Adaptive_grid::Cell{0, {{0, 0, 0}}});
+  while(!stack.empty())
+  {
+    const PD::Adaptive_grid::Cell c = stack.back();
+    stack.pop_back();
+    if(c.depth == 5 || (c.depth >= 2 && rng.get_double() < 0.5))
+    {
+      cells.push_back(c);
+      continue;
+    }
+    for(std::uint32_t child = 0; child < 8; ++child)
+      stack.push_back(PD::Adaptive_grid::Cell{
+        c.depth + 1, {{2 * c.position[0] + (child & 1), 2 * c.position[1] + ((child >> 1) & 1), 2 * c.position[2] + (child >> 2)}}});
+  }
+  return PD::Adaptive_grid(32, cells);
+}
+
+} // namespace
+
+TEST_CASE("the nearest claimed leaf of an adaptive grid: its own leaf, else the nearest claimed boundary leaf", "[assignment]")
+{
+  CGAL::Random rng(11);
+  for(int trial = 0; trial < 3; ++trial)
+  {
+    CAPTURE(trial);
+    const PD::Adaptive_grid grid = random_octree(rng);
+    // leaves of several sizes, the test means something
+    REQUIRE(grid.number_of_leaves_of_depth(5) > 0);
+    REQUIRE(grid.number_of_leaves_of_depth(3) > 0);
+    std::vector<std::int32_t> labels(grid.number_of_leaves(), -1);
+    for(std::size_t l = 0; l < labels.size(); ++l)
+    {
+      const auto c = grid.center(l);
+      if(c[0] > -0.3 && c[0] < 0. && c[1] > -0.3 && c[1] < 0. && c[2] > -0.3 && c[2] < 0.) labels[l] = 9; // a solid block
+      else if(rng.get_double() < 0.1) labels[l] = rng.get_int(0, 5);
+    }
+    PD::internal::Claimed_leaf_search search;
+    search.build<CGAL::Sequential_tag>(grid, labels);
+    REQUIRE(search.any());
+    std::size_t inner = 0; // claimed leaves with every neighbour claimed: not in the tree
+    for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
+    {
+      bool boundary = false;
+      grid.for_each_neighbor(l, [&](std::size_t n) { boundary = boundary || labels[n] < 0; });
+      inner += labels[l] >= 0 && !boundary;
+    }
+    REQUIRE(inner > 0);
+    std::size_t claimed_count = 0;
+    for(std::int32_t l : labels) claimed_count += l >= 0;
+    CHECK(search.tree_size() == claimed_count - inner);
+    std::size_t own = 0;
+    for(int n = 0; n < 2000; ++n)
+    {
+      const std::array<double, 3> u = {{rng.get_double(-0.5, 0.5), rng.get_double(-0.5, 0.5), rng.get_double(-0.5, 0.5)}};
+      const PD::internal::Claimed_leaf_search::Result expected = specified_nearest(grid, labels, u);
+      const PD::internal::Claimed_leaf_search::Result res = search.nearest(u);
+      own += labels[grid.locate(u[0], u[1], u[2])] >= 0;
+      CHECK(res.distance == Approx(expected.distance).epsilon(1e-12));
+      CHECK(res.label == expected.label);
+    }
+    // both branches of the specification were exercised
+    CHECK(own > 100);
+    CHECK(own < 1900);
   }
 }
 
@@ -402,13 +536,14 @@ TEST_CASE("a patch takes the distance-weighted majority of its faces", "[assignm
   // in [-0.5, 0.5), y in [0, 0.1): 16 squares, 32 faces, in voxels of row (j = 4, k = 4).
   Mesh m = make_strip(-0.5, 1. / 16., 16, 0., 0.1, 0.01);
   const int r = 8;
-  PD::Voxel_grid<std::int32_t> claimed(r, -1);
+  PD::Voxel_grid<std::int32_t> voxels(r, -1);
   // Primitive 7 claims the first voxel along the strip (faces 0..3 lie inside it): faces 0..11
   // are nearest to it, at 0.5 to 2.3 voxels. Primitive 3 claims the voxels two rows above the
   // rest of the strip: faces 12..31 are nearest to it, each about 2.4 voxels away. The near
   // minority outweighs the far majority.
-  claimed(0, 4, 4) = 7;
-  for(int i = 2; i < 8; ++i) claimed(i, 4, 6) = 3;
+  voxels(0, 4, 4) = 7;
+  for(int i = 2; i < 8; ++i) voxels(i, 4, 6) = 3;
+  const Claims claimed = uniform_claims(voxels);
   // all faces in one patch
   std::vector<std::size_t> patch(num_faces(m), 0), part;
   std::vector<std::size_t> prim = assign(m, patch, claimed, part);
@@ -441,44 +576,72 @@ TEST_CASE("a patch takes the distance-weighted majority of its faces", "[assignm
   CHECK(brute_force_votes(m, patch, claimed, 1.0) == std::vector<std::int32_t>({7, 3}));
 }
 
+namespace {
+
+// The three slabs on the adaptive grid of the distance field of `m` in the identity frame: the
+// surface at 64^3, larger leaves inside.
+Claims adaptive_three_slab_claims(const Mesh& m)
+{
+  Claims c;
+  c.tsdf = PD::compute_tsdf(m, PDP::normalization(PD::Normalization()));
+  c.labels = three_slab_labels(c.tsdf.grid);
+  return c;
+}
+
+} // namespace
+
 TEST_CASE("parts merge the patches of one primitive and follow a brute-force reference", "[assignment]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3); // 1280 faces
-  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
-  std::size_t count = 0;
-  const std::vector<std::size_t> patch = patches_of(m, count);
-  REQUIRE(count > 20);
-  std::vector<std::size_t> part;
-  const std::vector<std::size_t> prim = assign(m, patch, claimed, part);
-  CHECK(prim == std::vector<std::size_t>({2, 5, 9}));
-  const std::vector<std::int32_t> reference = brute_force_votes(m, patch, claimed, 1.0);
-  REQUIRE(reference.size() == count);
-  for(face_descriptor f : faces(m))
+  for(bool adaptive : {false, true})
   {
-    REQUIRE(part[f] < prim.size());
-    CHECK(prim[part[f]] == std::size_t(reference[patch[f]]));
-  }
-  // Faces far on the x < -0.2 side are in primitive 9's part, on the x > 0.25 side in 2's.
-  for(face_descriptor f : faces(m))
-  {
-    const double x = m.point(source(halfedge(f, m), m)).x();
-    if(x < -0.3) CHECK(prim[part[f]] == 9);
-    if(x > 0.3) CHECK(prim[part[f]] == 2);
-  }
+    CAPTURE(adaptive);
+    const Claims claimed = adaptive ? adaptive_three_slab_claims(m) : three_slab_claims();
+    if(adaptive)
+    {
+      // claimed leaves of several sizes
+      std::set<std::uint32_t> widths;
+      for(std::size_t l = 0; l < claimed.labels.size(); ++l)
+        if(claimed.labels[l] >= 0) widths.insert(claimed.tsdf.grid.width(l));
+      REQUIRE(widths.size() >= 2);
+    }
+    std::size_t count = 0;
+    const std::vector<std::size_t> patch = patches_of(m, count);
+    REQUIRE(count > 20);
+    std::vector<std::size_t> part;
+    const std::vector<std::size_t> prim = assign(m, patch, claimed, part);
+    CHECK(prim == std::vector<std::size_t>({2, 5, 9}));
+    const std::vector<std::int32_t> reference = brute_force_votes(m, patch, claimed, 1.0);
+    REQUIRE(reference.size() == count);
+    for(face_descriptor f : faces(m))
+    {
+      REQUIRE(part[f] < prim.size());
+      CHECK(prim[part[f]] == std::size_t(reference[patch[f]]));
+    }
+    // Faces far on the x < -0.2 side are in primitive 9's part, on the x > 0.25 side in 2's.
+    for(face_descriptor f : faces(m))
+    {
+      const double x = m.point(source(halfedge(f, m), m)).x();
+      if(x < -0.3) CHECK(prim[part[f]] == 9);
+      if(x > 0.3) CHECK(prim[part[f]] == 2);
+    }
 
-  // Same answer with threads and with patch ids that are not consecutive.
-  std::vector<std::size_t> sparse(patch);
-  for(std::size_t& p : sparse) p = p * 1000003 + 17;
-  std::vector<std::size_t> part2;
-  CHECK(assign(m, sparse, claimed, part2) == prim);
-  CHECK(part2 == part);
-  Mesh& mm = m;
-  auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
-  auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:q", 0).first;
-  for(face_descriptor f : faces(m)) pmap[f] = patch[f];
-  CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(m, pmap, claimed, PD::Normalization(), qmap,
-                                                          PDP::boundary_smoothness(0.)) == prim);
-  for(face_descriptor f : faces(m)) CHECK(qmap[f] == part[f]);
+    // Same answer with threads and with patch ids that are not consecutive.
+    std::vector<std::size_t> sparse(patch);
+    for(std::size_t& p : sparse) p = p * 1000003 + 17;
+    std::vector<std::size_t> part2;
+    CHECK(assign(m, sparse, claimed, part2) == prim);
+    CHECK(part2 == part);
+    Mesh& mm = m;
+    auto pmap = mm.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
+    auto qmap = mm.add_property_map<face_descriptor, std::size_t>("f:q", 0).first;
+    for(face_descriptor f : faces(m)) pmap[f] = patch[f];
+    CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(m, pmap, claimed.labels, claimed.tsdf, qmap,
+                                                            PDP::boundary_smoothness(0.)) == prim);
+    for(face_descriptor f : faces(m)) CHECK(qmap[f] == part[f]);
+    mm.remove_property_map(pmap);
+    mm.remove_property_map(qmap);
+  }
 }
 
 // The energy of the final labelling (internal/boundary_graph_cut.h), computed face by face.
@@ -625,7 +788,7 @@ TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh
 TEST_CASE("with the final labelling the parts do not depend on the patches", "[assignment]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3);
-  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  const Claims claimed = three_slab_claims();
   std::size_t count = 0;
   const std::vector<std::size_t> patch = patches_of(m, count);
   std::vector<std::size_t> one(num_faces(m), 0), own(num_faces(m)), part_a, part_b, part_c;
@@ -649,25 +812,28 @@ TEST_CASE("with the final labelling the parts do not depend on the patches", "[a
   }
 }
 
-TEST_CASE("without claimed voxels all faces form one part", "[assignment]")
+TEST_CASE("without claimed leaves all faces form one part", "[assignment]")
 {
   Mesh m = test_shapes::make_box(Point(-0.2, -0.2, -0.2), Point(0.2, 0.2, 0.2), 2);
   std::vector<std::size_t> patch(num_faces(m)), part;
   for(std::size_t i = 0; i < patch.size(); ++i) patch[i] = i % 5;
-  PD::Voxel_grid<std::int32_t> claimed(8, -1);
+  Claims claimed = uniform_claims(PD::Voxel_grid<std::int32_t>(8, -1));
   const std::vector<std::size_t> prim = assign(m, patch, claimed, part);
   CHECK(prim == std::vector<std::size_t>({PD::no_primitive}));
   for(std::size_t p : part) CHECK(p == 0);
-  // a point outside the cube still finds the claimed voxel through the kd-tree
-  claimed(0, 0, 0) = 4;
+  // a point outside the cube still finds the claimed leaf through the kd-tree
+  claimed.labels[0] = 4; // the voxel (0, 0, 0)
   Mesh far = test_shapes::make_box(Point(2, 2, 2), Point(3, 3, 3), 1);
   std::vector<std::size_t> one(num_faces(far), 0);
   CHECK(assign(far, one, claimed, part) == std::vector<std::size_t>({4}));
   Mesh any = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 1);
   Mesh& ma = any;
   auto pmap = ma.add_property_map<face_descriptor, std::size_t>("f:p", 0).first;
-  CHECK_THROWS_AS(PD::assign_parts(any, pmap, claimed, PD::Normalization(), pmap, PD::parameters::vote_temperature(0.)),
+  CHECK_THROWS_AS(PD::assign_parts(any, pmap, claimed.labels, claimed.tsdf, pmap, PD::parameters::vote_temperature(0.)),
                   PD::Invalid_input);
+  // labels of another grid
+  const std::vector<std::int32_t> too_few(claimed.labels.begin(), claimed.labels.end() - 1);
+  CHECK_THROWS_AS(PD::assign_parts(any, pmap, too_few, claimed.tsdf, pmap), PD::Invalid_input);
 }
 
 TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "[assignment][data]")
@@ -677,44 +843,55 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   Mesh m;
   const std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", m);
 
-  // Claimed voxels: the inside of each primitive (the balls win over the bar), at r = 64.
-  const PD::Normalization n = PD::compute_normalization(m);
-  PD::Voxel_grid<std::int32_t> claimed(64, -1);
-  for(std::size_t idx = 0; idx < claimed.size(); ++idx)
-  {
-    const auto p = n.from_unit(claimed.center(idx));
-    const double yz = p[1] * p[1] + p[2] * p[2];
-    if((p[0] + 0.7) * (p[0] + 0.7) + yz < 0.09) claimed[idx] = 10;
-    else if((p[0] - 0.7) * (p[0] - 0.7) + yz < 0.09) claimed[idx] = 30;
-    else if(std::abs(p[0]) < 0.7 && yz < 0.01) claimed[idx] = 20;
-  }
+  // Claimed leaves: those whose centre lies inside a primitive (the balls win over the bar), on
+  // the dense 64^3 grid and on the adaptive grid of the pipeline (coarse inside the balls, fine
+  // on the surface and in the bar).
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);
   auto patch = m.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
   auto part = m.add_property_map<face_descriptor, std::size_t>("f:part", 0).first;
   const std::size_t count = PD::over_segment(m, patch);
   check_patch_structure(m, std::vector<std::size_t>(patch.begin(), patch.end()), count);
   CHECK(count >= 200);
   CHECK(count <= 800);
-  for(double smoothness : {0., PD::defaults::boundary_smoothness})
+  for(bool adaptive : {false, true})
   {
-    const std::vector<std::size_t> prim =
-      PD::assign_parts(m, patch, claimed, n, part, PDP::boundary_smoothness(smoothness));
-    CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
-    std::size_t correct = 0;
-    for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
-    CHECK(double(correct) / double(num_faces(m)) > 0.97);
+    CAPTURE(adaptive);
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m, prior, PDP::adaptive_grid(adaptive));
+    const PD::Adaptive_grid& grid = tsdf.grid;
+    if(adaptive) CHECK(grid.number_of_leaves() < 64u * 64u * 64u / 4u);
+    else CHECK(grid == PD::Adaptive_grid::uniform(64));
+    std::vector<std::int32_t> claimed(grid.number_of_leaves(), -1);
+    for(std::size_t l = 0; l < claimed.size(); ++l)
+    {
+      const auto p = tsdf.normalization.from_unit(grid.center(l));
+      const double yz = p[1] * p[1] + p[2] * p[2];
+      if((p[0] + 0.7) * (p[0] + 0.7) + yz < 0.09) claimed[l] = 10;
+      else if((p[0] - 0.7) * (p[0] - 0.7) + yz < 0.09) claimed[l] = 30;
+      else if(std::abs(p[0]) < 0.7 && yz < 0.01) claimed[l] = 20;
+    }
+    for(double smoothness : {0., PD::defaults::boundary_smoothness})
+    {
+      CAPTURE(smoothness);
+      const std::vector<std::size_t> prim =
+        PD::assign_parts(m, patch, claimed, tsdf, part, PDP::boundary_smoothness(smoothness));
+      CHECK(prim == std::vector<std::size_t>({10, 20, 30}));
+      std::size_t correct = 0;
+      for(face_descriptor f : faces(m)) correct += part[f] == truth[std::size_t(f)];
+      CHECK(double(correct) / double(num_faces(m)) > 0.97);
+    }
   }
 }
 
 TEST_CASE("assign_parts with every default given explicitly gives the default parts", "[assignment][defaults]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 3);
-  const PD::Voxel_grid<std::int32_t> claimed = three_slab_claims();
+  const Claims claimed = three_slab_claims();
   std::vector<std::size_t> patch(num_faces(m)), a(num_faces(m)), b(num_faces(m));
   PD::over_segment(m, CGAL::make_property_map(patch));
   const std::vector<std::size_t> prim_a =
-      PD::assign_parts(m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(a));
+      PD::assign_parts(m, CGAL::make_property_map(patch), claimed.labels, claimed.tsdf, CGAL::make_property_map(a));
   const std::vector<std::size_t> prim_b = PD::assign_parts(
-      m, CGAL::make_property_map(patch), claimed, PD::Normalization(), CGAL::make_property_map(b),
+      m, CGAL::make_property_map(patch), claimed.labels, claimed.tsdf, CGAL::make_property_map(b),
       PDP::combine(CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m)).face_index_map(get(CGAL::face_index, m)),
                    PDP::vote_temperature(PD::defaults::vote_temperature),
                    PDP::boundary_smoothness(PD::defaults::boundary_smoothness)));

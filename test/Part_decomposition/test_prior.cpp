@@ -4,7 +4,6 @@
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/geometric_cues.h>
 #include <CGAL/Part_decomposition/topology_score.h>
-#include <CGAL/Part_decomposition/internal/grid_morphology.h>
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
@@ -122,6 +121,37 @@ struct Levels
 };
 
 const VC E = VC::EMPTY, F = VC::FLOW, Z = VC::FREEZE;
+
+// The voxels outside `mask` that a 6-connected flood fill from the grid border reaches through
+// voxels outside it (the library's dense fill went with the dense grid).
+PD::Voxel_grid<std::uint8_t> border_connected_complement(const PD::Voxel_grid<std::uint8_t>& mask)
+{
+  const int r = mask.resolution();
+  PD::Voxel_grid<std::uint8_t> reached(r, 0);
+  std::vector<std::array<int, 3> > queue;
+  auto push = [&](int i, int j, int k) {
+    if(!mask.contains(i, j, k) || mask(i, j, k) != 0 || reached(i, j, k) != 0) return;
+    reached(i, j, k) = 1;
+    queue.push_back({{i, j, k}});
+  };
+  for(int k = 0; k < r; ++k)
+    for(int j = 0; j < r; ++j)
+      for(int i = 0; i < r; ++i)
+        if(i == 0 || j == 0 || k == 0 || i == r - 1 || j == r - 1 || k == r - 1) push(i, j, k);
+  for(std::size_t head = 0; head < queue.size(); ++head)
+  {
+    const std::array<int, 3> v = queue[head];
+    for(int a = 0; a < 3; ++a)
+      for(int s : {-1, 1})
+      {
+        std::array<int, 3> w = v;
+        w[std::size_t(a)] += s;
+        push(w[0], w[1], w[2]);
+      }
+  }
+  return reached;
+}
+
 
 } // namespace
 
@@ -441,7 +471,7 @@ TEST_CASE("large triangles are sampled densely enough to leave no hole in the ac
   CHECK(missed == 0u);
   CHECK(extra <= f.number_of_active_voxels / 50);
   // no hole: the flood fill from the grid border stays outside, as for the fine cube
-  const PD::Voxel_grid<std::uint8_t> ec = CGAL::Part_decomposition::internal::border_connected_complement(oc), ef = CGAL::Part_decomposition::internal::border_connected_complement(of);
+  const PD::Voxel_grid<std::uint8_t> ec = border_connected_complement(oc), ef = border_connected_complement(of);
   CHECK(ec(32, 32, 32) == 0);
   CHECK(ec.values() == ef.values());
   // each face still counts about N samples: its weights are rounded per voxel, at least 1, so
@@ -823,42 +853,6 @@ TEST_CASE("the prior is the same with any number of threads and validates its pa
                   PD::Invalid_input);
 }
 
-TEST_CASE("prior_resolution_cap: the finer levels take the fused classes of the cap where sampled", "[prior]")
-{
-  const Mesh m = welded_dumbbell();
-  using PD::parameters::prior_resolution_cap;
-  const PD::Hierarchical_prior full = PD::compute_flow_freeze_prior(m);
-  const PD::Hierarchical_prior capped = PD::compute_flow_freeze_prior(m, prior_resolution_cap(32));
-  REQUIRE(capped.resolutions == std::vector<int>({16, 32, 64}));
-  REQUIRE(capped.fields.size() == 2);
-  CHECK(capped.number_of_flow_leaves.size() == 3);
-  CHECK(capped.number_of_flow_leaves[2] + capped.number_of_freeze_leaves[2] == 0);
-  // the scored levels bin their samples at 64 as the full prior does, and fuse alone
-  const PD::Hierarchical_prior coarse = PD::fuse_flow_freeze({full.fields[0].classes, full.fields[1].classes});
-  CHECK(capped.number_of_flow_leaves[1] == coarse.number_of_flow_leaves[1]);
-  std::size_t sampled = 0, freeze = 0;
-  for(std::size_t v = 0; v < capped.classes.size(); ++v)
-  {
-    const std::array<int, 3> g = capped.classes.coordinates(v);
-    const std::size_t parent = coarse.classes.index(g[0] / 2, g[1] / 2, g[2] / 2);
-    const bool support = full.fields[2].sample_count[v] > 0;
-    sampled += support;
-    freeze += capped.classes[v] == VC::FREEZE;
-    CHECK(capped.classes[v] == (support ? coarse.classes[parent] : VC::EMPTY));
-    CHECK(capped.leaf_resolution[v] == (support ? coarse.leaf_resolution[parent] : 0));
-  }
-  CHECK(sampled > 0);
-  CHECK(freeze > 0);
-  CHECK(capped.classes != full.classes); // the 64 level of the full prior refines some leaves
-  // a cap at the finest resolution is no cap
-  const PD::Hierarchical_prior at_finest = PD::compute_flow_freeze_prior(m, prior_resolution_cap(64));
-  CHECK(at_finest.classes == full.classes);
-  CHECK(at_finest.fields.size() == 3);
-  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(48)), PD::Invalid_input);
-  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(128)), PD::Invalid_input);
-  CHECK_THROWS_AS(PD::compute_flow_freeze_prior(m, prior_resolution_cap(-1)), PD::Invalid_input);
-}
-
 // ----------------------------------------------------------------- one parameter layer
 
 namespace {
@@ -873,7 +867,6 @@ auto explicit_defaults()
     PD::parameters::curvature_percentile(PD::defaults::curvature_percentile),
     PD::parameters::cue_weights(PD::defaults::cue_weights), PD::parameters::freeze_ratio(PD::defaults::freeze_ratio),
     PD::parameters::use_density(PD::defaults::use_density),
-    PD::parameters::prior_resolution_cap(PD::defaults::prior_resolution_cap),
     PD::parameters::normalization_margin(PD::defaults::normalization_margin));
 }
 

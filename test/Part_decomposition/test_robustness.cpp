@@ -578,6 +578,12 @@ TEST_CASE("out-of-range named parameters give INVALID_PARAMETER before any work"
   for(double s : {0., 2., k_nan}) CHECK(bad(PDP::patch_split_size(s)));
   CHECK(bad(PDP::smoothing_iterations(-1)));
   for(double t : {0., -1., k_nan, k_inf}) CHECK(bad(PDP::vote_temperature(t)));
+  // the finest leaves: a power of two, at most 256
+  for(int g : {0, -128, 96, 512})
+  {
+    CAPTURE(g);
+    CHECK(bad(PDP::grid_resolution(g)));
+  }
 }
 
 TEST_CASE("extreme but valid named parameters give a valid decomposition", "[robustness][library][parameters]")
@@ -613,6 +619,11 @@ TEST_CASE("extreme but valid named parameters give a valid decomposition", "[rob
         PDP::combine(PDP::minimum_patch_size(0.), PDP::patch_split_size(1e-300), PDP::smoothing_iterations(50)));
   valid("tiny vote temperature", PDP::vote_temperature(1e-300));
   valid("huge vote temperature", PDP::vote_temperature(1e300));
+  valid("the dense grid of the paper", PDP::adaptive_grid(false));
+  valid("finest leaves at the finest voxel resolution", PDP::grid_resolution(64));
+  valid("finest leaves at 256", PDP::grid_resolution(256));
+  valid("coarse voxels, finest leaves at 256",
+        PDP::combine(PDP::voxel_resolutions(std::vector<int>{2, 4}), PDP::grid_resolution(256)));
 }
 
 TEST_CASE("stage functions check their inputs at run time", "[robustness][library]")
@@ -624,43 +635,69 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   // a stage computes the stages it needs: no order to follow
   CHECK(pd.compose_parts(CGAL::make_property_map(part), PDP::use_pieces(false)) >= 1u);
   CHECK_FALSE(pd.fitting().primitives.empty());
-  // results that do not match are refused
+  // results that do not match are refused: the grid of the field follows the prior
   pd.compute_prior(PDP::voxel_resolutions(std::vector<int>{16, 32}));
-  pd.compute_distance_field();
-  CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER); // 32^3 prior, 64^3 field
+  CHECK(error_of([&] { pd.compute_distance_field(); }) == E::INVALID_PARAMETER); // 32^3 prior, 64^3 field
+  CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER);
   CHECK(error_of([&] { pd.compute_fitting_zones(); }) == E::INVALID_PARAMETER);
   pd.compute_distance_field(PDP::voxel_resolutions(std::vector<int>{16, 32}));
   CHECK(pd.compute_fitting_zones().flow_zone.count(16) == 1); // r_fit of {16, 32}: 16 only
-  pd.compute_distance_field();
-  CHECK(error_of([&] { pd.fit_primitives(); }) == E::INVALID_PARAMETER);
+  // a refused stage leaves the results of {16, 32}, which fit
+  CHECK(error_of([&] { pd.compute_distance_field(); }) == E::INVALID_PARAMETER);
+  CHECK(pd.distance_field().voxel_size == 1. / 32.);
+  CHECK(pd.fit_primitives().labels.size() == pd.distance_field().grid.number_of_leaves());
 
   // the free functions on results that do not match
   const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);
   const PD::Truncated_signed_distance_field tsdf32 =
     PD::compute_tsdf(m, PDP::voxel_resolutions(std::vector<int>{32}));
-  CHECK(error_of([&] { PD::fit_superquadrics(prior, tsdf32); }) == E::INVALID_PARAMETER);
   CHECK(error_of([&] { PD::fit_superquadrics(PD::Hierarchical_prior(), PD::Truncated_signed_distance_field()); }) ==
         E::INVALID_PARAMETER);
   CHECK(error_of([&] { PD::compute_tsdf(Mesh()); }) == E::NO_FACES);
   CHECK(error_of([&] { PD::compute_flow_freeze_prior(Mesh()); }) == E::NO_FACES);
   const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m);
-  CHECK(error_of([&] { PD::compute_fitting_zones(prior.classes, tsdf, std::vector<int>{0}); }) == E::INVALID_PARAMETER);
-  CHECK(error_of([&] { PD::compute_fitting_zones(prior.classes, tsdf32, std::vector<int>{16}); }) == E::INVALID_PARAMETER);
+  CHECK(error_of([&] { PD::compute_fitting_zones(prior, tsdf, std::vector<int>{0}); }) == E::INVALID_PARAMETER);
+  // a grid coarser than the prior's finest resolution
+  const PD::Truncated_signed_distance_field dense32 =
+    PD::compute_tsdf(m, PDP::combine(PDP::voxel_resolutions(std::vector<int>{32}), PDP::adaptive_grid(false)));
+  REQUIRE(dense32.grid.finest_resolution() == 32);
+  CHECK(error_of([&] { PD::compute_fitting_zones(prior, dense32, std::vector<int>{16}); }) == E::INVALID_PARAMETER);
+  CHECK(error_of([&] { PD::fit_superquadrics(prior, dense32); }) == E::INVALID_PARAMETER);
+  CHECK(error_of([&] { PD::compute_tsdf(m, prior, PDP::voxel_resolutions(std::vector<int>{32})); }) == E::INVALID_PARAMETER);
 
   // a normalization that is not a map into the cube
   for(double s : {0., -1., k_nan, k_inf})
     CHECK(error_of([&] { PD::Normalization({{0., 0., 0.}}, s); }) == E::INVALID_PARAMETER);
   CHECK(error_of([&] { PD::Normalization({{k_nan, 0., 0.}}, 1.); }) == E::INVALID_PARAMETER);
 
-  // an empty mesh has no patch; no claimed voxel gives one part
+  // an empty mesh has no patch; no claimed leaf gives one part; labels of another grid are refused
   std::vector<std::size_t> none;
   CHECK(PD::over_segment(Mesh(), CGAL::make_property_map(none)) == 0u);
   std::vector<std::size_t> patch(num_faces(m), 7);
+  std::vector<std::int32_t> unclaimed(tsdf.grid.number_of_leaves(), -1);
   const std::vector<std::size_t> parts =
-    PD::assign_parts(m, CGAL::make_property_map(patch), PD::Voxel_grid<std::int32_t>(8, -1), PD::Normalization(),
-                     CGAL::make_property_map(part));
+    PD::assign_parts(m, CGAL::make_property_map(patch), unclaimed, tsdf, CGAL::make_property_map(part));
   CHECK(parts.size() == 1u);
   CHECK(std::all_of(part.begin(), part.end(), [](std::size_t p) { return p == 0; }));
+  REQUIRE(tsdf32.grid.number_of_leaves() != tsdf.grid.number_of_leaves());
+  unclaimed.assign(tsdf32.grid.number_of_leaves(), 0);
+  CHECK(error_of([&] {
+          PD::assign_parts(m, CGAL::make_property_map(patch), unclaimed, tsdf, CGAL::make_property_map(part));
+        }) == E::INVALID_PARAMETER);
+  CHECK(error_of([&] {
+          PD::assign_parts(m, CGAL::make_property_map(patch), unclaimed, PD::Truncated_signed_distance_field(),
+                           CGAL::make_property_map(part));
+        }) == E::INVALID_PARAMETER);
+}
+
+TEST_CASE("the fit refuses a distance field of other voxel resolutions than the prior's",
+          "[robustness][library]")
+{
+  const Mesh m = ball_and_bar();
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m);
+  const PD::Truncated_signed_distance_field tsdf32 =
+    PD::compute_tsdf(m, PDP::voxel_resolutions(std::vector<int>{32}));
+  CHECK(error_of([&] { PD::fit_superquadrics(prior, tsdf32); }) == PD::Input_error::INVALID_PARAMETER);
 }
 
 TEST_CASE("the labels are the same run after run and for any number of threads", "[robustness][determinism][data]")

@@ -1,10 +1,15 @@
-// Tests of the superquadric type, its stable distance and Jacobian, the bounded least-squares
-// solver, FitSDF (Alg. A.3) and SDFSQFit (Alg. A.2).
+// Tests of the superquadric type, its stable distance and Jacobian, its leaves on an adaptive
+// grid, the bounded least-squares solver, FitSDF (Alg. A.3) and SDFSQFit (Alg. A.2) on the
+// adaptive and the uniform grids.
+#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
+#include <CGAL/Part_decomposition/tsdf.h>
 #include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
 #include <CGAL/Part_decomposition/internal/fit_sdf.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+#include <CGAL/Part_decomposition/internal/superquadric_leaves.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -17,9 +22,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "test_shapes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -307,6 +316,79 @@ TEST_CASE("Superquadric queries, rasterization, sampling and meshing", "[superqu
   CHECK(SQ({{0.1, 0.2, 0.3}}, 0., 0., I, Point(0, 0, 0)).volume() == Approx(8. * 0.006).epsilon(0.01));
 }
 
+namespace {
+
+// A grid of leaves of every size: the cells down to depth 2 are split, the deeper ones at random
+// (probability `p`) down to the finest resolution.
+PD::Adaptive_grid random_adaptive_grid(int finest, double p, std::mt19937& rng)
+{
+  typedef PD::Adaptive_grid::Cell Cell;
+  const int D = PD::Adaptive_grid::depth_of(finest);
+  std::bernoulli_distribution split(p);
+  std::vector<Cell> cells, stack(1, Cell{0, {{0, 0, 0}}});
+  while(!stack.empty())
+  {
+    const Cell c = stack.back();
+    stack.pop_back();
+    if(c.depth == D || (c.depth >= 2 && !split(rng)))
+    {
+      cells.push_back(c);
+      continue;
+    }
+    for(std::uint32_t child = 0; child < 8; ++child)
+      stack.push_back(Cell{c.depth + 1, {{2 * c.position[0] + (child & 1), 2 * c.position[1] + ((child >> 1) & 1),
+                                          2 * c.position[2] + ((child >> 2) & 1)}}});
+  }
+  return PD::Adaptive_grid(finest, cells);
+}
+
+} // namespace
+
+TEST_CASE("for_each_leaf_within visits exactly the leaves whose centre is within the margin", "[superquadric]")
+{
+  std::mt19937 rng(7);
+  const PD::Adaptive_grid adaptive = random_adaptive_grid(64, 0.4, rng);
+  const PD::Adaptive_grid uniform = PD::Adaptive_grid::uniform(32);
+  // the random grid mixes every leaf size from 1/4 to 1/64
+  for(int d = 2; d <= 6; ++d) REQUIRE(adaptive.number_of_leaves_of_depth(d) > 0);
+  const auto R = rotation_matrix({{1., 2., 0.5}}, 0.7);
+  // inside the cube, across its border, outside it
+  const Point centers[] = {Point(0.05, -0.02, 0.01), Point(0.4, -0.35, 0.1), Point(0.9, 0., 0.)};
+  for(const PD::Adaptive_grid* grid : {&adaptive, &uniform})
+    for(double e1 : {0.1, 1., 1.8})
+      for(double e2 : {0.1, 1., 2.})
+        for(const Point& c : centers)
+          for(double margin : {0., 0.01, 0.04})
+          {
+            const SQ sq({{0.3, 0.12, 0.2}}, e1, e2, R, c);
+            INFO((grid == &uniform ? "uniform" : "adaptive") << " grid, eps " << e1 << " " << e2 << " centre " << c
+                                                             << " margin " << margin);
+            std::vector<std::size_t> fast;
+            PDI::for_each_leaf_within(sq.data(), *grid, margin, [&](std::size_t l) { fast.push_back(l); });
+            const std::size_t visits = fast.size();
+            std::sort(fast.begin(), fast.end());
+            fast.erase(std::unique(fast.begin(), fast.end()), fast.end());
+            CHECK(fast.size() == visits); // each leaf once
+            // brute force over the leaf centres: the radial distance, or the inside test at margin 0
+            std::vector<std::size_t> brute;
+            for(std::size_t l = 0; l < grid->number_of_leaves(); ++l)
+            {
+              const std::array<double, 3> p = grid->center(l);
+              const Point q(p[0], p[1], p[2]);
+              if(margin == 0. ? sq.inside_outside(q) <= 1. : sq.signed_distance(q) <= margin) brute.push_back(l);
+            }
+            CHECK(fast == brute);
+            CHECK(brute.empty() == (c.x() > 0.5));
+            // on the uniform grid, leaf indices are the voxel indices of the dense rasterization
+            if(grid == &uniform)
+            {
+              std::vector<std::size_t> voxels;
+              sq.for_each_covered_voxel(32, [&](int, int, int, std::size_t v) { voxels.push_back(v); }, margin);
+              CHECK(fast == voxels);
+            }
+          }
+}
+
 TEST_CASE("Superquadric in input coordinates", "[superquadric]")
 {
   const PD::Normalization n({{10., -5., 2.}}, 0.25);
@@ -432,34 +514,78 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> AABB_primitive;
 typedef CGAL::AABB_tree<CGAL::AABB_traits<K, AABB_primitive> > AABB_tree;
 
-// The truncated Euclidean signed distance field of a superquadric on the r-grid: unsigned
-// distance to a fine triangulation of its surface, signed by the inside test, clipped to +-tau.
-PD::Voxel_grid<double> superquadric_tsdf(const std::vector<SQ>& shapes, int r, double tau)
+// The truncated signed distance field of a union of superquadrics: the min of the shapes' fields
+// (exact outside, the usual CSG approximation inside), each the distance to a fine triangulation
+// of its surface signed by its inside test, clipped to +-tau. Defined at every point, so that the
+// dense and the adaptive grids sample the same field.
+class Union_field
 {
-  Mesh mesh;
-  CGAL::Bbox_3 box;
-  for(const SQ& s : shapes)
+public:
+  Union_field(const std::vector<SQ>& shapes, double tau) : m_shapes(shapes), m_tau(tau), m_meshes(shapes.size())
   {
-    s.to_triangle_mesh(mesh, 64);
-    box += s.bbox();
+    for(std::size_t s = 0; s < shapes.size(); ++s)
+    {
+      shapes[s].to_triangle_mesh(m_meshes[s], 64);
+      m_trees.emplace_back(new AABB_tree(faces(m_meshes[s]).first, faces(m_meshes[s]).second, m_meshes[s]));
+      m_trees.back()->accelerate_distance_queries();
+    }
   }
-  AABB_tree tree(faces(mesh).first, faces(mesh).second, mesh);
-  tree.accelerate_distance_queries();
-  PD::Voxel_grid<double> d(r, tau);
-  for(std::size_t idx = 0; idx < d.size(); ++idx)
+
+  double truncation() const { return m_tau; }
+
+  double operator()(const std::array<double, 3>& c) const
   {
-    const auto c = d.center(idx);
-    // beyond tau from the bounding box every distance is clipped anyway
-    if(c[0] < box.xmin() - tau || c[0] > box.xmax() + tau || c[1] < box.ymin() - tau ||
-       c[1] > box.ymax() + tau || c[2] < box.zmin() - tau || c[2] > box.zmax() + tau)
-      continue;
-    const Point p(c[0], c[1], c[2]);
-    bool inside = false;
-    for(const SQ& s : shapes) inside = inside || s.has_on_bounded_side_or_boundary(p);
-    const double u = std::sqrt(tree.squared_distance(p));
-    d[idx] = std::max(-tau, std::min(tau, inside ? -u : u));
+    double d = m_tau;
+    for(std::size_t s = 0; s < m_shapes.size(); ++s)
+    {
+      // beyond tau from the bounding box every distance is clipped anyway
+      const CGAL::Bbox_3 box = m_shapes[s].bbox();
+      if(c[0] < box.xmin() - m_tau || c[0] > box.xmax() + m_tau || c[1] < box.ymin() - m_tau ||
+         c[1] > box.ymax() + m_tau || c[2] < box.zmin() - m_tau || c[2] > box.zmax() + m_tau)
+        continue;
+      const Point p(c[0], c[1], c[2]);
+      const double u = std::sqrt(m_trees[s]->squared_distance(p));
+      d = std::min(d, std::max(-m_tau, std::min(m_tau, m_shapes[s].has_on_bounded_side_or_boundary(p) ? -u : u)));
+    }
+    return d;
   }
-  return d;
+
+  // at the voxel centres of the r-grid
+  PD::Voxel_grid<double> on_voxels(int r) const
+  {
+    PD::Voxel_grid<double> d(r, m_tau);
+    for(std::size_t v = 0; v < d.size(); ++v) d[v] = (*this)(d.center(v));
+    return d;
+  }
+
+  // at the leaf centres of a grid
+  std::vector<double> on_leaves(const PD::Adaptive_grid& grid) const
+  {
+    std::vector<double> d(grid.number_of_leaves());
+    for(std::size_t l = 0; l < d.size(); ++l) d[l] = (*this)(grid.center(l));
+    return d;
+  }
+
+  // the surfaces of the shapes in one mesh (overlapping where the shapes do)
+  Mesh mesh() const
+  {
+    Mesh m;
+    for(const Mesh& s : m_meshes) m.join(s);
+    return m;
+  }
+
+private:
+  std::vector<SQ> m_shapes;
+  double m_tau;
+  std::vector<Mesh> m_meshes;
+  std::vector<std::unique_ptr<AABB_tree> > m_trees;
+};
+
+// The grid compute_tsdf() builds for the mesh of the shapes without a prior (the surface at the
+// finest of the default voxel resolutions, 64): coarse inside and away from the surface.
+PD::Adaptive_grid library_grid(const Union_field& field)
+{
+  return PD::compute_tsdf(field.mesh(), PD::parameters::normalization(PD::Normalization())).grid;
 }
 
 double angle_degrees(const K::Vector_3& u, const K::Vector_3& v)
@@ -468,20 +594,20 @@ double angle_degrees(const K::Vector_3& u, const K::Vector_3& v)
   return std::acos(std::min(1., c)) * 180. / CGAL_PI;
 }
 
-// One FitSDF run as SDFSQFit would start it from a seed: samples = voxel centres of the ball of
-// radius rho around the seed with d_M < 1.5 voxels; ball of radius 1/32, axis-aligned, eps = 1.
-PDI::Fit_sdf_result fit_from_seed(const PD::Voxel_grid<double>& tsdf, const std::array<double, 3>& seed,
-                                  double tau, bool reestimate, double eta = 1.)
+// One FitSDF run as SDFSQFit would start it from a seed: samples = leaf centres of the ball of
+// radius rho around the seed with d_M < 1.5 h, each weighted by its volume in voxels of side h;
+// ball of radius 1/32, axis-aligned, eps = 1.
+PDI::Fit_sdf_result fit_from_seed(const PD::Adaptive_grid& grid, const std::vector<double>& tsdf, double h,
+                                  const std::array<double, 3>& seed, double tau, bool reestimate)
 {
-  const int r = tsdf.resolution();
-  const double h = 1. / r, rho = 0.25;
+  const double rho = 0.25;
   PDI::Fit_samples P;
-  for(std::size_t idx = 0; idx < tsdf.size(); ++idx)
+  for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
   {
-    const auto c = tsdf.center(idx);
+    const auto c = grid.center(l);
     const double d2 = (c[0] - seed[0]) * (c[0] - seed[0]) + (c[1] - seed[1]) * (c[1] - seed[1]) +
                       (c[2] - seed[2]) * (c[2] - seed[2]);
-    if(d2 <= rho * rho && tsdf[idx] < 1.5 * h) P.push_back(c[0], c[1], c[2], tsdf[idx]);
+    if(d2 <= rho * rho && tsdf[l] < 1.5 * h) P.push_back(c[0], c[1], c[2], tsdf[l], grid.volume(l) / (h * h * h));
   }
   PDI::Superquadric_data q0;
   for(int i = 0; i < 3; ++i) q0.a[i] = 1. / 32., q0.c[i] = seed[i];
@@ -492,7 +618,6 @@ PDI::Fit_sdf_result fit_from_seed(const PD::Voxel_grid<double>& tsdf, const std:
   PDI::Fit_sdf_settings settings;
   settings.truncation = tau;
   settings.reestimate_variance = reestimate;
-  settings.semi_axis_scale = eta;
   PDI::Fit_sdf_workspace ws;
   return PDI::fit_sdf<CGAL::Sequential_tag>(P, q0, lb, ub, settings, ws);
 }
@@ -512,91 +637,106 @@ TEST_CASE("FitSDF recovers a single superquadric from its own TSDF", "[fit_sdf]"
     {"rotated box-like", {{0.2, 0.12, 0.08}}, 0.1, 0.1, rotation_matrix({{0.2, 1., 0.4}}, 0.45)},
     {"cylinder-like", {{0.1, 0.1, 0.2}}, 0.1, 1., rotation_matrix({{1., 0., 0.3}}, 0.3)},
   };
-  for(bool reestimate : {true, false})
-    for(const Case& cs : cases)
+  const PD::Adaptive_grid dense = PD::Adaptive_grid::uniform(r);
+  for(const Case& cs : cases)
+  {
+    const Point center(0.013, -0.021, 0.008);
+    const SQ truth(cs.a, cs.e1, cs.e2, cs.R, center);
+    const Union_field field({truth}, tau);
+    // the dense grid of the paper (unit weights), and the library's adaptive grid of the shape,
+    // whose large inner leaves weigh their volume
+    const PD::Adaptive_grid adaptive = library_grid(field);
+    REQUIRE(adaptive.number_of_leaves() < dense.number_of_leaves() / 4);
+    // seed: the centre of the voxel of h that holds the true centre, on both grids
+    const auto seed = dense.center(dense.locate(center.x(), center.y(), center.z()));
+    for(const PD::Adaptive_grid* grid : {&dense, &adaptive})
     {
-      const Point center(0.013, -0.021, 0.008);
-      const SQ truth(cs.a, cs.e1, cs.e2, cs.R, center);
-      const PD::Voxel_grid<double> tsdf = superquadric_tsdf({truth}, r, tau);
-      // seed: the voxel centre nearest to the true centre
-      const auto ijk = tsdf.locate(center.x(), center.y(), center.z());
-      const auto seed = tsdf.center(ijk[0], ijk[1], ijk[2]);
-      const PDI::Fit_sdf_result fit = fit_from_seed(tsdf, seed, tau, reestimate);
-      REQUIRE(fit.valid);
-      const SQ sq(fit.theta);
-      INFO(cs.name << (reestimate ? " (MPS variance)" : " (one-shot variance)") << ": a = " << sq.scales()[0]
-                   << " " << sq.scales()[1] << " " << sq.scales()[2] << " eps " << sq.epsilon1() << " "
-                   << sq.epsilon2() << " c " << sq.center() << " evaluations " << fit.evaluations);
-      CHECK(std::sqrt(CGAL::squared_distance(sq.center(), center)) < h);
-      // match every true axis with the fitted axis most parallel to it
-      for(int i = 0; i < 3; ++i)
+      const std::vector<double> values = field.on_leaves(*grid);
+      for(bool reestimate : {true, false})
       {
-        int best = 0;
-        double best_angle = 180.;
-        for(int j = 0; j < 3; ++j)
+        const PDI::Fit_sdf_result fit = fit_from_seed(*grid, values, h, seed, tau, reestimate);
+        REQUIRE(fit.valid);
+        const SQ sq(fit.theta);
+        INFO(cs.name << (grid == &dense ? " (dense grid" : " (adaptive grid")
+                     << (reestimate ? ", MPS variance)" : ", one-shot variance)") << ": a = " << sq.scales()[0]
+                     << " " << sq.scales()[1] << " " << sq.scales()[2] << " eps " << sq.epsilon1() << " "
+                     << sq.epsilon2() << " c " << sq.center() << " evaluations " << fit.evaluations);
+        CHECK(std::sqrt(CGAL::squared_distance(sq.center(), center)) < h);
+        // match every true axis with the fitted axis most parallel to it
+        for(int i = 0; i < 3; ++i)
         {
-          const double ang = angle_degrees(truth.axis(i), sq.axis(j));
-          if(ang < best_angle) best_angle = ang, best = j;
+          int best = 0;
+          double best_angle = 180.;
+          for(int j = 0; j < 3; ++j)
+          {
+            const double ang = angle_degrees(truth.axis(i), sq.axis(j));
+            if(ang < best_angle) best_angle = ang, best = j;
+          }
+          CHECK(std::abs(sq.scales()[best] - cs.a[i]) < h);
+          // orientation only means something for distinct axes
+          const bool distinct = std::abs(cs.a[i] - cs.a[(i + 1) % 3]) > 0.02 && std::abs(cs.a[i] - cs.a[(i + 2) % 3]) > 0.02;
+          if(distinct) CHECK(best_angle < 4.);
         }
-        CHECK(std::abs(sq.scales()[best] - cs.a[i]) < h);
-        // orientation only means something for distinct axes
-        const bool distinct = std::abs(cs.a[i] - cs.a[(i + 1) % 3]) > 0.02 && std::abs(cs.a[i] - cs.a[(i + 2) % 3]) > 0.02;
-        if(distinct) CHECK(best_angle < 4.);
       }
     }
+  }
 }
 
 namespace {
 
-// The truncated signed distance of a union of superquadrics: min of the shapes' fields (exact
-// outside, the usual CSG approximation inside).
-PD::Voxel_grid<double> union_tsdf(const std::vector<SQ>& shapes, int r, double tau)
-{
-  PD::Voxel_grid<double> d(r, tau);
-  for(const SQ& s : shapes)
-  {
-    const PD::Voxel_grid<double> ds = superquadric_tsdf({s}, r, tau);
-    for(std::size_t i = 0; i < d.size(); ++i) d[i] = std::min(d[i], ds[i]);
-  }
-  return d;
-}
-
-// A hand-made prior on the 64-grid: carrier = voxels whose centre is within half a diagonal of the
-// surface; carrier voxels for which `is_freeze(centre)` holds are Freeze leaves of resolution 64,
-// the others Flow leaves of resolution 16; interior voxels have R_map = 0.
+// A hand-made prior at `resolutions` from the field `d` on the grid of the finest one, r:
+// carrier = voxels whose centre is within half a diagonal of the surface; carrier voxels for which
+// `is_freeze(centre)` holds are Freeze leaves of resolution r, the others Flow leaves of the
+// coarsest resolution; interior voxels have R_map = 0. A real prior too has classes on the
+// carrier only.
 template <typename F>
-PD::Hierarchical_prior synthetic_prior(const PD::Voxel_grid<double>& tsdf, const F& is_freeze)
+PD::Hierarchical_prior synthetic_prior(const PD::Voxel_grid<double>& d, const F& is_freeze,
+                                       const std::vector<int>& resolutions = {16, 32, 64})
 {
-  const int r = tsdf.resolution();
+  const int r = d.resolution();
   PD::Hierarchical_prior prior;
-  prior.resolutions = {16, 32, 64};
+  prior.resolutions = resolutions;
   prior.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
   prior.leaf_resolution = PD::Voxel_grid<std::uint16_t>(r, 0);
-  for(std::size_t i = 0; i < tsdf.size(); ++i)
-    if(std::abs(tsdf[i]) <= 0.87 / r)
+  for(std::size_t i = 0; i < d.size(); ++i)
+    if(std::abs(d[i]) <= 0.87 / r)
     {
-      const bool fr = is_freeze(tsdf.center(i));
+      const bool fr = is_freeze(d.center(i));
       prior.classes[i] = fr ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
-      prior.leaf_resolution[i] = fr ? 64 : 16;
+      prior.leaf_resolution[i] = std::uint16_t(fr ? r : resolutions.front());
     }
   return prior;
 }
 
-PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d)
+// The distance field of a hand-made case: the grid compute_tsdf() builds for the mesh of the
+// shapes and `prior` (adaptive, or with adaptive_grid(false) one leaf per voxel of the prior's
+// finest resolution; `grid_resolution` 0: the default), carrying the analytic field at its leaf
+// centres.
+PD::Truncated_signed_distance_field synthetic_tsdf(const Union_field& field, const PD::Hierarchical_prior& prior,
+                                                   bool adaptive, int grid_resolution = 0)
 {
-  PD::Truncated_signed_distance_field tsdf;
-  tsdf.values = d;
-  return PD::compute_fitting_zones(prior.classes, tsdf, {16, 32});
+  namespace P = PD::parameters;
+  const int r = prior.resolutions.back();
+  PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(
+    field.mesh(), prior,
+    P::combine(P::voxel_resolutions(prior.resolutions), P::normalization(PD::Normalization()),
+               P::tsdf_truncation(field.truncation() * r), P::adaptive_grid(adaptive),
+               P::grid_resolution(grid_resolution == 0 ? PD::defaults::grid_resolution : grid_resolution)));
+  tsdf.values = field.on_leaves(tsdf.grid);
+  return tsdf;
 }
 
-PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prior, const PD::Voxel_grid<double>& d,
-                                              double tau, PD::Interior_weight_mode mode = PD::Interior_weight_mode::ONE_SHOT,
+PD::Fitting_zones synthetic_zones(const PD::Hierarchical_prior& prior, const PD::Truncated_signed_distance_field& tsdf)
+{
+  return PD::compute_fitting_zones(prior, tsdf, {16, 32});
+}
+
+PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prior,
+                                              const PD::Truncated_signed_distance_field& tsdf,
+                                              PD::Interior_weight_mode mode = PD::Interior_weight_mode::ONE_SHOT,
                                               bool verbose = false)
 {
-  PD::Truncated_signed_distance_field tsdf;
-  tsdf.values = d;
-  tsdf.truncation = tau;
-  const PD::Fitting_zones zones = synthetic_zones(prior, d);
+  const PD::Fitting_zones zones = synthetic_zones(prior, tsdf);
   namespace P = PD::parameters;
   return PD::fit_superquadrics<CGAL::Sequential_tag, K>(
     prior, tsdf, zones, P::combine(P::coverage_target(0.95), P::interior_weight_mode(mode), CGAL::parameters::verbose(verbose)));
@@ -611,7 +751,6 @@ TEST_CASE("SDFSQFit: one primitive per lobe, none across a Freeze wall", "[sdfsq
   const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
   const auto z_to_x = rotation_matrix({{0., 1., 0.}}, CGAL_PI / 2.); // local z along world x
   const auto z_to_y = rotation_matrix({{1., 0., 0.}}, -CGAL_PI / 2.); // local z along world y
-  struct Lobe { SQ shape; };
   // lobes along x, joined by thin necks of radius two voxels; Freeze on the carrier at the necks
   const SQ left({{0.15, 0.12, 0.12}}, 1., 1., I, Point(-0.22, 0., 0.));
   const SQ right({{0.13, 0.11, 0.12}}, 0.2, 0.2, I, Point(0.2, 0., 0.));
@@ -620,56 +759,68 @@ TEST_CASE("SDFSQFit: one primitive per lobe, none across a Freeze wall", "[sdfsq
   const SQ neck2({{0.03, 0.03, 0.06}}, 0.1, 1., z_to_y, Point(0.2, 0.13, 0.));
 
   for(int lobes : {2, 3})
-    for(auto mode : {PD::Interior_weight_mode::ONE_SHOT, PD::Interior_weight_mode::MPS_REESTIMATED})
+  {
+    std::vector<SQ> parts = {left, right, neck};
+    if(lobes == 3)
     {
-      std::vector<SQ> parts = {left, right, neck};
-      if(lobes == 3)
-      {
-        parts.push_back(top);
-        parts.push_back(neck2);
-      }
-      const PD::Voxel_grid<double> d = union_tsdf(parts, r, tau);
-      // walls: carrier voxels around the necks
-      auto is_freeze = [&](const std::array<double, 3>& c) {
-        const bool wall1 = c[0] > -0.09 && c[0] < 0.075 && std::abs(c[1]) < 0.06 && std::abs(c[2]) < 0.06;
-        const bool wall2 = lobes == 3 && c[1] > 0.1 && c[1] < 0.19 && std::abs(c[0] - 0.2) < 0.06 && std::abs(c[2]) < 0.06;
-        return wall1 || wall2;
-      };
-      const PD::Hierarchical_prior prior = synthetic_prior(d, is_freeze);
-      const auto res = run_fitter(prior, d, tau, mode);
-      std::vector<SQ> lobe_shapes = {left, right};
-      if(lobes == 3) lobe_shapes.push_back(top);
-      INFO(lobes << " lobes, mode " << int(mode) << ": " << res.primitives.size() << " primitives, "
-                 << res.number_of_seeds << " seeds, " << res.number_of_solves << " solves");
-      // each lobe: most of its voxels belong to one primitive centred in it
-      std::size_t big = 0;
-      for(std::size_t k = 0; k < res.primitives.size(); ++k)
-      {
-        std::size_t in_lobe[3] = {0, 0, 0};
-        for(std::size_t v : res.claimed_voxels[k])
-        {
-          const auto c = res.labels.center(v);
-          for(std::size_t l = 0; l < lobe_shapes.size(); ++l)
-            if(lobe_shapes[l].has_on_bounded_side_or_boundary(Point(c[0], c[1], c[2]))) ++in_lobe[l];
-        }
-        // no primitive claims voxels in two lobes (every path between lobes crosses a wall)
-        int lobes_touched = 0;
-        for(std::size_t l = 0; l < lobe_shapes.size(); ++l) lobes_touched += in_lobe[l] > 0 ? 1 : 0;
-        CHECK(lobes_touched <= 1);
-        for(std::size_t l = 0; l < lobe_shapes.size(); ++l)
-          if(double(in_lobe[l]) > 0.5 * lobe_shapes[l].volume() * r * r * r)
-          {
-            ++big;
-            CHECK(lobe_shapes[l].has_on_bounded_side_or_boundary(res.primitives[k].center()));
-          }
-      }
-      CHECK(big == lobe_shapes.size());
-      // labels never sit on Freeze or exterior voxels
-      const PD::Fitting_zones zones = synthetic_zones(prior, d);
-      for(std::size_t v = 0; v < res.labels.size(); ++v)
-        if(res.labels[v] >= 0) CHECK(zones.freeze_zone[v] == 0);
-      CHECK(res.number_of_solves > 0);
+      parts.push_back(top);
+      parts.push_back(neck2);
     }
+    const Union_field field(parts, tau);
+    // walls: carrier voxels around the necks
+    auto is_freeze = [&](const std::array<double, 3>& c) {
+      const bool wall1 = c[0] > -0.09 && c[0] < 0.075 && std::abs(c[1]) < 0.06 && std::abs(c[2]) < 0.06;
+      const bool wall2 = lobes == 3 && c[1] > 0.1 && c[1] < 0.19 && std::abs(c[0] - 0.2) < 0.06 && std::abs(c[2]) < 0.06;
+      return wall1 || wall2;
+    };
+    const PD::Hierarchical_prior prior = synthetic_prior(field.on_voxels(r), is_freeze);
+    std::vector<SQ> lobe_shapes = {left, right};
+    if(lobes == 3) lobe_shapes.push_back(top);
+    for(bool adaptive : {true, false})
+    {
+      const PD::Truncated_signed_distance_field tsdf = synthetic_tsdf(field, prior, adaptive);
+      const PD::Adaptive_grid& grid = tsdf.grid;
+      // the uniform grid is the dense 64-grid, the adaptive one much smaller
+      if(adaptive) CHECK(grid.number_of_leaves() < std::size_t(r * r * r / 4));
+      else CHECK(grid == PD::Adaptive_grid::uniform(r));
+      const PD::Fitting_zones zones = synthetic_zones(prior, tsdf);
+      for(auto mode : {PD::Interior_weight_mode::ONE_SHOT, PD::Interior_weight_mode::MPS_REESTIMATED})
+      {
+        const auto res = run_fitter(prior, tsdf, mode);
+        INFO(lobes << " lobes, " << (adaptive ? "adaptive" : "uniform") << " grid of " << grid.number_of_leaves()
+                   << " leaves, mode " << int(mode) << ": " << res.primitives.size() << " primitives, "
+                   << res.number_of_seeds << " seeds, " << res.number_of_solves << " solves");
+        REQUIRE(res.labels.size() == grid.number_of_leaves());
+        // each lobe: most of its volume belongs to one primitive centred in it
+        std::size_t big = 0;
+        for(std::size_t k = 0; k < res.primitives.size(); ++k)
+        {
+          double in_lobe[3] = {0., 0., 0.};
+          for(std::size_t l : res.claimed_leaves[k])
+          {
+            const auto c = grid.center(l);
+            for(std::size_t i = 0; i < lobe_shapes.size(); ++i)
+              if(lobe_shapes[i].has_on_bounded_side_or_boundary(Point(c[0], c[1], c[2]))) in_lobe[i] += grid.volume(l);
+          }
+          // no primitive claims leaves in two lobes (every path between lobes crosses a wall)
+          int lobes_touched = 0;
+          for(std::size_t i = 0; i < lobe_shapes.size(); ++i) lobes_touched += in_lobe[i] > 0. ? 1 : 0;
+          CHECK(lobes_touched <= 1);
+          for(std::size_t i = 0; i < lobe_shapes.size(); ++i)
+            if(in_lobe[i] > 0.5 * lobe_shapes[i].volume())
+            {
+              ++big;
+              CHECK(lobe_shapes[i].has_on_bounded_side_or_boundary(res.primitives[k].center()));
+            }
+        }
+        CHECK(big == lobe_shapes.size());
+        // labels never sit on Freeze or exterior leaves
+        for(std::size_t l = 0; l < res.labels.size(); ++l)
+          if(res.labels[l] >= 0) CHECK(zones.freeze_zone[l] == 0);
+        CHECK(res.number_of_solves > 0);
+      }
+    }
+  }
 }
 
 TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism", "[sdfsqfit]")
@@ -678,25 +829,26 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
   const double h = 1. / r, tau = 8. * h;
   const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
   const auto z_to_x = rotation_matrix({{0., 1., 0.}}, CGAL_PI / 2.);
-  const std::vector<SQ> parts = {SQ({{0.15, 0.12, 0.12}}, 1., 1., I, Point(-0.22, 0., 0.)),
-                                 SQ({{0.13, 0.11, 0.12}}, 0.2, 0.2, I, Point(0.2, 0., 0.)),
-                                 SQ({{0.03, 0.03, 0.08}}, 0.1, 1., z_to_x, Point(-0.01, 0., 0.))};
-  const PD::Voxel_grid<double> d = union_tsdf(parts, r, tau);
-  PD::Hierarchical_prior prior = synthetic_prior(d, [](const std::array<double, 3>& c) {
+  const Union_field field({SQ({{0.15, 0.12, 0.12}}, 1., 1., I, Point(-0.22, 0., 0.)),
+                           SQ({{0.13, 0.11, 0.12}}, 0.2, 0.2, I, Point(0.2, 0., 0.)),
+                           SQ({{0.03, 0.03, 0.08}}, 0.1, 1., z_to_x, Point(-0.01, 0., 0.))},
+                          tau);
+  PD::Hierarchical_prior prior = synthetic_prior(field.on_voxels(r), [](const std::array<double, 3>& c) {
     return c[0] > -0.09 && c[0] < 0.075 && std::abs(c[1]) < 0.06 && std::abs(c[2]) < 0.06;
   });
+  const PD::Truncated_signed_distance_field tsdf = synthetic_tsdf(field, prior, true);
   prior.normalization = PD::Normalization({{1., 2., 3.}}, 0.5);
-  PD::Truncated_signed_distance_field tsdf;
-  tsdf.values = d;
-  tsdf.truncation = tau;
 
   const auto seq = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf);
   REQUIRE(seq.primitives.size() >= 2);
+  CHECK(seq.labels.size() == tsdf.grid.number_of_leaves());
   CHECK(seq.primitives.size() == seq.input_primitives.size());
-  CHECK(seq.primitives.size() == seq.claimed_voxels.size());
+  CHECK(seq.primitives.size() == seq.claimed_leaves.size());
   CHECK(seq.stage_resolution.size() == seq.primitives.size());
+  CHECK(seq.seed_leaf.size() == seq.primitives.size());
   CHECK(seq.number_of_solves >= seq.primitives.size());
   CHECK(seq.stage_coverage.size() == 3);
+  std::size_t claimed = 0;
   for(std::size_t k = 0; k < seq.primitives.size(); ++k)
   {
     // input coordinates through the normalization
@@ -705,8 +857,12 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
                                                    CGAL::to_double(seq.primitives[k].center().z())}});
     CHECK(seq.input_primitives[k].center().x() == Approx(c[0]));
     CHECK(seq.input_primitives[k].scales()[0] == Approx(seq.primitives[k].scales()[0] / 0.5));
-    for(std::size_t v : seq.claimed_voxels[k]) CHECK(seq.labels[v] == int(k));
+    CHECK(std::is_sorted(seq.claimed_leaves[k].begin(), seq.claimed_leaves[k].end()));
+    for(std::size_t l : seq.claimed_leaves[k]) CHECK(seq.labels[l] == int(k));
+    claimed += seq.claimed_leaves[k].size();
   }
+  // the claimed leaves are all the labelled ones
+  CHECK(claimed == std::size_t(std::count_if(seq.labels.begin(), seq.labels.end(), [](std::int32_t k) { return k >= 0; })));
 #ifdef CGAL_LINKED_WITH_TBB
   // bit-identical with threads
   const auto par = PD::fit_superquadrics<CGAL::Parallel_tag, K>(prior, tsdf);
@@ -733,17 +889,16 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
   REQUIRE(PD::fitting_resolutions(prior.resolutions) == std::vector<int>{16, 32});
   CHECK(PD::fitting_resolutions({8}) == std::vector<int>{4});
   CHECK(PD::fitting_resolutions({16, 64}) == std::vector<int>{16});
-  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior.classes, tsdf, {16, 32});
+  const PD::Fitting_zones zones = PD::compute_fitting_zones(prior, tsdf, {16, 32});
   // zones computed beforehand give the same fit; zones that miss a resolution are refused
   const auto with_zones = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, zones);
   CHECK(with_zones.labels == seq.labels);
   CHECK(with_zones.primitives.size() == seq.primitives.size());
   CHECK(with_zones.number_of_evaluations == seq.number_of_evaluations);
-  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, PD::compute_fitting_zones(prior.classes, tsdf, {16})),
-                  PD::Invalid_input);
+  CHECK_THROWS_AS(PD::fit_superquadrics(prior, tsdf, PD::compute_fitting_zones(prior, tsdf, {16})), PD::Invalid_input);
   for(const auto* res : {&no_body, &no_tsdf, &no_freeze})
-    for(std::size_t v = 0; v < res->labels.size(); ++v)
-      if(res->labels[v] >= 0) CHECK(zones.exterior[v] == 0);
+    for(std::size_t l = 0; l < res->labels.size(); ++l)
+      if(res->labels[l] >= 0) CHECK(zones.exterior[l] == 0);
   // the cap holds
   const auto capped = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::maximum_number_of_primitives(1));
   CHECK(capped.primitives.size() == 1);
@@ -757,43 +912,39 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
 
 namespace {
 
-// A box of half-sizes (0.3, 0.15, 0.15) on a 32-grid, with resolutions {16, 32}: the carrier
-// (voxels within half a diagonal of the surface) is Flow with R_map = 16, the interior has
-// R_map = 0; with `wall`, every voxel of the hull with |x| < 1/32 (a slab two voxels thick, across
-// the whole section) is Freeze with R_map = 32.
-struct Box_case
+// A hand-made prior and the distance field on the library's grid for it.
+struct Synthetic_case
 {
   PD::Hierarchical_prior prior;
   PD::Truncated_signed_distance_field tsdf;
 };
 
-Box_case box_case(bool wall, std::vector<int> resolutions = {16, 32})
+// A box of half-sizes (0.3, 0.15, 0.15) with a prior at `resolutions` (finest 32) whose carrier is
+// all Flow, R_map = the coarsest resolution.
+Synthetic_case box_case(std::vector<int> resolutions = {16, 32}, bool adaptive = true, int grid_resolution = 0)
 {
   const int r = 32;
-  const double tau = 8. / r;
   const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
-  Box_case out;
-  out.tsdf.values = superquadric_tsdf({SQ({{0.3, 0.15, 0.15}}, 0.1, 0.1, I, Point(0., 0., 0.))}, r, tau);
-  out.tsdf.truncation = tau;
-  const PD::Voxel_grid<double>& d = out.tsdf.values;
-  PD::Hierarchical_prior& prior = out.prior;
-  prior.resolutions = resolutions;
-  prior.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
-  prior.leaf_resolution = PD::Voxel_grid<std::uint16_t>(r, 0);
-  for(std::size_t i = 0; i < d.size(); ++i)
-  {
-    const bool carrier = std::abs(d[i]) <= 0.87 / r;
-    if(wall && d[i] <= 0.87 / r && std::abs(d.center(i)[0]) < 1. / r)
-    {
-      prior.classes[i] = PD::Voxel_class::FREEZE;
-      prior.leaf_resolution[i] = std::uint16_t(r);
-    }
-    else if(carrier)
-    {
-      prior.classes[i] = PD::Voxel_class::FLOW;
-      prior.leaf_resolution[i] = std::uint16_t(resolutions.front());
-    }
-  }
+  const Union_field field({SQ({{0.3, 0.15, 0.15}}, 0.1, 0.1, I, Point(0., 0., 0.))}, 8. / r);
+  Synthetic_case out;
+  out.prior = synthetic_prior(field.on_voxels(r), [](const std::array<double, 3>&) { return false; }, resolutions);
+  out.tsdf = synthetic_tsdf(field, out.prior, adaptive, grid_resolution);
+  return out;
+}
+
+// A plate of half-sizes (0.3, 0.15, 0.025), resolutions {16, 32}: its whole thickness is in the
+// carrier, which is Freeze with R_map = 32 at 0 < x < 1/32, Flow with R_map = 16 elsewhere: a
+// Freeze band across the plate, as a real prior puts on a crease, which the distance field does
+// not see. One voxel wide: the fit of a plain ball spans a band without samples if it is narrow.
+Synthetic_case plate_case(bool adaptive = true)
+{
+  const int r = 32;
+  const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  const Union_field field({SQ({{0.3, 0.15, 0.025}}, 0.1, 0.1, I, Point(0., 0., 0.))}, 8. / r);
+  Synthetic_case out;
+  out.prior = synthetic_prior(field.on_voxels(r), [](const std::array<double, 3>& c) { return c[0] > 0. && c[0] < 1. / 32; },
+                              {16, 32});
+  out.tsdf = synthetic_tsdf(field, out.prior, adaptive);
   return out;
 }
 
@@ -811,10 +962,10 @@ void check_same_fit(const Fit& a, const Fit& b)
   }
   CHECK(a.stage_resolution == b.stage_resolution);
   CHECK(a.body_seeded == b.body_seeded);
-  CHECK(a.seed_voxel == b.seed_voxel);
+  CHECK(a.seed_leaf == b.seed_leaf);
   CHECK(a.semi_axis_scale == b.semi_axis_scale);
   CHECK(a.fit_cost == b.fit_cost);
-  CHECK(a.claimed_voxels == b.claimed_voxels);
+  CHECK(a.claimed_leaves == b.claimed_leaves);
   CHECK(a.number_of_seeds == b.number_of_seeds);
   CHECK(a.number_of_body_seeds == b.number_of_body_seeds);
   CHECK(a.number_of_rejected_seeds == b.number_of_rejected_seeds);
@@ -824,17 +975,17 @@ void check_same_fit(const Fit& a, const Fit& b)
   CHECK(a.number_of_solves == b.number_of_solves);
   CHECK(a.number_of_evaluations == b.number_of_evaluations);
   CHECK(a.number_of_samples == b.number_of_samples);
-  CHECK(a.merged_voxels == b.merged_voxels);
+  CHECK(a.merged_leaves == b.merged_leaves);
   CHECK(a.stage_coverage == b.stage_coverage);
 }
 
-// Whether some primitive claims voxels on both sides of the plane x = 0.
-bool some_claim_crosses_the_wall(const Fit& fit)
+// Whether some primitive claims leaves on both sides of the plane x = 0.
+bool some_claim_crosses_the_wall(const Fit& fit, const PD::Adaptive_grid& grid)
 {
-  for(const std::vector<std::size_t>& voxels : fit.claimed_voxels)
+  for(const std::vector<std::size_t>& leaves : fit.claimed_leaves)
   {
     bool left = false, right = false;
-    for(std::size_t v : voxels) (fit.labels.center(v)[0] < 0. ? left : right) = true;
+    for(std::size_t l : leaves) (grid.center(l)[0] < 0. ? left : right) = true;
     if(left && right) return true;
   }
   return false;
@@ -846,17 +997,21 @@ TEST_CASE("fit_superquadrics and compute_fitting_zones: default named parameters
 {
   namespace P = PD::parameters;
   namespace D = PD::defaults;
-  const Box_case c = box_case(true);
+  const Synthetic_case c = plate_case();
   const auto explicit_zone_parameters = P::combine(P::flow_zone_tolerance(D::flow_zone_tolerance),
                                                    P::use_freeze_zone(D::use_freeze_zone));
   const std::vector<int> fit_res = PD::fitting_resolutions(c.prior.resolutions);
-  const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior.classes, c.tsdf, fit_res);
-  const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior.classes, c.tsdf, fit_res, explicit_zone_parameters);
+  const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior, c.tsdf, fit_res);
+  const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior, c.tsdf, fit_res, explicit_zone_parameters);
+  CHECK(z1.classes == z2.classes);
+  CHECK(z1.leaf_resolution == z2.leaf_resolution);
   CHECK(z1.occupied == z2.occupied);
   CHECK(z1.exterior == z2.exterior);
   CHECK(z1.freeze_zone == z2.freeze_zone);
   CHECK(z1.flow_zone == z2.flow_zone);
-  CHECK(z1.flow_zone_distance == z2.flow_zone_distance);
+  // and they differ from other values: the comparison is not idle
+  const PD::Fitting_zones z3 = PD::compute_fitting_zones(c.prior, c.tsdf, fit_res, P::flow_zone_tolerance(1.));
+  CHECK(z3.flow_zone != z1.flow_zone);
 
   const Fit by_default = PD::fit_superquadrics<CGAL::Sequential_tag, K>(c.prior, c.tsdf);
   const Fit given = PD::fit_superquadrics<CGAL::Sequential_tag, K>(
@@ -884,20 +1039,23 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
 
   SECTION("use_reachable_regions: only the plain ball lets a claim cross a Freeze wall")
   {
-    // The distance field sees one box; the Freeze slab splits it. The ball of the first seed
-    // holds both halves: without the reachable region, the fit sees the whole box.
-    const Box_case c = box_case(true);
-    const Fit reachable = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
-    const Fit ball = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::use_reachable_regions(false));
-    REQUIRE(reachable.primitives.size() >= 2);
-    CHECK_FALSE(some_claim_crosses_the_wall(reachable));
-    CHECK(some_claim_crosses_the_wall(ball));
+    // The distance field sees one plate; the Freeze band splits it. The ball of the first seed
+    // holds both halves: without the reachable region, the fit sees the whole plate.
+    for(bool adaptive : {true, false})
+    {
+      INFO((adaptive ? "adaptive" : "uniform") << " grid");
+      const Synthetic_case c = plate_case(adaptive);
+      const Fit reachable = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
+      const Fit ball = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::use_reachable_regions(false));
+      REQUIRE(reachable.primitives.size() >= 2);
+      CHECK_FALSE(some_claim_crosses_the_wall(reachable, c.tsdf.grid));
+      CHECK(some_claim_crosses_the_wall(ball, c.tsdf.grid));
+    }
   }
 
   // Every seed rejected (V_min above the grid's volume), one stage: the run is a sequence of body
   // seeds at the EDT maxima of a fixed Omega_Body, and nothing else changes between seeds (the
   // fits, cut short to keep the test fast, do not matter).
-  const Box_case c = box_case(false, {32});
   auto all_rejected = [](const auto&... np) {
     return P::combine(P::minimum_body_volume(1e9), P::minimum_surface_volume(1e9),
                       P::trust_region_scales(std::vector<double>{1.}), P::maximum_solver_evaluations(1), np...);
@@ -905,60 +1063,106 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
 
   SECTION("maximum_rejections_in_a_row and use_seed_exclusion")
   {
-    const Fit never = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0)));
-    const Fit four = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(4)));
-    const Fit one = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(1)));
-    // no fit accepted: one box-like superquadric of the whole volume stands for the shape, the
-    // box [-0.3, 0.3] x [-0.15, 0.15]^2, and claims every voxel that is neither exterior nor Freeze
-    REQUIRE(never.primitives.size() == 1);
-    CHECK(never.number_of_rejected_seeds == never.number_of_seeds);
-    CHECK(!never.body_seeded[0]);
-    const std::array<double, 3> a = never.primitives[0].scales();
-    CHECK(std::max({a[0], a[1], a[2]}) == Approx(0.3).margin(1.5 / 32));
-    CHECK(std::min({a[0], a[1], a[2]}) == Approx(0.15).margin(1.5 / 32));
-    CHECK(never.primitives[0].center().x() == Approx(0.).margin(0.5 / 32));
-    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, c.tsdf, PD::fitting_resolutions(c.prior.resolutions));
-    std::size_t claimable = 0;
-    for(std::size_t v = 0; v < zones.freeze_zone.size(); ++v)
+    for(bool adaptive : {true, false})
     {
-      claimable += zones.freeze_zone[v] ? 0 : 1;
-      CHECK(never.labels[v] == (zones.freeze_zone[v] ? -1 : 0));
+      INFO((adaptive ? "adaptive" : "uniform") << " grid");
+      const Synthetic_case c = box_case({32}, adaptive);
+      const PD::Adaptive_grid& grid = c.tsdf.grid;
+      const Fit never = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0)));
+      const Fit three = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(3)));
+      const Fit one = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(1)));
+      // no fit accepted: one box-like superquadric of the whole volume stands for the shape and
+      // claims every leaf that is neither exterior nor Freeze
+      REQUIRE(never.primitives.size() == 1);
+      CHECK(never.number_of_rejected_seeds == never.number_of_seeds);
+      CHECK(!never.body_seeded[0]);
+      const PD::Fitting_zones zones =
+        PD::compute_fitting_zones(c.prior, c.tsdf, PD::fitting_resolutions(c.prior.resolutions));
+      std::size_t claimable = 0;
+      double claimable_volume = 0.;
+      for(std::size_t l = 0; l < zones.freeze_zone.size(); ++l)
+      {
+        claimable += zones.freeze_zone[l] ? 0 : 1;
+        claimable_volume += zones.freeze_zone[l] ? 0. : grid.volume(l);
+        CHECK(never.labels[l] == (zones.freeze_zone[l] ? -1 : 0));
+      }
+      CHECK(never.claimed_leaves[0].size() == claimable);
+      // the claimed leaves cover the box (every leaf with a point inside is inside or crossed)
+      const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+      CHECK(claimable_volume >= SQ({{0.3, 0.15, 0.15}}, 0.1, 0.1, I, Point(0., 0., 0.)).volume());
+      // Its superquadric is their box, on the coordinate axes as the box is: it holds the cubes
+      // of the claimed leaves and exceeds them by at most half the largest leaf (brute force).
+      const SQ& fallback = never.primitives[0];
+      const Point o = fallback.center();
+      CHECK(o.x() == Approx(0.).margin(0.5 / 32));
+      std::array<double, 3> extent = {{0., 0., 0.}};
+      double largest = 0.;
+      for(std::size_t l : never.claimed_leaves[0])
+      {
+        const auto p = grid.center(l);
+        const double s = grid.size(l);
+        largest = std::max(largest, s);
+        for(int j = 0; j < 3; ++j) extent[j] = std::max(extent[j], std::abs(p[j] - o[j]) + s / 2);
+      }
+      for(int i = 0; i < 3; ++i)
+      {
+        const K::Vector_3 u = fallback.axis(i);
+        const double ua[3] = {std::abs(u.x()), std::abs(u.y()), std::abs(u.z())};
+        const int j = int(std::max_element(ua, ua + 3) - ua);
+        CHECK(ua[j] == Approx(1.).margin(1e-9));
+        CHECK(fallback.scales()[i] >= extent[j] - 1e-12);
+        CHECK(fallback.scales()[i] <= extent[j] + largest / 2 + 1e-12);
+      }
+      // the box [-0.3, 0.3] x [-0.15, 0.15]^2 up to the surface leaves that straddle it
+      CHECK(extent[0] == Approx(0.3).margin(1.5 / 32));
+      CHECK(extent[1] == Approx(0.15).margin(1.5 / 32));
+      CHECK(extent[2] == Approx(0.15).margin(1.5 / 32));
+      // a stage ends after the given number of rejections in a row
+      REQUIRE(never.number_of_seeds > 3);
+      CHECK(three.number_of_seeds == 3);
+      CHECK(one.number_of_seeds == 1);
+      // Without exclusion balls, each rejection removes the seed leaf only: every leaf deep enough
+      // for a body seed is tried, while an exclusion ball (radius >= 1 voxel) removes at least the
+      // deepest leaf's neighbours, some of which are deep enough (the box is more than one voxel
+      // deeper than the body-seed threshold).
+      const Fit seed_only = PD::fit_superquadrics<Seq, K>(
+        c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0), P::use_seed_exclusion(false)));
+      CHECK(seed_only.number_of_seeds > never.number_of_seeds);
+      CHECK(seed_only.number_of_body_seeds == seed_only.number_of_seeds);
     }
-    CHECK(never.claimed_voxels[0].size() == claimable);
-    REQUIRE(never.number_of_seeds > 4);
-    CHECK(four.number_of_seeds == 4);
-    CHECK(one.number_of_seeds == 1);
-    // Without exclusion balls, each rejection removes the seed voxel only: every voxel deep
-    // enough for a body seed is tried, while an exclusion ball (radius >= 1 voxel) removes at
-    // least the deepest voxel's neighbours, some of which are deep enough (the EDT is 1-Lipschitz
-    // and the box is more than one voxel deeper than the body-seed threshold).
-    const Fit seed_only = PD::fit_superquadrics<Seq, K>(
-      c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0), P::use_seed_exclusion(false)));
-    CHECK(seed_only.number_of_seeds > never.number_of_seeds);
-    CHECK(seed_only.number_of_body_seeds == seed_only.number_of_seeds);
   }
 
-  SECTION("use_exterior_band_samples: the exterior band voxels are the only difference in the samples")
+  SECTION("use_exterior_band_samples: the exterior band leaves are the only difference in the samples")
   {
     // One seed (the first is the same in both runs), a region of interest that covers the grid.
     auto one_seed = [](bool band) {
       return P::combine(P::maximum_number_of_primitives(1), P::maximum_rejections_in_a_row(1), P::roi_radius(16.),
                         P::use_exterior_band_samples(band));
     };
-    const Fit with_band = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(true));
-    const Fit without = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(false));
-    REQUIRE(with_band.number_of_seeds == 1);
-    REQUIRE(without.number_of_seeds == 1);
-    const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior.classes, c.tsdf, PD::fitting_resolutions({32}));
-    std::size_t band = 0;
-    for(std::size_t v = 0; v < zones.exterior.size(); ++v)
-      if(zones.exterior[v] && c.tsdf.values[v] < 1.5 / 32) ++band;
-    REQUIRE(band > 0);
-    CHECK(with_band.number_of_samples == without.number_of_samples + band);
+    for(bool adaptive : {true, false})
+    {
+      INFO((adaptive ? "adaptive" : "uniform") << " grid");
+      // finest leaves of 1/32: on the default grid (Delta = 1/128) no exterior leaf next to this
+      // surface is fine enough to lie in the band
+      const Synthetic_case c = box_case({32}, adaptive, 32);
+      const Fit with_band = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(true));
+      const Fit without = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, one_seed(false));
+      REQUIRE(with_band.number_of_seeds == 1);
+      REQUIRE(without.number_of_seeds == 1);
+      const PD::Fitting_zones zones = PD::compute_fitting_zones(c.prior, c.tsdf, PD::fitting_resolutions({32}));
+      // the band is d_M < 1.5 Delta, Delta being the side of the finest leaves
+      const double delta = 1. / c.tsdf.grid.finest_resolution();
+      std::size_t band = 0;
+      for(std::size_t l = 0; l < zones.exterior.size(); ++l)
+        if(zones.exterior[l] && c.tsdf.values[l] < 1.5 * delta) ++band;
+      REQUIRE(band > 0);
+      CHECK(with_band.number_of_samples == without.number_of_samples + band);
+    }
   }
 
   SECTION("maximum_solver_evaluations bounds the evaluations of every solve")
   {
+    const Synthetic_case c = box_case({32});
     const Fit by_default = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
     const Fit two = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::maximum_solver_evaluations(2));
     REQUIRE(by_default.number_of_solves > 0);
@@ -974,16 +1178,18 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
     CHECK(PD::fitting_resolutions({16, 32, 64}, 8) == std::vector<int>{8});
     CHECK(PD::fitting_resolutions({8, 16}, 32) == std::vector<int>{8, 16});
     CHECK(PD::fitting_resolutions({8, 16}) == std::vector<int>{8});
-    const Box_case b = box_case(true);
-    const PD::Fitting_zones default_zones = PD::compute_fitting_zones(b.prior.classes, b.tsdf, PD::fitting_resolutions(b.prior.resolutions));
+    const Synthetic_case b = plate_case();
+    const PD::Fitting_zones default_zones =
+      PD::compute_fitting_zones(b.prior, b.tsdf, PD::fitting_resolutions(b.prior.resolutions));
     const PD::Fitting_zones capped_zones =
-      PD::compute_fitting_zones(b.prior.classes, b.tsdf, PD::fitting_resolutions(b.prior.resolutions, 32));
+      PD::compute_fitting_zones(b.prior, b.tsdf, PD::fitting_resolutions(b.prior.resolutions, 32));
     // zones without r_fit = 32 are refused, zones with it give the fit that computes its own
     CHECK_THROWS_AS(PD::fit_superquadrics(b.prior, b.tsdf, default_zones, P::fitting_resolution_cap(32)),
                     PD::Invalid_input);
     const Fit own = PD::fit_superquadrics<Seq, K>(b.prior, b.tsdf, P::fitting_resolution_cap(32));
     const Fit given = PD::fit_superquadrics<Seq, K>(b.prior, b.tsdf, capped_zones, P::fitting_resolution_cap(32));
     check_same_fit(own, given);
+    REQUIRE(!own.primitives.empty());
     // semi-axes are bounded by rho = roi_radius / r_fit: 8/32 in the stage r = 32
     for(std::size_t k = 0; k < own.primitives.size(); ++k)
       for(int i = 0; i < 3; ++i)
@@ -994,7 +1200,7 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
 TEST_CASE("fit_superquadrics: out-of-range switches are refused by name", "[sdfsqfit]")
 {
   namespace P = PD::parameters;
-  const Box_case c = box_case(false, {32});
+  const Synthetic_case c = box_case({32});
   auto fit = [&](const auto& np) { return PD::fit_superquadrics(c.prior, c.tsdf, np); };
   CHECK_THROWS_AS(fit(P::fitting_resolution_cap(-1)), PD::Invalid_input);
   CHECK_THROWS_WITH(fit(P::fitting_resolution_cap(-1)), Catch::Contains("fitting_resolution_cap"));
@@ -1012,95 +1218,285 @@ TEST_CASE("fit_superquadrics: out-of-range switches are refused by name", "[sdfs
 
 namespace {
 
-// A fitting result on the r^3 grid whose primitive k claims the voxels with centre in boxes[k]
-// (its superquadric is that box); the surface voxels of the union (claimed, with an unclaimed face
+// The grid of finest resolution r whose cells are split down to r where a face of one of the
+// boxes (xmin, ymin, zmin, xmax, ymax, zmax) crosses them, and down to 1/4 everywhere: every
+// other leaf lies inside or outside each box.
+PD::Adaptive_grid grid_refined_at_faces(int r, const std::vector<std::array<double, 6> >& boxes)
+{
+  typedef PD::Adaptive_grid::Cell Cell;
+  const int D = PD::Adaptive_grid::depth_of(r);
+  std::vector<Cell> cells, stack(1, Cell{0, {{0, 0, 0}}});
+  while(!stack.empty())
+  {
+    const Cell c = stack.back();
+    stack.pop_back();
+    const double s = std::ldexp(1., -c.depth);
+    bool mixed = false;
+    for(const std::array<double, 6>& b : boxes)
+    {
+      bool meets = true, inside = true;
+      for(int a = 0; a < 3; ++a)
+      {
+        const double lo = -0.5 + c.position[a] * s, hi = lo + s;
+        meets = meets && lo < b[a + 3] && hi > b[a];
+        inside = inside && lo >= b[a] && hi <= b[a + 3];
+      }
+      mixed = mixed || (meets && !inside);
+    }
+    if(c.depth == D || (c.depth >= 2 && !mixed))
+    {
+      cells.push_back(c);
+      continue;
+    }
+    for(std::uint32_t child = 0; child < 8; ++child)
+      stack.push_back(Cell{c.depth + 1, {{2 * c.position[0] + (child & 1), 2 * c.position[1] + ((child >> 1) & 1),
+                                          2 * c.position[2] + ((child >> 2) & 1)}}});
+  }
+  return PD::Adaptive_grid(r, cells);
+}
+
+// A fitting result on `grid` whose primitive k claims the leaves with centre in boxes[k] (its
+// superquadric is that box); the surface leaves of the union (claimed, with an unclaimed face
 // neighbour) are Flow, or Freeze where `freeze` holds; the distance is -1 inside the boxes, +1 out.
 struct Claimed_boxes
 {
   PD::Superquadric_fitting_result<K> fit;
-  PD::Voxel_grid<PD::Voxel_class> classes;
-  PD::Voxel_grid<double> distance;
+  std::vector<PD::Voxel_class> classes;
+  PD::Truncated_signed_distance_field tsdf;
 };
 
 template <typename Freeze>
-Claimed_boxes claimed_boxes(int r, const std::vector<std::array<double, 6> >& boxes, const Freeze& freeze)
+Claimed_boxes claimed_boxes(const PD::Adaptive_grid& grid, const std::vector<std::array<double, 6> >& boxes,
+                            const Freeze& freeze)
 {
   Claimed_boxes out;
   PD::Superquadric_fitting_result<K>& fit = out.fit;
-  fit.labels = PD::Voxel_grid<std::int32_t>(r, -1);
-  out.classes = PD::Voxel_grid<PD::Voxel_class>(r, PD::Voxel_class::EMPTY);
-  out.distance = PD::Voxel_grid<double>(r, 1.);
-  fit.claimed_voxels.resize(boxes.size());
+  const std::size_t n = grid.number_of_leaves();
+  out.tsdf.grid = grid;
+  out.tsdf.values.assign(n, 1.);
+  out.tsdf.truncation = 1.;
+  out.tsdf.voxel_size = 1. / grid.finest_resolution();
+  fit.labels.assign(n, -1);
+  out.classes.assign(n, PD::Voxel_class::EMPTY);
+  fit.claimed_leaves.resize(boxes.size());
   const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
   for(std::size_t k = 0; k < boxes.size(); ++k)
   {
     const std::array<double, 6>& b = boxes[k];
     fit.primitives.push_back(SQ({{(b[3] - b[0]) / 2, (b[4] - b[1]) / 2, (b[5] - b[2]) / 2}}, 0.1, 0.1, I,
                                 Point((b[0] + b[3]) / 2, (b[1] + b[4]) / 2, (b[2] + b[5]) / 2)));
-    for(std::size_t v = 0; v < fit.labels.size(); ++v)
+    for(std::size_t l = 0; l < n; ++l)
     {
-      const auto c = fit.labels.center(v);
+      const auto c = grid.center(l);
       if(c[0] > b[0] && c[0] < b[3] && c[1] > b[1] && c[1] < b[4] && c[2] > b[2] && c[2] < b[5])
       {
-        fit.labels[v] = std::int32_t(k);
-        fit.claimed_voxels[k].push_back(v);
-        out.distance[v] = -1.;
+        fit.labels[l] = std::int32_t(k);
+        fit.claimed_leaves[k].push_back(l);
+        out.tsdf.values[l] = -1.;
       }
     }
   }
-  for(std::size_t v = 0; v < fit.labels.size(); ++v)
+  for(std::size_t l = 0; l < n; ++l)
   {
-    if(fit.labels[v] < 0) continue;
-    int inside = 0;
-    PDI::for_each_face_neighbor(v, std::size_t(r), [&](std::size_t n) { inside += fit.labels[n] >= 0; });
-    if(inside < 6) out.classes[v] = freeze(fit.labels.center(v)) ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
+    if(fit.labels[l] < 0) continue;
+    bool surface = false;
+    grid.for_each_neighbor(l, [&](std::size_t m) { surface = surface || fit.labels[m] < 0; });
+    if(surface) out.classes[l] = freeze(grid.center(l)) ? PD::Voxel_class::FREEZE : PD::Voxel_class::FLOW;
   }
-  const std::size_t n = boxes.size();
+  const std::size_t K_ = boxes.size();
   fit.input_primitives = fit.primitives;
-  fit.stage_resolution.assign(n, r);
-  fit.body_seeded.assign(n, true);
-  fit.seed_voxel.assign(n, 0);
-  fit.semi_axis_scale.assign(n, 1.);
-  fit.fit_cost.assign(n, 0.);
+  fit.stage_resolution.assign(K_, grid.finest_resolution());
+  fit.body_seeded.assign(K_, true);
+  fit.seed_leaf.assign(K_, 0);
+  fit.semi_axis_scale.assign(K_, 1.);
+  fit.fit_cost.assign(K_, 0.);
   return out;
+}
+
+double claimed_volume(const Claimed_boxes& c)
+{
+  double v = 0.;
+  for(const std::vector<std::size_t>& leaves : c.fit.claimed_leaves)
+    for(std::size_t l : leaves) v += c.tsdf.grid.volume(l);
+  return v;
 }
 
 } // namespace
 
 TEST_CASE("primitives that tile one box are merged into one superquadric of the box", "[sdfsqfit][merge]")
 {
+  const int r = 32;
   const auto never = [](const std::array<double, 3>&) { return false; };
   // a box [-0.3, 0.3] x [-0.1, 0.1] x [-0.15, 0.15] tiled by three slabs along x
   const std::vector<std::array<double, 6> > slabs = {{{-0.3, -0.1, -0.15, -0.1, 0.1, 0.15}},
                                                      {{-0.1, -0.1, -0.15, 0.1, 0.1, 0.15}},
                                                      {{0.1, -0.1, -0.15, 0.3, 0.1, 0.15}}};
-  Claimed_boxes c = claimed_boxes(32, slabs, never);
-  const std::size_t voxels = c.fit.claimed_voxels[0].size() + c.fit.claimed_voxels[1].size() + c.fit.claimed_voxels[2].size();
-  PDI::merge_explained_primitives(c.fit, c.classes, c.distance, 0.6, 0.2);
-  REQUIRE(c.fit.primitives.size() == 1);
-  CHECK(c.fit.claimed_voxels[0].size() == voxels);
-  for(std::size_t v = 0; v < c.fit.labels.size(); ++v) CHECK(c.fit.labels[v] <= 0);
-  // the box, up to half a voxel on each side (the voxel centres span it less half a voxel)
-  std::array<double, 3> a = c.fit.primitives[0].scales();
-  std::sort(a.begin(), a.end());
-  CHECK(a[0] == Approx(0.1).margin(1. / 64));
-  CHECK(a[1] == Approx(0.15).margin(1. / 64));
-  CHECK(a[2] == Approx(0.3).margin(1. / 64));
-  CHECK(std::sqrt(CGAL::squared_distance(c.fit.primitives[0].center(), Point(0, 0, 0))) < 1. / 32);
-  CHECK(c.fit.input_primitives.size() == 1);
-  CHECK(c.fit.stage_resolution.size() == 1);
+  const std::vector<std::array<double, 6> > l_boxes = {{{-0.3, -0.3, -0.05, 0.3, -0.2, 0.05}},
+                                                       {{-0.3, -0.2, -0.05, -0.2, 0.3, 0.05}}};
+  // the dense grid, and grids with leaves of 1/4 inside the boxes, 1/32 where their faces pass
+  const PD::Adaptive_grid uniform = PD::Adaptive_grid::uniform(r);
+  const PD::Adaptive_grid slab_grid = grid_refined_at_faces(r, slabs), l_grid = grid_refined_at_faces(r, l_boxes);
+  REQUIRE(slab_grid.number_of_leaves_of_depth(2) > 0);
+  REQUIRE(slab_grid.number_of_leaves() < uniform.number_of_leaves() / 2);
+  for(bool adaptive : {true, false})
+  {
+    INFO((adaptive ? "adaptive" : "uniform") << " grid");
+    Claimed_boxes c = claimed_boxes(adaptive ? slab_grid : uniform, slabs, never);
+    // every leaf lies in or out of each box: the same claimed volume as the dense grid's voxels
+    const double volume = claimed_volume(c);
+    CHECK(volume == Approx(claimed_volume(claimed_boxes(uniform, slabs, never))).epsilon(1e-12));
+    PDI::merge_explained_primitives(c.fit, c.classes, c.tsdf, 0.6, 0.2);
+    REQUIRE(c.fit.primitives.size() == 1);
+    CHECK(claimed_volume(c) == Approx(volume).epsilon(1e-12));
+    for(std::size_t l = 0; l < c.fit.labels.size(); ++l) CHECK(c.fit.labels[l] <= 0);
+    CHECK(c.fit.claimed_leaves[0].size() == std::size_t(std::count(c.fit.labels.begin(), c.fit.labels.end(), 0)));
+    CHECK(std::is_sorted(c.fit.claimed_leaves[0].begin(), c.fit.claimed_leaves[0].end()));
+    // the box, up to half a voxel on each side (the voxel centres span it less half a voxel)
+    std::array<double, 3> a = c.fit.primitives[0].scales();
+    std::sort(a.begin(), a.end());
+    CHECK(a[0] == Approx(0.1).margin(1. / 64));
+    CHECK(a[1] == Approx(0.15).margin(1. / 64));
+    CHECK(a[2] == Approx(0.3).margin(1. / 64));
+    CHECK(std::sqrt(CGAL::squared_distance(c.fit.primitives[0].center(), Point(0, 0, 0))) < 1. / 32);
+    CHECK(c.fit.input_primitives.size() == 1);
+    CHECK(c.fit.stage_resolution.size() == 1);
+    CHECK(c.fit.seed_leaf.size() == 1);
 
-  // a Freeze ring around the common faces of the slabs (a joint) keeps them apart
-  Claimed_boxes joint = claimed_boxes(32, slabs, [](const std::array<double, 3>& p) {
-    return std::abs(std::abs(p[0]) - 0.1) < 1.5 / 32;
-  });
-  PDI::merge_explained_primitives(joint.fit, joint.classes, joint.distance, 0.6, 0.2);
-  CHECK(joint.fit.primitives.size() == 3);
+    // a Freeze ring around the common faces of the slabs (a joint) keeps them apart
+    Claimed_boxes joint = claimed_boxes(adaptive ? slab_grid : uniform, slabs, [](const std::array<double, 3>& p) {
+      return std::abs(std::abs(p[0]) - 0.1) < 1.5 / 32;
+    });
+    PDI::merge_explained_primitives(joint.fit, joint.classes, joint.tsdf, 0.6, 0.2);
+    CHECK(joint.fit.primitives.size() == 3);
 
-  // an L of two boxes is not one box: they stay two
-  Claimed_boxes l = claimed_boxes(32, {{{-0.3, -0.3, -0.05, 0.3, -0.2, 0.05}}, {{-0.3, -0.2, -0.05, -0.2, 0.3, 0.05}}},
-                                  never);
-  PDI::merge_explained_primitives(l.fit, l.classes, l.distance, 0.6, 0.2);
-  CHECK(l.fit.primitives.size() == 2);
-  CHECK(l.fit.claimed_voxels[0].size() + l.fit.claimed_voxels[1].size() > 0);
+    // an L of two boxes is not one box: they stay two
+    Claimed_boxes l = claimed_boxes(adaptive ? l_grid : uniform, l_boxes, never);
+    PDI::merge_explained_primitives(l.fit, l.classes, l.tsdf, 0.6, 0.2);
+    CHECK(l.fit.primitives.size() == 2);
+    CHECK(!l.fit.claimed_leaves[0].empty());
+    CHECK(!l.fit.claimed_leaves[1].empty());
+  }
+}
+
+
+namespace {
+
+// The whole fitting stage on a mesh in the normalized cube: its prior, its distance field on the
+// grid of `np` and the fit.
+template <typename NamedParameters>
+Fit fit_mesh(const Mesh& m, const NamedParameters& np, PD::Truncated_signed_distance_field& tsdf)
+{
+  namespace P = PD::parameters;
+  const auto all = P::combine(P::normalization(PD::Normalization()), np);
+  const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(m, all);
+  tsdf = PD::compute_tsdf(m, prior, all);
+  return PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, all);
+}
+
+} // namespace
+
+TEST_CASE("fit_superquadrics on the prior and the distance field of a mesh: known answers", "[sdfsqfit]")
+{
+  namespace P = PD::parameters;
+  const double h = 1. / 64;
+
+  SECTION("a superquadric is recovered by one primitive")
+  {
+    // On the default grid and the dense one: a body seed in a leaf larger than the paper's
+    // initial ball starts from a ball that reaches the neighbouring leaves, or it would not move.
+    const std::array<double, 9> I = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    const SQ shapes[] = {SQ({{0.35, 0.35, 0.35}}, 1., 1., I, Point(0., 0., 0.)),
+                         SQ({{0.3, 0.2, 0.15}}, 1., 1., rotation_matrix({{1., 0.5, 0.2}}, 0.35), Point(0.02, -0.01, 0.03)),
+                         SQ({{0.3, 0.18, 0.12}}, 0.3, 0.3, rotation_matrix({{0.2, 1., 0.4}}, 0.45), Point(0.02, -0.01, 0.03))};
+    for(const SQ& truth : shapes)
+    for(bool adaptive : {true, false})
+    {
+      Mesh m;
+      truth.to_triangle_mesh(m, 48);
+      PD::Truncated_signed_distance_field tsdf;
+      const Fit fit = fit_mesh(m, P::adaptive_grid(adaptive), tsdf);
+      INFO((adaptive ? "adaptive grid" : "dense grid"));
+      INFO("a = " << truth.scales()[0] << " " << truth.scales()[1] << " " << truth.scales()[2] << " eps "
+                  << truth.epsilon1() << " " << truth.epsilon2() << ": " << fit.primitives.size() << " primitives");
+      REQUIRE(fit.primitives.size() == 1);
+      const SQ& sq = fit.primitives[0];
+      INFO("fitted a = " << sq.scales()[0] << " " << sq.scales()[1] << " " << sq.scales()[2] << " eps "
+                         << sq.epsilon1() << " " << sq.epsilon2() << " c " << sq.center());
+      CHECK(std::sqrt(CGAL::squared_distance(sq.center(), truth.center())) < h);
+      CHECK(sq.epsilon1() == Approx(truth.epsilon1()).margin(0.1));
+      CHECK(sq.epsilon2() == Approx(truth.epsilon2()).margin(0.1));
+      for(int i = 0; i < 3; ++i)
+      {
+        int best = 0;
+        double best_angle = 180.;
+        for(int j = 0; j < 3; ++j)
+        {
+          const double ang = angle_degrees(truth.axis(i), sq.axis(j));
+          if(ang < best_angle) best_angle = ang, best = j;
+        }
+        CHECK(std::abs(sq.scales()[best] - truth.scales()[i]) < h);
+      }
+      // it claims the solid: the leaves whose centre is inside, but a few along the surface
+      double inside = 0., claimed_inside = 0.;
+      for(std::size_t l = 0; l < tsdf.grid.number_of_leaves(); ++l)
+      {
+        const auto c = tsdf.grid.center(l);
+        if(!truth.has_on_bounded_side_or_boundary(Point(c[0], c[1], c[2]))) continue;
+        inside += tsdf.grid.volume(l);
+        claimed_inside += fit.labels[l] == 0 ? tsdf.grid.volume(l) : 0.;
+      }
+      CHECK(claimed_inside > 0.95 * inside);
+    }
+  }
+
+  SECTION("a T of two bars gives two primitives, one per bar")
+  {
+    // bar [-0.45, 0.45] x [-0.36, -0.18] x [-0.09, 0.09], stem [-0.09, 0.09] x [-0.18, 0.36] x [-0.09, 0.09]
+    Mesh m = test_shapes::make_union_of_cubes({{{0, 0, 0}}, {{1, 0, 0}}, {{2, 0, 0}}, {{3, 0, 0}}, {{4, 0, 0}},
+                                               {{2, 1, 0}}, {{2, 2, 0}}, {{2, 3, 0}}});
+    for(auto v : vertices(m))
+    {
+      const Point& p = m.point(v);
+      m.point(v) = Point(0.18 * (p.x() - 2.5), 0.18 * (p.y() - 2.), 0.18 * (p.z() - 0.5));
+    }
+    const std::array<double, 6> bars[] = {{{-0.45, -0.36, -0.09, 0.45, -0.18, 0.09}}, {{-0.09, -0.18, -0.09, 0.09, 0.36, 0.09}}};
+    auto in_bar = [&](std::size_t b, const std::array<double, 3>& c) {
+      return c[0] > bars[b][0] && c[0] < bars[b][3] && c[1] > bars[b][1] && c[1] < bars[b][4] && c[2] > bars[b][2] &&
+             c[2] < bars[b][5];
+    };
+    for(bool adaptive : {true, false})
+    {
+      PD::Truncated_signed_distance_field tsdf;
+      const Fit fit = fit_mesh(m, P::adaptive_grid(adaptive), tsdf);
+      const PD::Adaptive_grid& grid = tsdf.grid;
+      INFO((adaptive ? "adaptive" : "uniform") << " grid of " << grid.number_of_leaves() << " leaves: "
+                                               << fit.primitives.size() << " primitives");
+      if(adaptive) CHECK(grid.number_of_leaves() < std::size_t(64 * 64 * 64 / 8));
+      else CHECK(grid == PD::Adaptive_grid::uniform(64));
+      REQUIRE(fit.primitives.size() == 2);
+      bool centred[2] = {false, false};
+      for(std::size_t k = 0; k < 2; ++k)
+      {
+        const Point c = fit.primitives[k].center();
+        for(std::size_t b = 0; b < 2; ++b)
+          if(in_bar(b, {{c.x(), c.y(), c.z()}}))
+          {
+            centred[b] = true;
+            // it claims most of its bar, and little of the other
+            double own = 0., other = 0.;
+            for(std::size_t l : fit.claimed_leaves[k])
+            {
+              const auto p = grid.center(l);
+              own += in_bar(b, p) ? grid.volume(l) : 0.;
+              other += in_bar(1 - b, p) ? grid.volume(l) : 0.;
+            }
+            const double volume = (bars[b][3] - bars[b][0]) * (bars[b][4] - bars[b][1]) * (bars[b][5] - bars[b][2]);
+            CHECK(own > 0.8 * volume);
+            CHECK(other < 0.1 * volume);
+          }
+      }
+      CHECK(centred[0]);
+      CHECK(centred[1]);
+    }
+  }
 }

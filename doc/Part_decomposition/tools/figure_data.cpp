@@ -9,13 +9,16 @@
 //   tsdf_slice.ppm      a slice of the truncated signed distance field (blue inside, red outside)
 //   zones_slice.ppm     the same slice of the fitting zones (exterior, Freeze zone, Flow zone)
 //   primitives.off      the fitted superquadrics, in acceptance order (one component each)
-//   claimed.off         the finest voxels claimed by each superquadric (same colours)
+//   claimed.off         the leaves of the adaptive grid claimed by each superquadric, one cube per
+//                       leaf (same colours)
 //   patches.seg         the patch of every face of MESH, in file order
 //   parts.seg           the part of every face of MESH, in file order
 //   part_primitives.off the superquadric of every part, in part order
 //   summary.txt         counts of each stage
 // The slice is across AXIS (x, y or z, default z) at the fraction T of the grid (default: the
-// slice that cuts the most voxels of the shape).
+// slice that cuts the most voxels of the shape). The distance field and the zones hold one value
+// per leaf of an adaptive grid: a slice is one layer of the voxels of its finest resolution, each
+// drawn with the value of the leaf that holds it.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -27,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -120,10 +124,10 @@ bool write_labels(const std::string& file, const std::vector<std::size_t>& label
   return bool(out);
 }
 
-// The slice `index` across `axis` of an r^3 grid as a PPM image, `scale` pixels per voxel; the
-// horizontal image axis is the next axis after `axis`, the vertical one the last (so that a slice
-// across y of a z-up shape is a side view). `color(i,j,k)` gives each voxel's colour; `edge(a,b)`
-// tells whether a dark line is drawn between two voxels.
+// The slice `index` across `axis` of an r^3 grid as a PPM image, 512 / r pixels (at least one) per
+// voxel; the horizontal image axis is the next axis after `axis`, the vertical one the last (so that
+// a slice across y of a z-up shape is a side view). `color(i,j,k)` gives each voxel's colour;
+// `edge(a,b)` tells whether a dark line is drawn between two voxels.
 template <typename Color, typename Edge>
 bool write_slice(const std::string& file, int r, int axis, int index, const Color& color, const Edge& edge)
 {
@@ -248,11 +252,16 @@ bool write_fused_leaves(const std::string& dir, const PD::Hierarchical_prior& pr
   return write_cubes(dir + "/prior_fused.off", cubes, 0.94);
 }
 
-std::size_t voxel_index(int r, const std::array<int, 3>& v) { return std::size_t(v[0] + r * (v[1] + r * v[2])); }
-
-// The slice along `axis` with the most voxels outside the exterior.
-int fullest_slice(const PD::Fitting_zones& zones, int r, int axis)
+// The leaf of `grid` that holds the finest voxel v (that locate() finds at its centre).
+std::size_t leaf_at(const PD::Adaptive_grid& grid, const std::array<int, 3>& v)
 {
+  return grid.leaf_of_voxel(std::uint32_t(v[0]), std::uint32_t(v[1]), std::uint32_t(v[2]));
+}
+
+// The slice of finest voxels along `axis` with the most voxels outside the exterior.
+int fullest_slice(const PD::Fitting_zones& zones, const PD::Adaptive_grid& grid, int axis)
+{
+  const int r = grid.finest_resolution();
   int index = r / 2;
   std::size_t best = 0;
   for(int s = 0; s < r; ++s)
@@ -265,32 +274,27 @@ int fullest_slice(const PD::Fitting_zones& zones, int r, int axis)
         v[std::size_t(axis)] = s;
         v[std::size_t(axis == 0 ? 1 : 0)] = a;
         v[std::size_t(axis == 2 ? 1 : 2)] = b;
-        n += !zones.exterior[voxel_index(r, v)];
+        n += !zones.exterior[leaf_at(grid, v)];
       }
     if(n > best) best = n, index = s;
   }
   return index;
 }
 
-// The slice of the distance field and of the zones of the finest fitting resolution; returns the
-// slice index.
-int write_slices(const Figure_options& o, const PD::Hierarchical_prior& prior,
-                 const PD::Truncated_signed_distance_field& tsdf, bool& ok)
+// The slice of the distance field and of the zones of the finest fitting resolution, in finest
+// voxels of the grid; returns the slice index.
+int write_slices(const Figure_options& o, const PD::Truncated_signed_distance_field& tsdf,
+                 const PD::Fitting_zones& zones, bool& ok)
 {
-  const int r = tsdf.values.resolution();
-  std::vector<int> fitting_resolutions;
-  for(int res : prior.resolutions)
-    fitting_resolutions.push_back(
-      std::min(res, prior.resolutions.size() > 1 ? prior.resolutions[prior.resolutions.size() - 2] : res));
-  const PD::Fitting_zones zones = PD::compute_fitting_zones<Concurrency>(prior.classes, tsdf, fitting_resolutions);
-  const int rfit = *std::max_element(fitting_resolutions.begin(), fitting_resolutions.end());
-  const PD::Voxel_grid<std::uint8_t>& flow = zones.flow_zone.at(rfit);
-  const int index = o.slice_fraction >= 0. ? std::min(r - 1, int(o.slice_fraction * r)) : fullest_slice(zones, r, o.axis);
+  const PD::Adaptive_grid& grid = tsdf.grid;
+  const int r = grid.finest_resolution();
+  const std::vector<std::uint8_t>& flow = zones.flow_zone.rbegin()->second; // the finest r_fit
+  const int index = o.slice_fraction >= 0. ? std::min(r - 1, int(o.slice_fraction * r)) : fullest_slice(zones, grid, o.axis);
   const double tau = tsdf.truncation;
-  auto inside = [&](const std::array<int, 3>& v) { return tsdf.values[voxel_index(r, v)] < 0.; };
+  auto inside = [&](const std::array<int, 3>& v) { return tsdf.values[leaf_at(grid, v)] < 0.; };
   auto boundary = [&](const std::array<int, 3>& a, const std::array<int, 3>& b) { return inside(a) != inside(b); };
   auto tsdf_color = [&](const std::array<int, 3>& v) -> Rgb {
-    const double d = tsdf.values[voxel_index(r, v)], t = std::min(1., std::abs(d) / tau);
+    const double d = tsdf.values[leaf_at(grid, v)], t = std::min(1., std::abs(d) / tau);
     if(t >= 1.) return d < 0 ? Rgb{{48, 82, 160}} : Rgb{{236, 236, 236}};
     const double s = 0.25 + 0.75 * t; // white at the surface, saturated at the truncation
     return d < 0 ? Rgb{{int(255 * (1 - 0.8 * s)), int(255 * (1 - 0.6 * s)), 255}}
@@ -298,12 +302,12 @@ int write_slices(const Figure_options& o, const PD::Hierarchical_prior& prior,
   };
   ok = ok && write_slice(o.dir + "/tsdf_slice.ppm", r, o.axis, index, tsdf_color, boundary);
   auto zone_color = [&](const std::array<int, 3>& v) -> Rgb {
-    const std::size_t i = voxel_index(r, v);
-    if(prior.classes[i] == PD::Voxel_class::FREEZE) return freeze_color;
-    if(!zones.exterior[i])
-      return prior.classes[i] == PD::Voxel_class::FLOW ? flow_color        // Flow carrier voxels
+    const std::size_t l = leaf_at(grid, v);
+    if(zones.classes[l] == PD::Voxel_class::FREEZE) return freeze_color;
+    if(!zones.exterior[l])
+      return zones.classes[l] == PD::Voxel_class::FLOW ? flow_color        // Flow carrier leaves
                                                        : Rgb{{160, 190, 240}}; // interior of the hull
-    return flow[i] ? Rgb{{215, 228, 250}}  // Flow-zone tolerance outside the hull
+    return flow[l] ? Rgb{{215, 228, 250}}  // Flow-zone tolerance outside the hull
                    : Rgb{{255, 255, 255}}; // exterior
   };
   ok = ok && write_slice(o.dir + "/zones_slice.ppm", r, o.axis, index, zone_color, boundary);
@@ -311,23 +315,30 @@ int write_slices(const Figure_options& o, const PD::Hierarchical_prior& prior,
 }
 
 bool write_claims_and_summary(const Figure_options& o, const Mesh& mesh, const PD::Hierarchical_prior& prior,
-                              const PD::Superquadric_fitting_result<K>& fit, int r, int slice,
-                              std::size_t number_of_patches, std::size_t number_of_parts)
+                              const PD::Truncated_signed_distance_field& tsdf,
+                              const PD::Superquadric_fitting_result<K>& fit, int slice, std::size_t number_of_patches,
+                              std::size_t number_of_parts)
 {
+  const PD::Adaptive_grid& grid = tsdf.grid;
   const double unit = 1. / prior.normalization.scale();
   std::vector<Cube> claimed;
-  for(std::size_t v = 0; v < fit.labels.size(); ++v)
-    if(fit.labels[v] >= 0)
-      claimed.push_back({prior.normalization.from_unit(fit.labels.center(v)), unit / r, palette(std::size_t(fit.labels[v]))});
+  for(std::size_t l = 0; l < fit.labels.size(); ++l)
+    if(fit.labels[l] >= 0)
+      claimed.push_back({prior.normalization.from_unit(grid.center(l)), unit * grid.size(l),
+                         palette(std::size_t(fit.labels[l]))});
   bool ok = write_cubes(o.dir + "/claimed.off", claimed);
   std::ofstream summary(o.dir + "/summary.txt");
   summary << o.input << ": " << num_faces(mesh) << " faces\n"
-          << "slice " << "xyz"[o.axis] << " = " << slice << " of " << r << "\n";
+          << "slice " << "xyz"[o.axis] << " = " << slice << " of " << grid.finest_resolution() << "\n";
   for(std::size_t l = 0; l < prior.fields.size(); ++l)
     summary << "r = " << prior.resolutions[l] << ": " << prior.fields[l].number_of_active_voxels << " active voxels, "
             << prior.fields[l].number_of_freeze_voxels << " Freeze; fused leaves " << prior.number_of_flow_leaves[l]
             << " Flow, " << prior.number_of_freeze_leaves[l] << " Freeze\n";
-  summary << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, " << number_of_parts
+  summary << "grid: " << grid.number_of_leaves() << " leaves, by resolution:";
+  for(int d = 0; (1 << d) <= grid.finest_resolution(); ++d)
+    if(grid.number_of_leaves_of_depth(d) > 0) summary << ' ' << (1 << d) << ": " << grid.number_of_leaves_of_depth(d);
+  summary << "\n"
+          << fit.primitives.size() << " superquadrics, " << number_of_patches << " patches, " << number_of_parts
           << " parts\n";
   return ok && bool(summary);
 }
@@ -353,14 +364,16 @@ int main(int argc, char** argv)
   PD::Part_decomposer<Mesh> decomposer(mesh);
   const PD::Hierarchical_prior& prior = decomposer.compute_prior<Concurrency>(np);
   const PD::Truncated_signed_distance_field& tsdf = decomposer.compute_distance_field<Concurrency>(np);
+  // the zones the fitter uses, at the fitting resolutions of the prior
+  const PD::Fitting_zones& zones = decomposer.compute_fitting_zones<Concurrency>(np);
   const PD::Superquadric_fitting_result<K>& fit = decomposer.fit_primitives<Concurrency>(np);
   const std::size_t number_of_patches = decomposer.over_segment<Concurrency>(np);
   std::vector<std::size_t> part(num_faces(mesh), 0);
   const std::size_t number_of_parts = decomposer.compose_parts<Concurrency>(CGAL::make_property_map(part), np);
 
   bool ok = write_level_cubes(o.dir, prior) && write_fused_leaves(o.dir, prior);
-  const int slice = write_slices(o, prior, tsdf, ok);
-  ok = ok && write_claims_and_summary(o, mesh, prior, fit, tsdf.values.resolution(), slice, number_of_patches, number_of_parts);
+  const int slice = write_slices(o, tsdf, zones, ok);
+  ok = ok && write_claims_and_summary(o, mesh, prior, tsdf, fit, slice, number_of_patches, number_of_parts);
   ok = ok && write_superquadrics(o.dir + "/primitives.off", fit.input_primitives);
   ok = ok && write_superquadrics(o.dir + "/part_primitives.off", decomposer.part_primitives());
   ok = ok && write_labels(o.dir + "/patches.seg", PD::IO::labels_in_file_order(info, decomposer.patches()));

@@ -88,6 +88,15 @@ inline bool any_of_flags(const std::vector<std::uint8_t>& flags)
   return std::find(flags.begin(), flags.end(), std::uint8_t(1)) != flags.end();
 }
 
+// Per face index, whether its piece is flagged: the faces whose thin parts the grid refines are
+// those of the pieces the volume stages may decompose.
+inline std::vector<std::uint8_t> faces_of_pieces(const Piece_segmentation& pieces, const std::vector<std::uint8_t>& flags)
+{
+  std::vector<std::uint8_t> out(pieces.piece.size(), 0);
+  for(std::size_t i = 0; i < out.size(); ++i) out[i] = flags[pieces.piece[i]];
+  return out;
+}
+
 // The results of the stages of one decomposition, as the stage functions return them.
 template <typename GeomTraits>
 struct Stage_results
@@ -108,16 +117,20 @@ struct Stage_results
 // for. The fitting's own loops are short (one primitive at a time), so its sequential part is the
 // longest of the pipeline: the over-segmentation runs next to the volume stages.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces, Stage_results<GT>& s,
-                           Stage_timings& t)
+bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces,
+                           const std::vector<std::uint8_t>& splittable, Stage_results<GT>& s, Stage_timings& t)
 {
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   bool fitted = false;
   s.volumetric.patches.assign(num_faces(tm), 0);
+  std::vector<std::uint8_t> thin_faces;
+  if(use_pieces) thin_faces = faces_of_pieces(s.pieces, splittable);
   run_side_by_side<ConcurrencyTag>(
     [&] {
       add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); });
-      add_seconds(t.tsdf, [&] { s.tsdf = compute_tsdf_of_checked_mesh<ConcurrencyTag>(tm, &s.prior, np); });
+      add_seconds(t.tsdf, [&] {
+        s.tsdf = compute_tsdf_of_checked_mesh<ConcurrencyTag>(tm, &s.prior, np, use_pieces ? &thin_faces : nullptr);
+      });
       if(use_pieces)
       {
         s.volumetric_pieces = Part_decomposition::volumetric_pieces<ConcurrencyTag>(tm, s.pieces, s.tsdf, np);
@@ -225,7 +238,8 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_res
     splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
   });
   const bool needs_volume = !use_pieces || any_of_flags(splittable);
-  const bool fitted = needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, s, timings);
+  const bool fitted =
+    needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, splittable, s, timings);
   add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
   cut_hierarchy(tm, np, s, out, timings);
 }
@@ -382,7 +396,16 @@ public:
   const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
   {
     if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
-    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np));
+    std::vector<std::uint8_t> thin_faces;
+    const bool use_pieces = internal::read_piece_parameters(np).use_pieces;
+    if(use_pieces)
+    {
+      if(!m_has_pieces) segment_pieces<ConcurrencyTag>(np);
+      thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
+                                                                m_tm, m_segmented, with_mesh(np)));
+    }
+    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
+                                                                      use_pieces ? &thin_faces : nullptr);
     m_has_tsdf = true;
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
@@ -718,13 +741,6 @@ are chained with `parameters::combine()`)
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
-  \cgalParamNBegin{prior_resolution_cap}
-    \cgalParamDescription{the finest resolution of the topology score; finer `voxel_resolutions` only
-                          refine the grid of the distance field, the zones and the claims, with the
-                          classes of the cap (see `compute_flow_freeze_prior()`). 0: every resolution}
-    \cgalParamType{`int`, 0 or one of `voxel_resolutions`}
-    \cgalParamDefault{`0`}
-  \cgalParamNEnd
   \cgalParamNBegin{normalization}
     \cgalParamDescription{the normalization of the mesh into the unit cube; it must be the one `compute_normalization()` computes from `normalization_margin`}
     \cgalParamType{`Normalization`}
@@ -744,6 +760,19 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{how the inside of the shape is decided}
     \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
     \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC` (ray votes of winding numbers)}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the resolution of the finest leaves of the adaptive grid of the volume
+                          stages, where the shape is thin (see `compute_tsdf()`); raised to the finest
+                          of `voxel_resolutions` if below it}
+    \cgalParamType{`int`, a power of two up to 256}
+    \cgalParamDefault{`128`}
+  \cgalParamNEnd
+  \cgalParamNBegin{adaptive_grid}
+    \cgalParamDescription{`false`: every leaf of the grid is a voxel of the finest of
+                          `voxel_resolutions`, the dense grid of the paper}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{flow_zone_tolerance}
     \cgalParamDescription{the dilation of the Flow zone, in voxels of the fitting resolution}
@@ -955,12 +984,7 @@ are chained with `parameters::combine()`)
     \cgalParamDescription{the number \f$k\f$ of parts: the parts are those of level \f$k\f$ of the part
                           hierarchy (`build_part_hierarchy()`), each with the superquadric
                           of its node; a \f$k\f$ above the number of leaves of the hierarchy gives its
-                          leaves. If \f$k \geq 2\f$ is at least the number of parts of the default
-                          granularity, the count is trusted over the default grid: the thin parts of
-                          the finer pass of `thin_part_resolution` are first carved out of the parts
-                          (each a part and a leaf group of its own, as without `number_of_parts`),
-                          and the hierarchy is built from them (and handed out by `part_hierarchy`).
-                          Without it, the parts are those of the default granularity.}
+                          leaves. Without it, the parts are those of the default granularity.}
     \cgalParamType{`std::size_t`, at least 1}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -984,22 +1008,6 @@ are chained with `parameters::combine()`)
                           `maximum_merge_cost`)}
     \cgalParamType{`Part_hierarchy<GeomTraits>*`}
     \cgalParamDefault{`nullptr`}
-  \cgalParamNEnd
-  \cgalParamNBegin{thin_part_resolution}
-    \cgalParamDescription{if not 0, the resolution \f$r_t\f$ of a second, finer pass: the whole
-                          decomposition runs again with `voxel_resolutions` \f$\{r_t/4, r_t/2, r_t\}\f$,
-                          `fitting_resolution_cap(`\f$r_t/4\f$`)` and `prior_resolution_cap(`\f$r_t/2\f$`)`,
-                          and each of its parts whose superquadric has a smallest semi-axis below
-                          5/64 of the normalized cube (5 voxels of the default \f$64^3\f$ grid) replaces
-                          the parts of the first pass on its faces, with its superquadric. The parts
-                          of the first pass keep theirs. Thin parts (wings, fins, legs, plates) that the
-                          default grid cannot resolve are separated; the bodies keep the parts of
-                          the default grid, which the finer grid tends to tile. Costs a second,
-                          finer decomposition (its time and memory: `benchmark/Part_decomposition/RESULTS.md`)}
-    \cgalParamType{`int`: 0, or a power of two up to 256 and at least twice the finest of
-                   `voxel_resolutions`; not with `part_hierarchy` without `number_of_parts`}
-    \cgalParamDefault{`0`: no finer pass; with `number_of_parts`, twice the finest of
-                      `voxel_resolutions` (none if that is not in 4 to 256), used as described there}
   \cgalParamNEnd
   \cgalParamNBegin{stage_timings}
     \cgalParamDescription{receives the wall-clock time of each stage}

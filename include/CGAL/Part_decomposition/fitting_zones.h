@@ -64,11 +64,12 @@ Fitting_zone_parameters read_fitting_zone_parameters(const NamedParameters& np)
   return p;
 }
 
-// The fused prior on the leaves of `grid`. A leaf as fine as the prior's finest voxels or finer
-// takes the resolution of the prior voxel that holds it if that voxel holds a sample, and its
-// class: the whole of a Freeze voxel is Freeze, a Flow voxel carries the surface only in its
-// leaves the surface may cross (their centre within half their diagonal of it). A coarser leaf
-// holds the prior voxels of its box: Freeze if one is, and the finest of their resolutions.
+// The fused prior on the leaves of `grid`. A leaf finer than the prior's finest voxels takes the
+// resolution of the prior voxel that holds it if that voxel holds a sample, and its class: the
+// whole of a Freeze voxel is Freeze, a Flow voxel carries the surface only in its leaves the
+// surface may cross (their centre within half their diagonal of it). A leaf as large as a prior
+// voxel or larger holds the prior voxels of its box: Freeze if one is, Flow if one holds a
+// sample, and the finest of their resolutions.
 inline void project_prior_on_leaves(const Hierarchical_prior& prior, const Adaptive_grid& grid,
                                     const std::vector<double>& field, Fitting_zones& zones)
 {
@@ -91,7 +92,6 @@ inline void project_prior_on_leaves(const Hierarchical_prior& prior, const Adapt
       if(classes[v] == Voxel_class::FREEZE || (classes[v] == Voxel_class::FLOW && crossed)) zones.classes[l] = classes[v];
       continue;
     }
-    if(!crossed) continue;
     Voxel_class cls = Voxel_class::EMPTY;
     std::uint16_t res = 0;
     for(int k = k0; k < k0 + w; ++k)
@@ -184,12 +184,13 @@ builds the volumetric zones of the superquadric fitter (paper App.\ E.2 (A.1), A
 on the leaves of the grid of the distance field `tsdf`, from the fused Flow/Freeze prior `prior`
 and the sign of the field:
 
-- `classes` and `leaf_resolution`: the prior projected on the leaves. A leaf as fine as the
-  prior's finest voxels or finer takes the class and fused resolution \f$\mathcal{R}_{map}\f$ of
-  the prior voxel that holds it, if that voxel holds a surface sample and, for a finer leaf, if
-  the surface may cross the leaf (its centre lies within half its diagonal of the surface); a
-  coarser leaf holds the prior voxels of its box: it is `FREEZE` if one of them is, `FLOW` if
-  one holds a sample, and takes the finest of their resolutions;
+- `classes` and `leaf_resolution`: the prior projected on the leaves. A leaf finer than the
+  prior's finest voxels takes the fused resolution \f$\mathcal{R}_{map}\f$ of the prior voxel that
+  holds it if that voxel holds a surface sample, and its class: the whole of a `FREEZE` voxel is
+  `FREEZE`, a `FLOW` voxel is `FLOW` in the leaves the surface may cross (their centre lies within
+  half their diagonal of the surface). A leaf as large as a prior voxel or larger holds the prior
+  voxels of its box: it is `FREEZE` if one of them is, `FLOW` if one holds a sample, and takes
+  the finest of their resolutions;
 - `occupied` = `FLOW` or `FREEZE` leaves;
 - `exterior` (`ext_void`) = the leaves that are not occupied and whose centre the distance field
   puts outside (a non-negative value);
@@ -207,7 +208,8 @@ such as between two fingers), which the fill takes as inside; the
 `Tsdf_sign_method::FLOOD_FILL` sign is the paper's rule; `benchmark/Part_decomposition/RESULTS.md` measures both.
 
 The distances between leaf centres are found in a kd-tree of the non-exterior leaves next to the
-exterior; on a uniform grid they are exact.
+exterior: on a uniform grid they are exact, on an adaptive grid they are the distances to the
+nearest of those leaves.
 
 \par Complexity
 \f$O(n \log n)\f$ for the \f$n\f$ leaves of the grid.

@@ -93,7 +93,9 @@ namespace Part_decomposition {
 \ingroup PkgPartDecompositionRef
 How the sign of the distance field is decided, i.e.\ which voxel centres are inside the shape.
 
-The \em surface voxels below are the voxels whose (closed) box meets a triangle.
+Each leaf of the grid of the distance field is decided at its <em>sign point</em>, the centre of
+the finest voxel in the middle of the leaf, from the exact signed crossings of the rows of the
+finest voxels with the triangles.
 
 - `INSIDE_TEST`: ray parity. A point is inside if a ray from it crosses the surface an odd
   number of times. Exact for closed meshes; meaningless for open ones, and a region covered
@@ -102,29 +104,25 @@ The \em surface voxels below are the voxels whose (closed) box meets a triangle.
   inside if \f$|w| > 1/2\f$, so that inward-oriented components, nested and overlapping
   (self-intersecting) closed parts are handled. On a closed mesh (no border edge) \f$w\f$ is an
   integer and is computed exactly by signed ray crossings, at the cost of `INSIDE_TEST`. On an
-  open mesh \f$w\f$ is evaluated with a hierarchical (Barnes-Hut) approximation at the centres of
-  the voxels next to the surface voxels; the other voxels take, by a flood fill that does not
-  cross surface voxels, the sign of the nearest evaluated voxel, and the surface voxels the sign
-  of an adjacent voxel centre they see without crossing a triangle (or their own evaluation):
-  holes are bridged as the winding number bridges them. Needs a consistent orientation of each
-  connected part.
-- `FLOOD_FILL`: the voxels connected to the grid border without crossing a surface voxel are
-  outside, the other non-surface voxels inside; a surface voxel takes the side of the voxel
-  centres it is joined to by a chain of at most three segments between adjacent centres that meet
-  no triangle, and is inside if there is none. Ignores orientation; seals holes smaller than a
-  voxel but leaks through larger ones; closed hollow shells become solid. This is the paper's
-  exterior, the complement of `fillholes()` of the surface voxels.
-- `RAY_VOTES`: ray voting (Nooruddin and Turk 2003) with signed crossings. Along each of the six
-  axis rays from a voxel centre, the signed crossings of its row with the triangles give the
-  winding number that ray sees, exactly (the crossings of `WINDING_NUMBER` on a closed mesh);
-  the centre is inside if at least four of the six are non-zero. On a closed mesh the six agree
-  and this is the exact winding number, computed along one axis; on an open mesh a hole turns
-  only the rays that leave through it, and an open sheet gives at most the two rays that cross
-  it. Each voxel is decided on its own rays: nothing is propagated. Needs a consistent
+  open mesh \f$w\f$ is evaluated at every sign point with a hierarchical (Barnes-Hut)
+  approximation: holes are bridged as the winding number bridges them. Needs a consistent
   orientation of each connected part.
+- `FLOOD_FILL`: the leaves the surface does not meet (their centre is farther from it than half
+  their diagonal) are outside if they are joined to the border of the cube through such leaves,
+  inside otherwise; a leaf the surface may meet takes the sign of `RAY_VOTES`. Seals holes
+  smaller than a leaf but leaks through larger ones; closed hollow shells become solid. This is the paper's exterior,
+  the complement of `fillholes()` of the surface leaves.
+- `RAY_VOTES`: ray voting (Nooruddin and Turk 2003) with signed crossings. Along each of the six
+  axis rays from a sign point, the signed crossings of its row with the triangles give the
+  winding number that ray sees, exactly (the crossings of `WINDING_NUMBER` on a closed mesh);
+  the point is inside if the six are non-zero and outside if at most three are; in between (the
+  rays that leave through a hole) the generalized winding number at the point decides. On a
+  closed mesh the six agree and this is the exact winding number, computed along one axis; on an
+  open mesh a hole turns only the rays that leave through it, and an open sheet gives at most the
+  two rays that cross it. Needs a consistent orientation of each connected part.
 - `AUTOMATIC` = `RAY_VOTES`: exact on every closed mesh, self-intersecting or not, with no
   costly self-intersection test, and robust on open ones: on the development shapes with holes
-  it puts 1.5 to 3.7 times fewer voxels on the wrong side than `WINDING_NUMBER` (against the
+  it put 1.5 to 3.7 times fewer voxels on the wrong side than `WINDING_NUMBER` (against the
   closed originals), in half its time (`benchmark/Part_decomposition/RESULTS.md`).
 */
 enum class Tsdf_sign_method
@@ -132,7 +130,7 @@ enum class Tsdf_sign_method
   AUTOMATIC,      ///< `RAY_VOTES`
   INSIDE_TEST,    ///< ray parity (closed meshes only)
   WINDING_NUMBER, ///< \f$|w| > 1/2\f$: exact by signed ray crossings if closed, hierarchical elsewhere
-  FLOOD_FILL,     ///< exterior flood fill of the grid around the surface voxels (the paper's `fillholes`)
+  FLOOD_FILL,     ///< exterior flood fill of the grid around the surface leaves (the paper's `fillholes`)
   RAY_VOTES       ///< four of the six axis rays see a non-zero winding number
 };
 
@@ -173,7 +171,7 @@ constexpr bool use_pieces = true;
 constexpr double crease_angle = 60.;
 /// a smaller part (fraction of the mesh area) joins a neighbour
 constexpr double minimum_part_area = 0.005;
-/// R: the grids of the prior, coarse to fine; the finest serves every volume stage
+/// R: the grids of the prior, coarse to fine; the finest is the unit of the lengths of every volume stage
 inline std::vector<int> voxel_resolutions() { return {16, 32, 64}; }
 /// N_face: the barycentric samples per face
 constexpr unsigned int number_of_points_per_face = 36;
@@ -323,7 +321,7 @@ constexpr Parameter_description parameter_table[] = {
   {"voxel_resolutions", "std::vector<int>", "16,32,64",
    "a non-empty list of powers of two from 1 to 256, each twice the previous", Parameter_stage::PRIOR,
    "compute_flow_freeze_prior(), compute_tsdf()", true, false,
-   "R: the grids of the prior, coarse to fine; the finest serves every volume stage"},
+   "R: the grids of the prior, coarse to fine; the finest is the unit of the lengths of every volume stage"},
   {"number_of_points_per_face", "unsigned int", "36", "a positive perfect square", Parameter_stage::PRIOR,
    "compute_topology_score()", true, false, "N_face: the barycentric samples per face"},
   {"number_of_neighbors", "unsigned int", "8", "a positive integer", Parameter_stage::PRIOR,
@@ -350,7 +348,7 @@ constexpr Parameter_description parameter_table[] = {
    true, false, "tau: the truncation of the distance field, in voxels of the finest grid"},
   {"tsdf_sign_method", "Tsdf_sign_method", "automatic", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true,
    false, "how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill"},
-  {"grid_resolution", "int", "128", "a power of two from the finest voxel resolution to 256",
+  {"grid_resolution", "int", "128", "a power of two up to 256; raised to the finest voxel resolution",
    Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, false,
    "the resolution of the finest leaves of the adaptive grid, where the shape is thin"},
   {"adaptive_grid", "bool", "true", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, true,

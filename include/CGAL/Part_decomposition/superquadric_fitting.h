@@ -101,7 +101,8 @@ inline void check_prior_and_distance_field(const Hierarchical_prior& prior, cons
   bool consistent = !prior.resolutions.empty() && prior.resolutions.front() >= 1 &&
                     prior.resolutions.back() == prior.classes.resolution() &&
                     tsdf.values.size() == tsdf.grid.number_of_leaves() &&
-                    tsdf.grid.finest_resolution() >= prior.classes.resolution();
+                    tsdf.grid.finest_resolution() >= prior.classes.resolution() &&
+                    std::abs(tsdf.voxel_size * double(prior.classes.resolution()) - 1.) < 1e-12;
   for(std::size_t l = 1; consistent && l < prior.resolutions.size(); ++l)
     consistent = prior.resolutions[l - 1] < prior.resolutions[l];
   check_parameter(consistent, "the prior and the distance field", "computed with the same voxel_resolutions");
@@ -137,31 +138,30 @@ inline std::vector<std::size_t> claimable_volume(const Fitting_zones& zones)
 // volume to stand for.
 template <typename GeomTraits>
 bool fall_back_to_one_primitive(Superquadric_fitting_result<GeomTraits>& result, const Fitting_zones& zones,
-                                const Adaptive_grid& grid, const Normalization& normalization)
+                                const Adaptive_grid& grid, const Normalization& normalization, int stage_resolution)
 {
   const std::vector<std::size_t> leaves = claimable_volume(zones);
   if(leaves.empty()) return false;
   Part_box box;
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(leaves.size());
-  double half = 0.;
+  std::vector<Eigen::Vector3d> corners; // the box holds the leaves' cubes
+  corners.reserve(8 * leaves.size());
   for(std::size_t l : leaves)
   {
     const std::array<double, 3> c = grid.center(l);
-    const double v = grid.volume(l);
-    points.push_back(Eigen::Vector3d(c[0], c[1], c[2]));
+    const double v = grid.volume(l), h = 0.5 * grid.size(l);
+    const Eigen::Vector3d p(c[0], c[1], c[2]);
     box.area += v;
-    box.first += v * points.back();
-    box.second += v * points.back() * points.back().transpose();
+    box.first += v * p;
+    box.second += v * p * p.transpose();
+    for(int k = 0; k < 8; ++k)
+      corners.push_back(p + Eigen::Vector3d((k & 1) ? h : -h, (k & 2) ? h : -h, (k & 4) ? h : -h));
     result.labels[l] = 0;
-    half = (std::max)(half, 0.5 * grid.size(l));
   }
-  fit_box_to_points(box, points);
-  box.half += Eigen::Vector3d::Constant(half); // the leaves' own extent
+  fit_box_to_points(box, corners);
   const Superquadric<GeomTraits> sq = box_superquadric<GeomTraits>(box, Eigen::Vector3d::Zero());
   result.primitives.push_back(sq);
   result.input_primitives.push_back(sq.in_input_coordinates(normalization));
-  result.stage_resolution.push_back(grid.finest_resolution());
+  result.stage_resolution.push_back(stage_resolution);
   result.body_seeded.push_back(false);
   result.seed_leaf.push_back(leaves[leaves.size() / 2]);
   result.semi_axis_scale.push_back(0.);
@@ -210,12 +210,13 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
   Superquadric_fitting_result<GeomTraits> result = fitter.run();
   if(result.primitives.empty())
   {
-    const bool fell_back = fall_back_to_one_primitive(result, *zones, tsdf.grid, prior.normalization);
+    const bool fell_back =
+      fall_back_to_one_primitive(result, *zones, tsdf.grid, prior.normalization, prior.resolutions.back());
     if(parameters.verbose) report_no_primitive(result, fell_back);
   }
   if(parameters.merge_primitives)
-    merge_explained_primitives(result, zones->classes, tsdf, 1. / double(prior.resolutions.back()),
-                               parameters.minimum_merge_iou, primitive_merge_freeze_fraction);
+    merge_explained_primitives(result, zones->classes, tsdf, parameters.minimum_merge_iou,
+                               primitive_merge_freeze_fraction);
   return result;
 }
 

@@ -70,7 +70,7 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
    assignment may leave a row of one plate's faces to the other, which moves the seam off the
    crease.
 4. The parts are renumbered `0` to `K_new - 1` in the order of their smallest former id; a merged part
-   keeps the primitive that claimed the most voxels (the one of the smallest former part on a tie).
+   keeps the primitive that claimed the most volume (the one of the smallest former part on a tie).
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB): the dihedral
         angles are computed in parallel

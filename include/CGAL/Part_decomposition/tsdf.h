@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -59,9 +60,10 @@ Tsdf_parameters read_tsdf_parameters(const NamedParameters& np)
   Tsdf_parameters p;
   p.resolution = read_voxel_resolutions(np).back();
   p.grid_resolution = int(choose_parameter(get_parameter(np, internal_np::grid_resolution), defaults::grid_resolution));
-  check_parameter(p.grid_resolution >= p.resolution && p.grid_resolution <= 256 &&
-                    (p.grid_resolution & (p.grid_resolution - 1)) == 0,
+  check_parameter(p.grid_resolution >= 1 && p.grid_resolution <= 256 && (p.grid_resolution & (p.grid_resolution - 1)) == 0,
                   "grid_resolution");
+  // never coarser than the finest voxel resolution, the unit of the method's lengths
+  p.grid_resolution = (std::max)(p.grid_resolution, p.resolution);
   p.adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_grid), defaults::adaptive_grid);
   p.truncation_voxels = double(choose_parameter(get_parameter(np, internal_np::tsdf_truncation), defaults::tsdf_truncation));
   check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation");
@@ -87,8 +89,9 @@ inline Surface_depths prior_surface_depths(const Hierarchical_prior& prior, int 
 }
 
 // The grid of the leaves, numbered by smallest corner as Adaptive_grid numbers them, with the
-// distances of their centres in the same order.
-inline Adaptive_grid grid_of_leaves(std::vector<Grid_leaf>& leaves, int finest_resolution, std::vector<double>& distance)
+// distances of their centres and whether the surface may meet them, in the same order.
+inline Adaptive_grid grid_of_leaves(std::vector<Grid_leaf>& leaves, int finest_resolution, std::vector<double>& distance,
+                                    std::vector<std::uint8_t>& crossed)
 {
   const int D = Adaptive_grid::depth_of(finest_resolution);
   const std::uint64_t R = std::uint64_t(finest_resolution);
@@ -100,26 +103,34 @@ inline Adaptive_grid grid_of_leaves(std::vector<Grid_leaf>& leaves, int finest_r
   std::vector<Adaptive_grid::Cell> cells;
   cells.reserve(leaves.size());
   distance.resize(leaves.size());
+  crossed.resize(leaves.size());
   for(std::size_t l = 0; l < leaves.size(); ++l)
   {
     cells.push_back(Adaptive_grid::Cell{leaves[l].depth, leaves[l].position});
     distance[l] = leaves[l].distance;
+    crossed[l] = leaves[l].crossed ? 1 : 0;
   }
   return Adaptive_grid(finest_resolution, cells);
 }
 
-// Inside flags of the leaves by `method` (never AUTOMATIC).
+// Inside flags of the leaves by `method` (never AUTOMATIC); `crossed`: per leaf, whether the surface
+// may meet it.
 template <typename ConcurrencyTag>
 std::vector<std::uint8_t> leaf_inside_flags(const std::vector<Triangle_points>& tris, bool closed,
                                             Tsdf_sign_method method, const Adaptive_grid& grid,
-                                            const std::vector<double>& distance)
+                                            const std::vector<std::uint8_t>& crossed)
 {
   switch(method)
   {
   case Tsdf_sign_method::INSIDE_TEST:
     return leaf_inside_from_rows<ConcurrencyTag>(tris, grid, true);
   case Tsdf_sign_method::FLOOD_FILL:
-    return leaf_inside_by_flood_fill(grid, distance, leaf_inside_from_rows<ConcurrencyTag>(tris, grid, !closed));
+  {
+    // the leaves the surface may meet take the sign of RAY_VOTES
+    const std::vector<std::uint8_t> votes = closed ? leaf_inside_from_rows<ConcurrencyTag>(tris, grid, false)
+                                                   : leaf_inside_by_ray_votes<ConcurrencyTag>(tris, grid);
+    return leaf_inside_by_flood_fill(grid, crossed, &votes);
+  }
   case Tsdf_sign_method::RAY_VOTES:
     if(closed) return leaf_inside_from_rows<ConcurrencyTag>(tris, grid, false);
     return leaf_inside_by_ray_votes<ConcurrencyTag>(tris, grid);
@@ -134,10 +145,13 @@ std::vector<std::uint8_t> leaf_inside_flags(const std::vector<Triangle_points>& 
 }
 
 // compute_tsdf() on a mesh that check_input() accepted (Part_decomposer checks its mesh once);
-// `prior` may be null (the surface at the finest voxel resolution everywhere).
+// `prior` may be null (the surface at the finest voxel resolution everywhere). `thin_faces`, if
+// given, holds per face index whether its thin parts are refined (the faces of the pieces the
+// volume stages may decompose); else every face's are.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
 Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh& tm, const Hierarchical_prior* prior,
-                                                             const NamedParameters& np)
+                                                             const NamedParameters& np,
+                                                             const std::vector<std::uint8_t>* thin_faces = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -161,14 +175,28 @@ Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh&
   rule.uniform = !parameters.adaptive;
   rule.band = out.truncation;
   if(prior != nullptr && parameters.adaptive) rule.surface = prior_surface_depths(*prior, parameters.resolution);
+  if(thin_faces != nullptr)
+  {
+    // soup order is the order of faces(tm)
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    for(auto f : faces(tm)) rule.thin_triangles.push_back((*thin_faces)[std::size_t(get(fim, f))]);
+  }
   std::vector<double> distance;
+  std::vector<std::uint8_t> crossed;
   {
     const Triangle_soup_aabb_tree tree(tris);
     std::vector<Grid_leaf> leaves = adaptive_grid_leaves<ConcurrencyTag>(tree, rule);
-    out.grid = grid_of_leaves(leaves, 1 << rule.finest_depth, distance);
+    out.grid = grid_of_leaves(leaves, 1 << rule.finest_depth, distance, crossed);
+  }
+  if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), defaults::verbose))
+  {
+    std::cerr << "grid: " << out.grid.number_of_leaves() << " leaves, by resolution:";
+    for(int d = 0; d <= rule.finest_depth; ++d)
+      if(out.grid.number_of_leaves_of_depth(d) > 0) std::cerr << " " << (1 << d) << ": " << out.grid.number_of_leaves_of_depth(d);
+    std::cerr << "\n";
   }
   const std::vector<std::uint8_t> inside =
-    leaf_inside_flags<ConcurrencyTag>(tris, closed, parameters.sign_method, out.grid, distance);
+    leaf_inside_flags<ConcurrencyTag>(tris, closed, parameters.sign_method, out.grid, crossed);
   out.values.resize(distance.size());
   for(std::size_t l = 0; l < distance.size(); ++l)
   {
@@ -252,7 +280,7 @@ the prior's resolution, and the crossings of the rows of the finest grid with th
   \cgalParamNEnd
   \cgalParamNBegin{grid_resolution}
     \cgalParamDescription{the resolution of the finest leaves of the grid}
-    \cgalParamType{`int`: a power of two from the finest of `voxel_resolutions` to 256}
+    \cgalParamType{`int`: a power of two up to 256; raised to the finest of `voxel_resolutions` if below it}
     \cgalParamDefault{`128`}
   \cgalParamNEnd
   \cgalParamNBegin{adaptive_grid}

@@ -55,6 +55,11 @@ struct Grid_refinement_rule
   double feature_sides = 2.;
   double band = 0.125; // distances are exact below it
   Surface_depths surface;
+  // per triangle of the tree's soup, whether its thin parts are refined below the surface depth
+  // (empty: all of them)
+  std::vector<std::uint8_t> thin_triangles;
+
+  bool refines_thin(std::uint32_t t) const { return thin_triangles.empty() || thin_triangles[t] != 0; }
 
   int surface_depth(const Vec3& p) const
   {
@@ -72,7 +77,8 @@ struct Grid_leaf
 {
   int depth;
   Octree_cell position;
-  double distance;
+  double distance; // clipped to the band
+  bool crossed;    // the surface may meet the leaf: its centre is within half its diagonal of it
 };
 
 // One cell of a level of the sweep: its lower bound on the distance of its centre (from its
@@ -173,7 +179,7 @@ void sweep_level(const Triangle_soup_aabb_tree& tree, const Grid_refinement_rule
       const Vec3 c = cell_center(d, level[i].position);
       if(d < rule.surface_depth(closest_point_on_triangle(c, t[0], t[1], t[2])))
         split[i] = 1;
-      else if(dist.first <= half_diagonal)
+      else if(dist.first <= half_diagonal && rule.refines_thin(closest[i]))
         split[i] = faces_near_sheet(tree, t, c, rule.feature_sides * side) ? 1 : 0;
     }
   }, 64);
@@ -186,7 +192,7 @@ std::vector<Grid_leaf> adaptive_grid_leaves(const Triangle_soup_aabb_tree& tree,
 {
   // per depth, the sorted Morton-free keys of the split cells, and every leaf with its distance
   std::vector<std::vector<std::uint64_t> > split_keys(std::size_t(rule.finest_depth) + 1);
-  std::vector<std::pair<std::pair<int, std::uint64_t>, double> > leaf_distance;
+  std::vector<std::pair<std::pair<int, std::uint64_t>, std::pair<double, bool> > > leaf_distance;
   auto key = [](int d, const Octree_cell& g) {
     const std::uint64_t r = std::uint64_t(1) << d;
     return std::uint64_t(g[0]) + r * (std::uint64_t(g[1]) + r * std::uint64_t(g[2]));
@@ -199,14 +205,16 @@ std::vector<Grid_leaf> adaptive_grid_leaves(const Triangle_soup_aabb_tree& tree,
   {
     sweep_level<ConcurrencyTag>(tree, rule, level, distance, closest, exact, split);
     // a child's centre lies half the parent's half diagonal away from the parent's
-    const double offset = 0.25 * std::sqrt(3.) * std::ldexp(1., -d);
+    const double offset = 0.25 * std::sqrt(3.) * std::ldexp(1., -d), half_diagonal = 2. * offset;
     next.clear();
     for(std::size_t i = 0; i < level.size(); ++i)
     {
       const Octree_cell& g = level[i].position;
       if(!split[i])
       {
-        leaf_distance.push_back({{d, key(d, g)}, (std::min)(distance[i], rule.band)});
+        // an unqueried leaf's bound exceeds its side: the surface does not meet it
+        leaf_distance.push_back(
+          {{d, key(d, g)}, {(std::min)(distance[i], rule.band), exact[i] != 0 && distance[i] <= half_diagonal * (1. + 1e-9)}});
         continue;
       }
       split_keys[std::size_t(d)].push_back(key(d, g));
@@ -229,10 +237,10 @@ std::vector<Grid_leaf> adaptive_grid_leaves(const Triangle_soup_aabb_tree& tree,
   octree.for_each_leaf([&](int d, const Octree_cell& g) {
     const std::pair<int, std::uint64_t> k(d, key(d, g));
     const auto it = std::lower_bound(leaf_distance.begin(), leaf_distance.end(), k,
-                                     [](const std::pair<std::pair<int, std::uint64_t>, double>& a,
+                                     [](const std::pair<std::pair<int, std::uint64_t>, std::pair<double, bool> >& a,
                                         const std::pair<int, std::uint64_t>& b) { return a.first < b; });
     CGAL_assertion(it != leaf_distance.end() && it->first == k);
-    leaves.push_back(Grid_leaf{d, g, it->second});
+    leaves.push_back(Grid_leaf{d, g, it->second.first, it->second.second});
   });
   return leaves;
 }

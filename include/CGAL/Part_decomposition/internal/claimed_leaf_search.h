@@ -58,6 +58,7 @@ public:
     // it on a uniform grid
     m_boundary.build<ConcurrencyTag>(grid, [&](std::size_t l) { return labels[l] >= 0; });
     if(window <= 0.) return;
+    m_window = std::int64_t(std::ceil(window * double(grid.finest_resolution()) - 1e-9));
     mark_label_boundaries();
     std::int32_t K = 0;
     for(std::int32_t k : labels) K = (std::max)(K, k + 1);
@@ -99,11 +100,21 @@ public:
   // the leaves, -1 past the last. \pre the search was built with a window
   const Labels& labels_near(const std::array<double, 3>& u) const { return m_near[m_grid->locate(u[0], u[1], u[2])]; }
 
-  // The squared distance from u to the nearest centre of the leaves on the boundary of label k
-  // (+infinity if it has none). \pre the search was built with a window
+  // The squared distance from u to the nearest centre of the leaves on the boundary of label k,
+  // +infinity if it has none or if that leaf lies outside the window around the leaf of u (a box
+  // of `window` beyond it on each side). \pre the search was built with a window
   double squared_distance_to_label(std::int32_t k, const std::array<double, 3>& u) const
   {
-    return m_label_search[std::size_t(k)].nearest(u).second;
+    const Adaptive_grid& g = *m_grid;
+    const std::pair<std::size_t, double> nn = m_label_search[std::size_t(k)].nearest(u);
+    if(nn.first == Leaf_feature_search::no_leaf) return nn.second;
+    const std::size_t own = g.locate(u[0], u[1], u[2]);
+    const Adaptive_grid::Voxel &a = g.corner(own), &b = g.corner(nn.first);
+    for(int x = 0; x < 3; ++x)
+      if(std::int64_t(b[x]) + g.width(nn.first) <= std::int64_t(a[x]) - m_window ||
+         std::int64_t(b[x]) >= std::int64_t(a[x]) + g.width(own) + m_window)
+        return std::numeric_limits<double>::infinity();
+    return nn.second;
   }
 
   // The number of leaves in the kd-tree of the nearest claimed leaf.
@@ -130,9 +141,11 @@ private:
   }
 
   // Per leaf, the labels claimed within reach of it (the window around any of its points) along
-  // paths of leaf centres (longer than the straight distance: a superset), its own first, at most
-  // `capacity`: fronts of labels propagated from the boundaries of the labels, each leaf settling
-  // one distance per label.
+  // paths of leaf centres, its own first, at most `capacity`: fronts of labels propagated from
+  // the boundaries of the labels, each leaf settling one distance per label. A path through face
+  // neighbours is at most sqrt(3) times the straight distance, about 1.2 times between leaves of
+  // one size: `path_slack` keeps the labels a window reaches.
+  static constexpr double path_slack = 1.5;
   void find_near_labels(double window)
   {
     const Adaptive_grid& g = *m_grid;
@@ -166,7 +179,7 @@ private:
       if(e.first > 0.)
       {
         const double reach = std::sqrt(3.) * window + 0.5 * std::sqrt(3.) * g.size(l);
-        if(settled[l] >= capacity || has(l, k) || e.first > 2. * reach) continue;
+        if(settled[l] >= capacity || has(l, k) || e.first > path_slack * reach) continue;
         m_near[l][settled[l]++] = k;
       }
       const std::array<double, 3> c = g.center(l);
@@ -187,6 +200,7 @@ private:
   std::vector<std::uint8_t> m_label_boundary;
   std::vector<Leaf_feature_search> m_label_search;
   std::vector<Labels> m_near;
+  std::int64_t m_window = 0; // in finest voxels
 };
 
 } // namespace internal

@@ -12,9 +12,10 @@
 // stages, where the dense grid had linear-time ones.
 //
 // Leaf_feature_search: built on a set of leaves (the features), the nearest feature centre of a
-// point. Only the features with a face neighbour outside the set are kept: on a uniform grid the
-// neighbour of an inner feature towards a point outside the set is strictly nearer, so the answer
-// is exact; on an adaptive grid it is the nearest of the boundary features.
+// point. Only the features with a face neighbour outside the set or on the cube's border are
+// kept: on a uniform grid the neighbour of an inner feature towards a point outside the set is
+// strictly nearer, so the answer is exact; on an adaptive grid it is the nearest of the boundary
+// features.
 
 #include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/point_kd_tree.h>
@@ -53,10 +54,14 @@ public:
     m_border = border_is_feature;
     m_points.clear();
     m_leaves.clear();
+    const std::uint32_t R = std::uint32_t(grid.finest_resolution());
     for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
     {
       if(!is_feature(l)) continue;
-      bool boundary = false;
+      // a feature on the cube's border may be the nearest from a point outside the cube
+      const Adaptive_grid::Voxel& o = grid.corner(l);
+      const std::uint32_t w = grid.width(l);
+      bool boundary = o[0] == 0 || o[1] == 0 || o[2] == 0 || o[0] + w == R || o[1] + w == R || o[2] + w == R;
       grid.for_each_neighbor(l, [&](std::size_t m) { boundary = boundary || !is_feature(m); });
       if(!boundary) continue;
       const std::array<double, 3> c = grid.center(l);

@@ -12,7 +12,7 @@
 // its finest voxels.
 //
 // Inputs: the normalized triangles, the grid (its leaves' finest-voxel boxes) and, for the flood
-// fill, the unsigned distance of each leaf centre. Output: one flag (1 inside) per leaf.
+// fill, whether the surface may meet each leaf. Output: one flag (1 inside) per leaf.
 //
 // A leaf is decided at its `sign point`: the centre of the finest voxel at the middle of the leaf
 // (the centre itself for a leaf of one finest voxel, half a finest voxel beyond it otherwise), so
@@ -157,23 +157,24 @@ std::vector<std::uint8_t> leaf_inside_by_ray_votes(const std::vector<Triangle_po
   return inside;
 }
 
-// Inside flags by the paper's flood fill: the leaves the surface may cross (their centre within
-// half their diagonal of it, from `distance`) keep `surface_inside`; the others are outside if
-// they are joined to the border of the cube through such leaves, inside otherwise.
-inline std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Adaptive_grid& grid, const std::vector<double>& distance,
-                                                           const std::vector<std::uint8_t>& surface_inside)
+// Inside flags by the paper's flood fill: the leaves the surface does not meet (`crossed` is 0)
+// are outside if they are joined to the border of the cube through such leaves, inside
+// otherwise. A leaf the surface may meet takes its flag in `crossed_inside` if given (the exact
+// winding number of a closed mesh), else it is outside if one of its face neighbours is such an
+// outside leaf, inside otherwise (an open sheet bounds nothing).
+inline std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Adaptive_grid& grid, const std::vector<std::uint8_t>& crossed,
+                                                           const std::vector<std::uint8_t>* crossed_inside = nullptr)
 {
   const std::size_t n = grid.number_of_leaves();
   const std::uint32_t R = std::uint32_t(grid.finest_resolution());
-  std::vector<std::uint8_t> surface(n, 0), outside(n, 0);
+  std::vector<std::uint8_t> outside(n, 0);
   std::vector<std::size_t> queue;
   for(std::size_t l = 0; l < n; ++l)
   {
-    surface[l] = distance[l] <= 0.5 * std::sqrt(3.) * grid.size(l) * (1. + 1e-9) ? 1 : 0;
     const Adaptive_grid::Voxel& c = grid.corner(l);
     const std::uint32_t w = grid.width(l);
     const bool border = c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] + w == R || c[1] + w == R || c[2] + w == R;
-    if(border && !surface[l])
+    if(border && !crossed[l])
     {
       outside[l] = 1;
       queue.push_back(l);
@@ -181,12 +182,27 @@ inline std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Adaptive_grid& 
   }
   for(std::size_t head = 0; head < queue.size(); ++head)
     grid.for_each_neighbor(queue[head], [&](std::size_t m) {
-      if(surface[m] || outside[m]) return;
+      if(crossed[m] || outside[m]) return;
       outside[m] = 1;
       queue.push_back(m);
     });
   std::vector<std::uint8_t> inside(n, 0);
-  for(std::size_t l = 0; l < n; ++l) inside[l] = surface[l] ? surface_inside[l] : std::uint8_t(!outside[l]);
+  for(std::size_t l = 0; l < n; ++l)
+  {
+    if(!crossed[l])
+    {
+      inside[l] = outside[l] ? 0 : 1;
+      continue;
+    }
+    if(crossed_inside != nullptr)
+    {
+      inside[l] = (*crossed_inside)[l];
+      continue;
+    }
+    bool next_to_outside = false;
+    grid.for_each_neighbor(l, [&](std::size_t m) { next_to_outside = next_to_outside || (!crossed[m] && outside[m]); });
+    inside[l] = next_to_outside ? 0 : 1;
+  }
   return inside;
 }
 

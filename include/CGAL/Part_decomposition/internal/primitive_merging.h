@@ -8,13 +8,13 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PRIMITIVE_MERGING_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_PRIMITIVE_MERGING_H
 
-// Merges fitted primitives whose claimed voxels one superquadric explains: a box tiled by
+// Merges fitted primitives whose claimed leaves one superquadric explains: a box tiled by
 // several primitives becomes one.
 //
-// Inputs:  fit      the fitting result: primitives (normalized cube), claimed voxels per
-//                   primitive and the grid `labels` of the finest resolution r
-//          classes  the Flow/Freeze class of each voxel of the same grid
-//          distance the signed distance field on the same grid (negative inside)
+// Inputs:  fit      the fitting result: primitives (normalized cube), claimed leaves per
+//                   primitive and the `labels` of the leaves of the adaptive grid
+//          classes  the Flow/Freeze class of each leaf of the same grid
+//          tsdf     the signed distance field on the same grid (negative inside)
 //          minimum_iou, maximum_freeze  see merge_explained_primitives()
 // Output:  fit, with the merged primitives replaced by one superquadric each, the others kept,
 //          numbered by smallest former index; labels and claimed voxels renumbered.
@@ -40,34 +40,77 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// How well a superquadric explains a set of claimed leaves (`in_set` of their label): the volume
-// of their intersection over that of their union, where the unclaimed leaves inside the shape
-// (Freeze and gaps between claims, `distance` <= 0) count on neither side; `group_volume` is the
-// volume of the claimed leaves. A leaf is inside the superquadric if its centre is.
-template <typename GeomTraits, typename InSet>
-double leaf_iou(const Superquadric<GeomTraits>& sq, const std::vector<std::int32_t>& labels,
-                const Truncated_signed_distance_field& tsdf, const InSet& in_set, double group_volume)
+// The volume of the leaves of `leaves` whose centre lies in the superquadric.
+template <typename GeomTraits>
+double volume_within(const Superquadric<GeomTraits>& sq, const Adaptive_grid& grid, const std::vector<std::size_t>& leaves)
 {
-  double inside = 0., wrong = 0.;
-  for_each_leaf_within(sq.data(), tsdf.grid, 0., [&](std::size_t l) {
-    const std::int32_t k = labels[l];
-    if(k >= 0 && in_set(std::size_t(k))) inside += tsdf.grid.volume(l);
-    else if(k >= 0 || tsdf.values[l] > 0.) wrong += tsdf.grid.volume(l);
-  });
+  double e[3];
+  superquadric_half_extents(sq.data(), e);
+  double v = 0.;
+  for(std::size_t l : leaves)
+  {
+    const std::array<double, 3> c = grid.center(l);
+    bool in_box = true;
+    for(int a = 0; a < 3; ++a) in_box = in_box && std::abs(c[a] - sq.data().c[a]) <= e[a];
+    if(!in_box) continue;
+    double x[3];
+    sq.data().to_local(c.data(), x);
+    if(local_point_within(sq.data(), x, 0.)) v += grid.volume(l);
+  }
+  return v;
+}
+
+// How well a superquadric explains a set of claimed leaves (`group`, of volume `group_volume`):
+// the volume of their intersection over that of their union, where the unclaimed leaves inside the
+// shape (Freeze and gaps between claims, `neutral`) count on neither side. A leaf is inside the
+// superquadric if its centre is; the rest of the superquadric's volume is wrong: the exterior and
+// the claims of other primitives it covers.
+template <typename GeomTraits>
+double leaf_iou(const Superquadric<GeomTraits>& sq, const Adaptive_grid& grid, const std::vector<std::size_t>& group,
+                double group_volume, const std::vector<std::size_t>& neutral)
+{
+  const double inside = volume_within(sq, grid, group);
+  const double wrong = (std::max)(0., sq.volume() - inside - volume_within(sq, grid, neutral));
   const double u = group_volume + wrong;
   return u > 0. ? (std::min)(1., inside / u) : 0.;
 }
 
+// The extents of `box` on its axes from the solid part of the leaves: the ball of each leaf whose
+// centre is inside, as deep as the centre (all of it inside the shape) and no wider than the leaf.
+// A coarse leaf the surface crosses has its centre up to half its width outside the shape.
+inline void solid_extents(const std::vector<std::size_t>& leaves, const Truncated_signed_distance_field& tsdf,
+                          Part_box& box)
+{
+  const double finest_half = 0.5 / double(tsdf.grid.finest_resolution());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for(std::size_t l : leaves)
+  {
+    const double v = tsdf.values[l];
+    if(v > 0.) continue;
+    const double r = (std::min)(0.5 * double(tsdf.grid.width(l)) / double(tsdf.grid.finest_resolution()), (std::max)(-v, finest_half));
+    const std::array<double, 3> c = tsdf.grid.center(l);
+    const Eigen::Vector3d x = box.axes.transpose() * (Eigen::Vector3d(c[0], c[1], c[2]) - box.center);
+    lo = lo.cwiseMin(x - Eigen::Vector3d::Constant(r));
+    hi = hi.cwiseMax(x + Eigen::Vector3d::Constant(r));
+  }
+  if(!(lo[0] <= hi[0])) // no leaf centre inside: the centres' box and a finest half voxel
+  {
+    box.half += Eigen::Vector3d::Constant(finest_half);
+    return;
+  }
+  box.center += box.axes * ((hi + lo) / 2.);
+  box.half = (hi - lo) / 2.;
+}
+
 // The superquadric of a set of leaves: their smallest box on principal, coordinate or the given
 // axes, with the exponents (box-like, rounded, ellipsoid) that give the best IoU; returns it.
-template <typename GeomTraits, typename InSet>
-double best_union_superquadric(const std::vector<std::size_t>& leaves, const std::vector<std::int32_t>& labels,
-                               const Truncated_signed_distance_field& tsdf, const InSet& in_set,
-                               const std::vector<Eigen::Matrix3d>& axes, double neutral_volume, double minimum_iou,
-                               double half_voxel, Superquadric<GeomTraits>& best)
+template <typename GeomTraits>
+double best_union_superquadric(const std::vector<std::size_t>& leaves, const Truncated_signed_distance_field& tsdf,
+                               const std::vector<Eigen::Matrix3d>& axes, const std::vector<std::size_t>& neutral,
+                               double neutral_volume, double minimum_iou, Superquadric<GeomTraits>& best)
 {
-  typedef typename GeomTraits::Point_3 Point_3;
   const Adaptive_grid& grid = tsdf.grid;
+  typedef typename GeomTraits::Point_3 Point_3;
   Part_box box;
   std::vector<Eigen::Vector3d> points;
   points.reserve(leaves.size());
@@ -82,21 +125,22 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const std
     box.second += v * p * p.transpose();
   }
   fit_box_to_points(box, points, axes);
+  solid_extents(leaves, tsdf, box);
   typename Superquadric<GeomTraits>::Rotation R;
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j) R[std::size_t(3 * i + j)] = box.axes(i, j);
   const double union_volume = box.area;
   double best_iou = 0.;
-  for(double e : {0.1, 0.5, 1.})
+  for(double e : {0.1, 0.25, 0.5, 1.})
   {
     std::array<double, 3> scales;
-    // the leaves' own half size, and a rounder solid reaches the corners of the box less
-    for(int i = 0; i < 3; ++i) scales[std::size_t(i)] = (box.half[i] + half_voxel) * (e > 0.5 ? 1.15 : 1.);
+    // a rounder solid reaches the corners of the box less
+    for(int i = 0; i < 3; ++i) scales[std::size_t(i)] = box.half[i] * (e > 0.5 ? 1.15 : 1.);
     const Superquadric<GeomTraits> sq(scales, e, e, R, Point_3(box.center[0], box.center[1], box.center[2]));
     // the volume it covers beyond the union and every neutral leaf are wrong: a bound on its IoU
     const double bound = union_volume / (union_volume + (std::max)(0., sq.volume() - union_volume - neutral_volume));
     if(bound < minimum_iou) continue;
-    const double iou = leaf_iou(sq, labels, tsdf, in_set, union_volume);
+    const double iou = leaf_iou(sq, grid, leaves, union_volume, neutral);
     if(iou > best_iou) best_iou = iou, best = sq;
   }
   return best_iou;
@@ -149,13 +193,13 @@ primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<
 }
 
 // Greedy agglomeration: the two adjacent groups of primitives whose union one superquadric
-// explains best (IoU of leaf volumes; `delta`: the voxel of the finest prior resolution) are
-// merged while that IoU is at least `minimum_iou`; groups whose common surface is more than
-// `maximum_freeze` Freeze never merge (a boundary the prior saw). Returns the group (smallest member) of each primitive and the superquadric of each group.
+// explains best (IoU of leaf volumes) are merged while that IoU is at least `minimum_iou`; groups
+// whose common surface is more than `maximum_freeze` Freeze never merge (a boundary the prior
+// saw). Returns the group (smallest member) of each primitive and the superquadric of each group.
 template <typename GeomTraits>
 std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_result<GeomTraits>& fit,
                                                 const std::vector<Voxel_class>& classes,
-                                                const Truncated_signed_distance_field& tsdf, double delta,
+                                                const Truncated_signed_distance_field& tsdf,
                                                 double minimum_iou, double maximum_freeze,
                                                 std::vector<Superquadric<GeomTraits> >& sq)
 {
@@ -168,9 +212,14 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
     for(std::size_t l : fit.claimed_leaves[k]) claimed_volume[k] += tsdf.grid.volume(l);
   for(std::size_t k = 0; k < K; ++k) group_of[k] = k, members[k].assign(1, k);
   sq = fit.primitives;
-  double neutral = 0.; // unclaimed volume inside the shape
+  std::vector<std::size_t> neutral; // unclaimed leaves inside the shape
+  double neutral_volume = 0.;
   for(std::size_t l = 0; l < fit.labels.size(); ++l)
-    if(fit.labels[l] < 0 && tsdf.values[l] <= 0.) neutral += tsdf.grid.volume(l);
+    if(fit.labels[l] < 0 && tsdf.values[l] <= 0.)
+    {
+      neutral.push_back(l);
+      neutral_volume += tsdf.grid.volume(l);
+    }
   std::map<Pair, std::array<double, 2> > link; // surface area, Freeze area
   for(const auto& i : primitive_interfaces(fit.labels, classes, tsdf.grid))
     link[Pair(std::size_t(i.first.first), std::size_t(i.first.second))] = i.second;
@@ -197,9 +246,7 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
           axes.push_back(rotation_matrix(fit.primitives[largest]));
         }
         Superquadric<GeomTraits> s = sq[a];
-        const double iou = best_union_superquadric(
-            u, fit.labels, tsdf, [&](std::size_t k) { return group_of[k] == a || group_of[k] == b; }, axes,
-            neutral, minimum_iou, 0.5 * delta, s);
+        const double iou = best_union_superquadric(u, tsdf, axes, neutral, neutral_volume, minimum_iou, s);
         it = score.emplace(l.first, std::make_pair(iou, s)).first;
       }
       if(it->second.first >= best) best = it->second.first, best_pair = l.first;
@@ -233,13 +280,13 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
 // Replaces each group of primitives of `agglomerate_primitives()` by its superquadric in `fit`.
 template <typename GeomTraits>
 void merge_explained_primitives(Superquadric_fitting_result<GeomTraits>& fit, const std::vector<Voxel_class>& classes,
-                                const Truncated_signed_distance_field& tsdf, double delta, double minimum_iou,
+                                const Truncated_signed_distance_field& tsdf, double minimum_iou,
                                 double maximum_freeze)
 {
   const std::size_t K = fit.primitives.size();
   if(K < 2) return;
   std::vector<Superquadric<GeomTraits> > sq;
-  const std::vector<std::size_t> group_of = agglomerate_primitives(fit, classes, tsdf, delta, minimum_iou, maximum_freeze, sq);
+  const std::vector<std::size_t> group_of = agglomerate_primitives(fit, classes, tsdf, minimum_iou, maximum_freeze, sq);
   std::vector<double> claimed_volume(K, 0.);
   for(std::size_t k = 0; k < K; ++k)
     for(std::size_t l : fit.claimed_leaves[k]) claimed_volume[k] += tsdf.grid.volume(l);

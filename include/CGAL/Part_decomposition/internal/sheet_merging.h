@@ -221,18 +221,24 @@ inline std::size_t join_sheets_across_smooth_seams(const std::vector<Seam_edge>&
 }
 
 // The primitive of each new part: of its old parts' primitives, the one that claimed the most
-// voxels (the first on a tie).
+// volume (the first on a tie; a part without a primitive counts least).
 template <typename GeomTraits>
 std::vector<std::size_t> largest_primitives(const std::vector<std::size_t>& old_to_new, std::size_t K2,
                                             const std::vector<std::size_t>& part_to_primitive,
-                                            const Superquadric_fitting_result<GeomTraits>& fitting)
+                                            const Superquadric_fitting_result<GeomTraits>& fitting, const Adaptive_grid& grid)
 {
-  std::vector<std::size_t> primitive(K2, 0), volume(K2, 0);
+  std::vector<std::size_t> primitive(K2, 0);
+  std::vector<double> volume(K2, 0.);
   std::vector<char> has(K2, 0);
   for(std::size_t k = 0; k < old_to_new.size(); ++k)
   {
     const std::size_t n = old_to_new[k], q = part_to_primitive[k];
-    const std::size_t size = q < fitting.claimed_leaves.size() ? fitting.claimed_leaves[q].size() + 1 : 0;
+    double size = -1.;
+    if(q < fitting.claimed_leaves.size())
+    {
+      size = 0.;
+      for(std::size_t l : fitting.claimed_leaves[q]) size += grid.volume(l);
+    }
     if(!has[n] || size > volume[n])
     {
       primitive[n] = q;
@@ -271,7 +277,7 @@ std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPoint
   std::vector<std::size_t> old_to_new;
   const std::size_t K2 =
     join_sheets_across_smooth_seams(seam, sharp, K, th, old_to_new, thin_axes(fitting, part_to_primitive));
-  part_to_primitive = largest_primitives(old_to_new, K2, part_to_primitive, fitting);
+  part_to_primitive = largest_primitives(old_to_new, K2, part_to_primitive, fitting, tsdf.grid);
   for(std::size_t& p : part)
     if(p < K) p = old_to_new[p];
   return K2;

@@ -237,10 +237,6 @@ inline void superquadric_half_extents(const Superquadric_data& q, double e[3])
     e[i] = std::abs(q.R[3 * i]) * q.a[0] + std::abs(q.R[3 * i + 1]) * q.a[1] + std::abs(q.R[3 * i + 2]) * q.a[2];
 }
 
-// Calls f(i, j, k, linear_index) for every voxel of the r-grid of [-0.5,0.5]^3 whose centre has
-// d~ <= margin (margin >= 0), or g <= 1 when margin == 0 (the plain inside test). Voxels are
-// visited in increasing linear index. Local coordinates are updated incrementally along i, and
-// any point with |x_l| > a_l + margin is rejected before any power is taken (then d~ > margin).
 // Whether the point of local coordinates x has d~ <= margin (margin >= 0), or g <= 1 when margin
 // == 0 (the plain inside test). Any point with |x_l| > a_l + margin is rejected before any power
 // is taken (then d~ > margin).

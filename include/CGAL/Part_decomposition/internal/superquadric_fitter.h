@@ -157,7 +157,8 @@ private:
   // Fixed choices, not parameters:
   // - samples above this count are taken on a lattice of stride 2 or 4: bounds the cost of a solve;
   static constexpr std::size_t maximum_samples = 4096;
-  // - spacing of the Flow-zone test samples, in voxels of Delta (the zone tolerance is >= 4 of them);
+  // - spacing of the Flow-zone test samples, in voxels of the finest prior resolution (the zone
+  //   tolerance is >= 2 of them);
   static constexpr double surface_test_spacing = 1.;
   // - a rejected surface seed excludes this fraction of rho: the rest of its component is seeded again;
   static constexpr double surface_exclusion = 0.5;
@@ -493,8 +494,9 @@ private:
     m_result.number_of_samples += m_samples.size();
   }
 
-  // InitSQ (A.5): centre s, an axis-aligned ball of radius min(Delta^{r_fit}, EDT_flow(s)); semi-axes
-  // in [Delta^{r_fit}/4, rho], exponents in [1e-3, 2], centre within rho/2 of s, free rotation.
+  // InitSQ (A.5): centre s, an axis-aligned ball of radius min(Delta^{r_fit}, EDT_flow(s)), or the
+  // side of a body seed's leaf if larger; semi-axes in [Delta^{r_fit}/4, rho], exponents in
+  // [1e-3, 2], centre within rho/2 of s, free rotation.
   Initial_superquadric initial_superquadric(const Stage& st, const Seed& seed) const
   {
     Initial_superquadric init;
@@ -502,7 +504,11 @@ private:
     const double rho = st.rho;
     const double a_lower = st.delta_fit / 4., a_upper = (std::max)(rho, st.delta_fit / 4.);
     const double to_outside = (*st.flow)[seed.leaf] ? std::sqrt(m_flow_outside.squared_distance(seed.leaf)) : 0.;
-    const double a0 = (std::min)(a_upper, (std::max)(a_lower, (std::min)(st.delta_fit, to_outside)));
+    // A ball smaller than the seed's leaf holds no other sample: the residuals of the samples
+    // outside it are clipped and the fit would not move. It reaches the neighbouring leaves'
+    // centres, within the seed's depth.
+    const double reach = (std::min)(m_grid.size(seed.leaf) * (1. + 1e-9), seed.body ? std::sqrt(seed.depth_sqd) : 0.);
+    const double a0 = (std::min)(a_upper, (std::max)(a_lower, (std::max)((std::min)(st.delta_fit, to_outside), reach)));
     for(int i = 0; i < 3; ++i) init.theta.a[i] = a0, init.theta.c[i] = s[i];
     const double inf = std::numeric_limits<double>::infinity();
     const double e_min = superquadric_minimum_exponent;
@@ -540,7 +546,7 @@ private:
 
   bool surface_in_flow_zone(const Stage& st, const Superquadric_data& theta) const
   {
-    return for_each_surface_sample(theta, surface_test_spacing * m_delta, [&](const double p[3]) {
+    return for_each_surface_sample(theta, surface_test_spacing * m_sample_voxel, [&](const double p[3]) {
       for(int l = 0; l < 3; ++l)
         if(!(p[l] >= -0.5 && p[l] <= 0.5)) return false;
       return in_flow_zone(st, p);
@@ -580,7 +586,11 @@ private:
     if(m_parameters.use_reachable_regions) keep_claim_connected_to_region();
     double net = 0.;
     for(std::size_t l : m_claim) net += m_spec[l] ? 0. : m_grid.volume(l);
-    return net;
+    // a leaf is claimed whole by its centre: a small primitive among coarse leaves claims no more
+    // than the volume within the band of it
+    Superquadric_data grown = theta;
+    for(int a = 0; a < 3; ++a) grown.a[a] += claim_band * m_delta;
+    return (std::min)(net, Superquadric<GeomTraits>(grown).volume());
   }
 
   // A claim never jumps across a Freeze wall: keep its leaves connected to the reachable region.
