@@ -1345,7 +1345,7 @@ TEST_CASE("primitives that tile one box are merged into one superquadric of the 
     // every leaf lies in or out of each box: the same claimed volume as the dense grid's voxels
     const double volume = claimed_volume(c);
     CHECK(volume == Approx(claimed_volume(claimed_boxes(uniform, slabs, never))).epsilon(1e-12));
-    PDI::merge_explained_primitives(c.fit, c.classes, c.tsdf, 0.6, 0.2);
+    PDI::merge_explained_primitives(c.fit, c.classes, c.tsdf, 1. / r, 0.6, 0.2);
     REQUIRE(c.fit.primitives.size() == 1);
     CHECK(claimed_volume(c) == Approx(volume).epsilon(1e-12));
     for(std::size_t l = 0; l < c.fit.labels.size(); ++l) CHECK(c.fit.labels[l] <= 0);
@@ -1366,12 +1366,12 @@ TEST_CASE("primitives that tile one box are merged into one superquadric of the 
     Claimed_boxes joint = claimed_boxes(adaptive ? slab_grid : uniform, slabs, [](const std::array<double, 3>& p) {
       return std::abs(std::abs(p[0]) - 0.1) < 1.5 / 32;
     });
-    PDI::merge_explained_primitives(joint.fit, joint.classes, joint.tsdf, 0.6, 0.2);
+    PDI::merge_explained_primitives(joint.fit, joint.classes, joint.tsdf, 1. / r, 0.6, 0.2);
     CHECK(joint.fit.primitives.size() == 3);
 
     // an L of two boxes is not one box: they stay two
     Claimed_boxes l = claimed_boxes(adaptive ? l_grid : uniform, l_boxes, never);
-    PDI::merge_explained_primitives(l.fit, l.classes, l.tsdf, 0.6, 0.2);
+    PDI::merge_explained_primitives(l.fit, l.classes, l.tsdf, 1. / r, 0.6, 0.2);
     CHECK(l.fit.primitives.size() == 2);
     CHECK(!l.fit.claimed_leaves[0].empty());
     CHECK(!l.fit.claimed_leaves[1].empty());

@@ -215,8 +215,8 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
     if(parameters.verbose) report_no_primitive(result, fell_back);
   }
   if(parameters.merge_primitives)
-    merge_explained_primitives(result, zones->classes, tsdf, parameters.minimum_merge_iou,
-                               primitive_merge_freeze_fraction);
+    merge_explained_primitives(result, zones->classes, tsdf, 1. / double(prior.resolutions.back()),
+                               parameters.minimum_merge_iou, primitive_merge_freeze_fraction);
   return result;
 }
 

@@ -103,11 +103,15 @@ inline void solid_extents(const std::vector<std::size_t>& leaves, const Truncate
 }
 
 // The superquadric of a set of leaves: their smallest box on principal, coordinate or the given
-// axes, with the exponents (box-like, rounded, ellipsoid) that give the best IoU; returns it.
+// axes, with the exponents (box-like, rounded, ellipsoid) that give the best IoU; returns it. The
+// merge decides on the box of the leaf centres widened by `half_voxel` (the rule its threshold was
+// chosen with); `solid` gives the superquadric of a merged group its solid extents and a finer
+// choice of exponents.
 template <typename GeomTraits>
 double best_union_superquadric(const std::vector<std::size_t>& leaves, const Truncated_signed_distance_field& tsdf,
                                const std::vector<Eigen::Matrix3d>& axes, const std::vector<std::size_t>& neutral,
-                               double neutral_volume, double minimum_iou, Superquadric<GeomTraits>& best)
+                               double neutral_volume, double minimum_iou, double half_voxel, bool solid,
+                               Superquadric<GeomTraits>& best)
 {
   const Adaptive_grid& grid = tsdf.grid;
   typedef typename GeomTraits::Point_3 Point_3;
@@ -125,7 +129,8 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const Tru
     box.second += v * p * p.transpose();
   }
   fit_box_to_points(box, points, axes);
-  solid_extents(leaves, tsdf, box);
+  if(solid) solid_extents(leaves, tsdf, box);
+  else box.half += Eigen::Vector3d::Constant(half_voxel);
   typename Superquadric<GeomTraits>::Rotation R;
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j) R[std::size_t(3 * i + j)] = box.axes(i, j);
@@ -133,6 +138,7 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const Tru
   double best_iou = 0.;
   for(double e : {0.1, 0.25, 0.5, 1.})
   {
+    if(e == 0.25 && !solid) continue;
     std::array<double, 3> scales;
     // a rounder solid reaches the corners of the box less
     for(int i = 0; i < 3; ++i) scales[std::size_t(i)] = box.half[i] * (e > 0.5 ? 1.15 : 1.);
@@ -193,13 +199,13 @@ primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<
 }
 
 // Greedy agglomeration: the two adjacent groups of primitives whose union one superquadric
-// explains best (IoU of leaf volumes) are merged while that IoU is at least `minimum_iou`; groups
+// explains best (IoU of leaf volumes; `delta`: the voxel of the finest prior resolution) are merged while that IoU is at least `minimum_iou`; groups
 // whose common surface is more than `maximum_freeze` Freeze never merge (a boundary the prior
 // saw). Returns the group (smallest member) of each primitive and the superquadric of each group.
 template <typename GeomTraits>
 std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_result<GeomTraits>& fit,
                                                 const std::vector<Voxel_class>& classes,
-                                                const Truncated_signed_distance_field& tsdf,
+                                                const Truncated_signed_distance_field& tsdf, double delta,
                                                 double minimum_iou, double maximum_freeze,
                                                 std::vector<Superquadric<GeomTraits> >& sq)
 {
@@ -223,6 +229,12 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
   std::map<Pair, std::array<double, 2> > link; // surface area, Freeze area
   for(const auto& i : primitive_interfaces(fit.labels, classes, tsdf.grid))
     link[Pair(std::size_t(i.first.first), std::size_t(i.first.second))] = i.second;
+  auto largest_axes = [&](std::size_t g) { // of the largest primitive of group g
+    std::size_t largest = members[g].front();
+    for(std::size_t m : members[g])
+      if(claimed_volume[m] > claimed_volume[largest]) largest = m;
+    return rotation_matrix(fit.primitives[largest]);
+  };
   std::map<Pair, std::pair<double, Superquadric<GeomTraits> > > score; // cached per pair of groups
   for(;;)
   {
@@ -237,16 +249,10 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
         const std::size_t a = l.first.first, b = l.first.second;
         std::vector<std::size_t> u(leaves[a]);
         u.insert(u.end(), leaves[b].begin(), leaves[b].end());
-        std::vector<Eigen::Matrix3d> axes; // of the largest primitive of each group
-        for(std::size_t g : {a, b})
-        {
-          std::size_t largest = members[g].front();
-          for(std::size_t m : members[g])
-            if(claimed_volume[m] > claimed_volume[largest]) largest = m;
-          axes.push_back(rotation_matrix(fit.primitives[largest]));
-        }
+        const std::vector<Eigen::Matrix3d> axes = {largest_axes(a), largest_axes(b)};
         Superquadric<GeomTraits> s = sq[a];
-        const double iou = best_union_superquadric(u, tsdf, axes, neutral, neutral_volume, minimum_iou, s);
+        const double iou =
+          best_union_superquadric(u, tsdf, axes, neutral, neutral_volume, minimum_iou, 0.5 * delta, false, s);
         it = score.emplace(l.first, std::make_pair(iou, s)).first;
       }
       if(it->second.first >= best) best = it->second.first, best_pair = l.first;
@@ -274,19 +280,22 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
       it = (it->first.first == a || it->first.second == a || it->first.first == b || it->first.second == b)
              ? score.erase(it) : std::next(it);
   }
+  for(std::size_t g = 0; g < K; ++g)
+    if(members[g].size() > 1)
+      best_union_superquadric(leaves[g], tsdf, {largest_axes(g)}, neutral, neutral_volume, 0., 0., true, sq[g]);
   return group_of;
 }
 
 // Replaces each group of primitives of `agglomerate_primitives()` by its superquadric in `fit`.
 template <typename GeomTraits>
 void merge_explained_primitives(Superquadric_fitting_result<GeomTraits>& fit, const std::vector<Voxel_class>& classes,
-                                const Truncated_signed_distance_field& tsdf, double minimum_iou,
+                                const Truncated_signed_distance_field& tsdf, double delta, double minimum_iou,
                                 double maximum_freeze)
 {
   const std::size_t K = fit.primitives.size();
   if(K < 2) return;
   std::vector<Superquadric<GeomTraits> > sq;
-  const std::vector<std::size_t> group_of = agglomerate_primitives(fit, classes, tsdf, minimum_iou, maximum_freeze, sq);
+  const std::vector<std::size_t> group_of = agglomerate_primitives(fit, classes, tsdf, delta, minimum_iou, maximum_freeze, sq);
   std::vector<double> claimed_volume(K, 0.);
   for(std::size_t k = 0; k < K; ++k)
     for(std::size_t l : fit.claimed_leaves[k]) claimed_volume[k] += tsdf.grid.volume(l);
