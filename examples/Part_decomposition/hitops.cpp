@@ -556,7 +556,8 @@ void print_reading(const PD::IO::Mesh_file_info& info)
             << info.number_of_duplicated_vertices << " duplicated (non-manifold), "
             << info.number_of_triangulated_faces << " polygons triangulated, " << info.dropped_faces.size()
             << " faces without area left out, " << info.number_of_reversed_components
-            << " closed components turned outward\n";
+            << " closed components turned outward, " << info.number_of_ignored_values
+            << " values beyond the header's properties ignored\n";
 }
 
 int single(const Options& o)

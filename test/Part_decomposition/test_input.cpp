@@ -830,6 +830,28 @@ TEST_CASE("PLY as MeshLab writes it: per-corner texture coordinates and colours 
     ascii << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << " 6 0 0 1 0 0.5 1 255 128 0 255 \n";
   check_tetrahedron(write_temp("meshlab.ply", ascii.str()));
 
+  // Some MeshLab files hold more values on a face line than the header declares (here the colour
+  // as a list of 9 values after one declared uchar): an element is one line, the rest ignored.
+  std::ostringstream longer;
+  longer << "ply\nformat ascii 1.0\ncomment VCGLIB generated\n"
+         << "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\n"
+         << "element face 4\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+         << "property uchar red\nend_header\n";
+  for(const auto& p : tet_points) longer << p[0] << ' ' << p[1] << ' ' << p[2] << " 192 \n";
+  for(const auto& f : tet_faces)
+    longer << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << " 6 0 0 1 0 0.5 1 9 1 1 1 1 1 1 1 1 1 \n";
+  const std::string longer_path = write_temp("meshlab_longer.ply", longer.str());
+  check_tetrahedron(longer_path);
+  Mesh m;
+  CHECK(PD::IO::read_triangle_mesh(longer_path, m).number_of_ignored_values == 4u * 9u);
+  CHECK(PD::IO::read_triangle_mesh(write_temp("meshlab_exact.ply", ascii.str()), m).number_of_ignored_values == 0u);
+  // a line with fewer values than the header declares is still an error naming it
+  const std::string shorter = std::string("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n") +
+                              "property float y\nproperty float z\nelement face 1\n" +
+                              "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1\n0 0 1\n3 0 1 2\n";
+  const std::string message = read_message(write_temp("meshlab_short.ply", shorter));
+  CHECK(message.find("line 12: expected a float 'z' of vertex 3 of 4, got the end of the line") != std::string::npos);
+
   for(bool big : {false, true})
   {
     std::string binary = std::string("ply\nformat ") + (big ? "binary_big_endian" : "binary_little_endian") +

@@ -85,6 +85,10 @@ struct Mesh_file_info
   std::size_t number_of_duplicated_vertices = 0;
   /// the number of closed connected components whose orientation was reversed to point outward.
   std::size_t number_of_reversed_components = 0;
+  /// the number of values of an ASCII PLY file after the properties its header declares for an
+  /// element (an element is read from one line; MeshLab writes lists its header does not declare),
+  /// ignored.
+  std::size_t number_of_ignored_values = 0;
 };
 
 } // namespace IO
@@ -637,6 +641,7 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   IO::Mesh_file_info info;
   info.number_of_input_faces = soup.file.number_of_polygons();
   info.number_of_input_vertices = soup.file.number_of_points();
+  info.number_of_ignored_values = soup.file.ignored_values;
   check_polygon_soup(name, soup.file);
   merge_equal_points(soup);
   info.number_of_merged_vertices = soup.file.number_of_points() - soup.points.size();

@@ -75,6 +75,8 @@ struct Polygon_soup_arrays
   std::vector<std::array<double, 3>, Bounded_allocator<std::array<double, 3> > > points;
   std::vector<std::size_t, Bounded_allocator<std::size_t> > polygon_start = std::vector<std::size_t, Bounded_allocator<std::size_t> >(1, 0);
   std::vector<std::size_t, Bounded_allocator<std::size_t> > polygon_vertices;
+  // values a text format holds beyond what its header declares, skipped
+  std::size_t ignored_values = 0;
 
   void add_point(double x, double y, double z) { points.push_back({{x, y, z}}); }
   // to the polygon under construction

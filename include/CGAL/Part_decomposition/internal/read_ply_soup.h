@@ -72,7 +72,12 @@ public:
                                  "expected a list property vertex_indices of element '" + e.name + "'");
       // no property: items without data, however many the header claims
       if(e.properties.empty()) continue;
-      for(std::size_t i = 0; i < e.count; ++i) read_item(e, i, use, soup);
+      for(std::size_t i = 0; i < e.count; ++i)
+      {
+        if(m_format == ASCII) start_line();
+        read_item(e, i, use, soup);
+        if(m_format == ASCII) soup.ignored_values += skip_rest_of_line();
+      }
     }
   }
 
@@ -108,6 +113,7 @@ private:
   const char* m_value = nullptr;
   std::string_view m_token;
   std::vector<Element> m_elements;
+  bool m_in_line = false; // reading the values of an ASCII item
 
   // The next line (without its '\n'), as std::getline would give it.
   bool next_line(std::string& line)
@@ -120,10 +126,29 @@ private:
     return true;
   }
 
-  // The next whitespace-separated token, as `stream >> string` would give it.
-  bool next_token(std::string_view& token)
+  // ASCII items are read one per line: the values of an item end at its line's end, and the
+  // values after the header's properties (MeshLab writes lists the header does not declare) are
+  // skipped and counted.
+  void start_line()
   {
     while(m_pos != m_end && std::isspace(static_cast<unsigned char>(*m_pos))) ++m_pos;
+    m_in_line = true;
+  }
+
+  std::size_t skip_rest_of_line()
+  {
+    std::size_t extra = 0;
+    std::string_view token;
+    while(next_token(token)) ++extra;
+    m_in_line = false;
+    return extra;
+  }
+
+  // The next whitespace-separated token, as `stream >> string` would give it; within an ASCII
+  // item, none past the end of its line.
+  bool next_token(std::string_view& token)
+  {
+    while(m_pos != m_end && std::isspace(static_cast<unsigned char>(*m_pos)) && !(m_in_line && *m_pos == '\n')) ++m_pos;
     const char* start = m_pos;
     while(m_pos != m_end && !std::isspace(static_cast<unsigned char>(*m_pos))) ++m_pos;
     token = std::string_view(start, std::size_t(m_pos - start));
@@ -242,6 +267,7 @@ private:
   // The value last read, or what was found instead, for a message.
   std::string value_text(double v, bool was_read) const
   {
+    if(!was_read && m_format == ASCII && m_token.empty() && m_pos != m_end) return "the end of the line";
     if(!was_read && (m_format != ASCII || m_token.empty())) return "the end of the file";
     if(m_format == ASCII) return quoted_token(m_token);
     std::ostringstream out;
@@ -295,7 +321,7 @@ private:
     if(m_format == ASCII)
     {
       const bool found = next_token(m_token);
-      m_value = found ? m_token.data() : m_end;
+      m_value = found ? m_token.data() : m_pos;
       if(!found || !to_double(m_token, v)) return false;
       if(t == FLOAT64) return true;
       if(t == FLOAT32)
