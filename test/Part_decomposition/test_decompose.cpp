@@ -1365,6 +1365,50 @@ TEST_CASE("an assembly of sheets glued along a junction needs no distance field"
   REQUIRE(fin_parts.size() == 1);
   CHECK(std::count(part.begin(), part.end(), *fin_parts.begin()) == std::ptrdiff_t(num_faces(m) - first_fin_face));
 }
+TEST_CASE("a closed shape with scattered non-manifold edges is a volume, not an assembly of sheets",
+          "[decompose][pieces]")
+{
+  // A scan's defects: 40 small flaps, each glued along one edge of a face of the dumbbell (three
+  // faces at that edge). Their junctions make up more than 0.1% of the edge length, as the walls
+  // glued along lines of an assembly do, but each is one edge long, not a chain across the piece.
+  Mesh m;
+  std::vector<std::size_t> truth = test_shapes::read_shipped_shape("dumbbell", m);
+  const std::size_t n = num_faces(m);
+  test_shapes::Soup flaps;
+  std::vector<std::size_t> flap_truth;
+  double flap_edges = 0., all_edges = 0.;
+  for(auto e : edges(m)) all_edges += 2. * std::sqrt(CGAL::squared_distance(m.point(source(halfedge(e, m), m)),
+                                                                           m.point(target(halfedge(e, m), m))));
+  std::size_t i = 0;
+  for(auto f : faces(m))
+  {
+    if(i++ % (n / 40) != 0 || flap_truth.size() == 40) continue;
+    const auto h = halfedge(f, m);
+    const Point a = m.point(source(h, m)), b = m.point(target(h, m)), c = m.point(target(next(h, m), m));
+    const K::Vector_3 normal = CGAL::unit_normal(a, b, c);
+    const double l = std::sqrt(CGAL::squared_distance(a, b));
+    flaps.triangle(b, a, CGAL::midpoint(a, b) + 0.5 * l * normal);
+    flap_truth.push_back(truth[std::size_t(f)]);
+    flap_edges += 3. * l;
+  }
+  REQUIRE(flap_truth.size() == 40);
+  CHECK(flap_edges / all_edges > 0.001);
+  test_shapes::append(m, flaps.mesh());
+  truth.insert(truth.end(), flap_truth.begin(), flap_truth.end());
+  const PD::Piece_segmentation pieces = PD::segment_pieces(m);
+  REQUIRE(pieces.number_of_pieces == 1);
+  CHECK(PD::splittable_pieces(m, pieces) == std::vector<std::uint8_t>{1});
+
+  std::vector<std::size_t> part(num_faces(m));
+  PD::Stage_timings timings;
+  PD::decompose(m, CGAL::make_property_map(part), PD::parameters::stage_timings(&timings));
+  CHECK(timings.fitting > 0.);
+  const PD::Segmentation_scores s =
+    PD::evaluate_segmentation(m, CGAL::make_property_map(truth), CGAL::make_property_map(part));
+  INFO("mIoU " << s.mean_iou);
+  CHECK(s.mean_iou >= 0.9);
+}
+
 namespace {
 
 // An L of two plates, a horizontal one and a lower vertical one standing on its edge, and a tall

@@ -101,7 +101,8 @@ constexpr double bounding_probe_depth = 1.;
 constexpr double minimum_bounding_fraction = 0.5;
 // A piece whose non-manifold junctions (edges of three faces or more) make up at least this
 // fraction of the length of its edges is an assembly of sheets (walls and shelves glued along
-// lines), whose parts are its sheets; a scan's few non-manifold edges make up far less. The CAD-style
+// lines), whose parts are its sheets; only long chains of junctions count (see
+// minimum_junction_chain), so that a scan's scattered non-manifold edges do not. The CAD-style
 // set gives the same parts from 0.0003 to 0.01 (benchmark/Part_decomposition/RESULTS.md).
 constexpr double maximum_junction_fraction = 0.001;
 
@@ -242,8 +243,9 @@ inline std::vector<std::uint8_t> splittable_solid_pieces(const Face_adjacency& a
 returns, per piece of `pieces`, 1 if the volumetric stages may split it: it is not convex (an edge
 is concave by at least one degree as the piece is oriented), its area is at least twice
 `minimum_part_area` of the mesh area, and it is not an assembly of sheets: its non-manifold
-junctions (edges of three faces or more) make up less than 0.1% of the length of its edges, so that
-a few defective edges do not count but the walls and shelves of a cabinet do (the parts of an
+junctions (edges of three faces or more) in chains at least 1/20 of the piece's bounding-box diagonal
+long make up less than 0.1% of the length of its edges, so that a scan's scattered defective edges
+do not count but the walls and shelves of a cabinet, glued along lines, do (the parts of an
 assembly of sheets are its regions). The prior, the distance field, the fit and the
 over-segmentation are worth computing only if one piece is splittable (or with `use_pieces(false)`);
 `volumetric_pieces()` then tells which of them the volumetric stages decompose.
