@@ -318,19 +318,19 @@ TEST_CASE("Superquadric queries, rasterization, sampling and meshing", "[superqu
 
 namespace {
 
-// A grid of leaves of every size: the cells down to depth 2 are split, the deeper ones at random
-// (probability `p`) down to the finest resolution.
-PD::Adaptive_grid random_adaptive_grid(int finest, double p, std::mt19937& rng)
+// The grid whose cells down to depth 2 are split, and the deeper ones while `split(cell)` holds,
+// down to the finest resolution.
+template <typename Split>
+PD::Adaptive_grid grid_split_where(int finest, const Split& split)
 {
   typedef PD::Adaptive_grid::Cell Cell;
   const int D = PD::Adaptive_grid::depth_of(finest);
-  std::bernoulli_distribution split(p);
   std::vector<Cell> cells, stack(1, Cell{0, {{0, 0, 0}}});
   while(!stack.empty())
   {
     const Cell c = stack.back();
     stack.pop_back();
-    if(c.depth == D || (c.depth >= 2 && !split(rng)))
+    if(c.depth == D || (c.depth >= 2 && !split(c)))
     {
       cells.push_back(c);
       continue;
@@ -340,6 +340,13 @@ PD::Adaptive_grid random_adaptive_grid(int finest, double p, std::mt19937& rng)
                                           2 * c.position[2] + ((child >> 2) & 1)}}});
   }
   return PD::Adaptive_grid(finest, cells);
+}
+
+// A grid of leaves of every size: the cells below depth 2 split at random (probability `p`).
+PD::Adaptive_grid random_adaptive_grid(int finest, double p, std::mt19937& rng)
+{
+  std::bernoulli_distribution split(p);
+  return grid_split_where(finest, [&](const PD::Adaptive_grid::Cell&) { return split(rng); });
 }
 
 } // namespace
@@ -1223,13 +1230,7 @@ namespace {
 // other leaf lies inside or outside each box.
 PD::Adaptive_grid grid_refined_at_faces(int r, const std::vector<std::array<double, 6> >& boxes)
 {
-  typedef PD::Adaptive_grid::Cell Cell;
-  const int D = PD::Adaptive_grid::depth_of(r);
-  std::vector<Cell> cells, stack(1, Cell{0, {{0, 0, 0}}});
-  while(!stack.empty())
-  {
-    const Cell c = stack.back();
-    stack.pop_back();
+  return grid_split_where(r, [&](const PD::Adaptive_grid::Cell& c) {
     const double s = std::ldexp(1., -c.depth);
     bool mixed = false;
     for(const std::array<double, 6>& b : boxes)
@@ -1243,16 +1244,8 @@ PD::Adaptive_grid grid_refined_at_faces(int r, const std::vector<std::array<doub
       }
       mixed = mixed || (meets && !inside);
     }
-    if(c.depth == D || (c.depth >= 2 && !mixed))
-    {
-      cells.push_back(c);
-      continue;
-    }
-    for(std::uint32_t child = 0; child < 8; ++child)
-      stack.push_back(Cell{c.depth + 1, {{2 * c.position[0] + (child & 1), 2 * c.position[1] + ((child >> 1) & 1),
-                                          2 * c.position[2] + ((child >> 2) & 1)}}});
-  }
-  return PD::Adaptive_grid(r, cells);
+    return mixed;
+  });
 }
 
 // A fitting result on `grid` whose primitive k claims the leaves with centre in boxes[k] (its

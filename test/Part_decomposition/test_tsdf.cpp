@@ -47,6 +47,20 @@ const double k_inf = std::numeric_limits<double>::infinity();
 
 Grid::Cell cell(int d, std::uint32_t i, std::uint32_t j, std::uint32_t k) { return Grid::Cell{d, {{i, j, k}}}; }
 
+// The faces of `m` whose centroid lies at or below height `z`: a closed mesh with its cap cut off.
+Mesh without_cap(const Mesh& m, double z)
+{
+  test_shapes::Soup soup;
+  for(auto f : faces(m))
+  {
+    std::array<Point, 3> c;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) c[std::size_t(k++)] = m.point(v);
+    if((c[0].z() + c[1].z() + c[2].z()) / 3. <= z) soup.triangle(c[0], c[1], c[2]);
+  }
+  return soup.mesh();
+}
+
 // The 8^d cells of depth d.
 std::vector<Grid::Cell> cells_of_depth(int d)
 {
@@ -1896,15 +1910,7 @@ TEST_CASE("an open sheet has no inside, a sphere with a hole of a tenth of its a
 
   // the unit sphere without its cap z > 0.8 (a tenth of its area): a hole 0.6 wide
   const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
-  test_shapes::Soup open_soup;
-  for(auto f : faces(sphere))
-  {
-    std::array<Point, 3> c;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, sphere), sphere)) c[std::size_t(k++)] = sphere.point(v);
-    if((c[0].z() + c[1].z() + c[2].z()) / 3. <= 0.8) open_soup.triangle(c[0], c[1], c[2]);
-  }
-  const Mesh open = open_soup.mesh();
+  const Mesh open = without_cap(sphere, 0.8);
   REQUIRE(!CGAL::is_closed(open));
   // the same normalization for both, so that their leaves compare
   const PD::Normalization frame = PD::compute_normalization(sphere);
@@ -1976,15 +1982,7 @@ TEST_CASE("FLOOD_FILL leaves an open sheet outside", "[tsdf][sign]")
 TEST_CASE("the FLOOD_FILL sign of large leaves does not depend on the truncation", "[tsdf][sign]")
 {
   const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
-  test_shapes::Soup open_soup;
-  for(auto f : faces(sphere))
-  {
-    std::array<Point, 3> c;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, sphere), sphere)) c[std::size_t(k++)] = sphere.point(v);
-    if((c[0].z() + c[1].z() + c[2].z()) / 3. <= 0.8) open_soup.triangle(c[0], c[1], c[2]);
-  }
-  const Mesh open = open_soup.mesh();
+  const Mesh open = without_cap(sphere, 0.8);
   auto field = [&](double tau) {
     return PD::compute_tsdf(open, PD::parameters::combine(PD::parameters::tsdf_truncation(tau),
                                                           PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::FLOOD_FILL)));

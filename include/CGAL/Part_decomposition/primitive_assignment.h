@@ -100,11 +100,12 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_
       const Claimed_leaf_search::Result nearest = search.nearest(ca);
       near.assign(1, std::make_pair(nearest.distance, nearest.label));
       out.excluded[i] = area * margin / tau;
-      for(std::int32_t k : search.labels_near(ca))
+      const std::size_t own = search.leaf_of(ca);
+      for(std::int32_t k : search.labels_near(own))
       {
         if(k < 0) break;
         if(k == nearest.label) continue;
-        const double d = std::sqrt(search.squared_distance_to_label(k, ca));
+        const double d = std::sqrt(search.squared_distance_to_label(k, ca, own));
         if(d <= nearest.distance + margin) near.emplace_back(d, k);
       }
       std::sort(near.begin() + 1, near.end());

@@ -96,19 +96,21 @@ public:
     return out;
   }
 
-  // The labels that may be claimed within the window of the leaf holding u, nearest first along
-  // the leaves, -1 past the last. \pre the search was built with a window
-  const Labels& labels_near(const std::array<double, 3>& u) const { return m_near[m_grid->locate(u[0], u[1], u[2])]; }
+  // The leaf of the grid holding u, for the two queries below.
+  std::size_t leaf_of(const std::array<double, 3>& u) const { return m_grid->locate(u[0], u[1], u[2]); }
 
-  // The squared distance from u to the nearest centre of the leaves on the boundary of label k,
-  // +infinity if it has none or if that leaf lies outside the window around the leaf of u (a box
-  // of `window` beyond it on each side). \pre the search was built with a window
-  double squared_distance_to_label(std::int32_t k, const std::array<double, 3>& u) const
+  // The labels that may be claimed within the window of leaf `own`, nearest first along the
+  // leaves, -1 past the last. \pre the search was built with a window
+  const Labels& labels_near(std::size_t own) const { return m_near[own]; }
+
+  // The squared distance from u (in leaf `own`) to the nearest centre of the leaves on the
+  // boundary of label k, +infinity if it has none or if that leaf lies outside the window around
+  // `own` (a box of `window` beyond it on each side). \pre the search was built with a window
+  double squared_distance_to_label(std::int32_t k, const std::array<double, 3>& u, std::size_t own) const
   {
     const Adaptive_grid& g = *m_grid;
     const std::pair<std::size_t, double> nn = m_label_search[std::size_t(k)].nearest(u);
     if(nn.first == Leaf_feature_search::no_leaf) return nn.second;
-    const std::size_t own = g.locate(u[0], u[1], u[2]);
     const Adaptive_grid::Voxel &a = g.corner(own), &b = g.corner(nn.first);
     for(int x = 0; x < 3; ++x)
       if(std::int64_t(b[x]) + g.width(nn.first) <= std::int64_t(a[x]) - m_window ||

@@ -25,8 +25,8 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-// The samples of one fit (structure of arrays): positions in the normalized cube and d_M.
-// Sample points, their values of d_M and the volumes they stand for (weights of the residuals).
+// The samples of one fit (structure of arrays): positions in the normalized cube, their values of
+// d_M and the volumes they stand for (weights of the residuals).
 struct Fit_samples
 {
   std::vector<double> x, y, z, d, volume;

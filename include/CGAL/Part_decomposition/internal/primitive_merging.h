@@ -198,6 +198,21 @@ primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<
   return out;
 }
 
+// The unclaimed leaves inside the shape (Freeze and gaps between claims) and their volume.
+inline std::vector<std::size_t> neutral_leaves(const std::vector<std::int32_t>& labels,
+                                               const Truncated_signed_distance_field& tsdf, double& volume)
+{
+  std::vector<std::size_t> neutral;
+  volume = 0.;
+  for(std::size_t l = 0; l < labels.size(); ++l)
+    if(labels[l] < 0 && tsdf.values[l] <= 0.)
+    {
+      neutral.push_back(l);
+      volume += tsdf.grid.volume(l);
+    }
+  return neutral;
+}
+
 // Greedy agglomeration: the two adjacent groups of primitives whose union one superquadric
 // explains best (IoU of leaf volumes; `delta`: the voxel of the finest prior resolution) are merged while that IoU is at least `minimum_iou`; groups
 // whose common surface is more than `maximum_freeze` Freeze never merge (a boundary the prior
@@ -218,14 +233,8 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
     for(std::size_t l : fit.claimed_leaves[k]) claimed_volume[k] += tsdf.grid.volume(l);
   for(std::size_t k = 0; k < K; ++k) group_of[k] = k, members[k].assign(1, k);
   sq = fit.primitives;
-  std::vector<std::size_t> neutral; // unclaimed leaves inside the shape
   double neutral_volume = 0.;
-  for(std::size_t l = 0; l < fit.labels.size(); ++l)
-    if(fit.labels[l] < 0 && tsdf.values[l] <= 0.)
-    {
-      neutral.push_back(l);
-      neutral_volume += tsdf.grid.volume(l);
-    }
+  const std::vector<std::size_t> neutral = neutral_leaves(fit.labels, tsdf, neutral_volume);
   std::map<Pair, std::array<double, 2> > link; // surface area, Freeze area
   for(const auto& i : primitive_interfaces(fit.labels, classes, tsdf.grid))
     link[Pair(std::size_t(i.first.first), std::size_t(i.first.second))] = i.second;
