@@ -2,8 +2,8 @@
 //
 // Renders triangle meshes (OFF, PLY) with per-face colours, coloured point sets (PLY without faces,
 // drawn as voxel cubes) and images (binary PPM), several panels side by side, into one PNG. Flat
-// shading, orthographic camera, z-buffer, supersampling; no dependency but the standard library
-// (the PNG writer carries its own deflate coder), so the pictures can be regenerated anywhere.
+// shading, orthographic camera, z-buffer, supersampling. The rasterizer and PNG writer are those of
+// examples/Part_decomposition/include/part_renderer.h, which hitops draws its thumbnails with.
 //
 // usage: render_mesh -o OUT.png [options] PANEL [PANEL ...]
 //   PANEL    one or more layers joined by '+'; a layer is FILE[@option,option...]; the items
@@ -24,7 +24,11 @@
 //     --ss N            supersampling factor (default 3)
 //     --background RRGGBB   (default ffffff)
 //
-// The palette is the one of the hitops tool, so that part k and primitive k have the same colour.
+// The palette is the one of the hitops tool (part_palette.h), so that part k and primitive k have
+// the same colour.
+
+#include "part_palette.h"
+#include "part_renderer.h"
 
 #include <algorithm>
 #include <array>
@@ -44,40 +48,10 @@
 
 namespace {
 
-typedef std::array<double, 3> Vec3;
-typedef std::array<std::uint8_t, 3> Rgb;
+using namespace Part_decomposition_tools::render;
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 normalized(const Vec3& a)
-{
-  const double n = std::sqrt(dot(a, a));
-  return n > 0 ? Vec3{{a[0] / n, a[1] / n, a[2] / n}} : Vec3{{0, 0, 0}};
-}
-
-// The colour of part k in the hitops tool (golden-ratio hues, alternating value and saturation).
-Rgb palette(std::size_t k)
-{
-  const double h = std::fmod(0.13 + 0.618033988749895 * double(k), 1.) * 6.;
-  const double s = (k % 3 == 2) ? 0.55 : 0.8, v = (k % 2) ? 0.8 : 0.95;
-  const int i = int(h);
-  const double f = h - i, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  double r, g, b;
-  switch(i % 6)
-  {
-    case 0: r = v; g = t; b = p; break;
-    case 1: r = q; g = v; b = p; break;
-    case 2: r = p; g = v; b = t; break;
-    case 3: r = p; g = q; b = v; break;
-    case 4: r = t; g = p; b = v; break;
-    default: r = v; g = p; b = q; break;
-  }
-  return {{std::uint8_t(std::lround(255 * r)), std::uint8_t(std::lround(255 * g)), std::uint8_t(std::lround(255 * b))}};
-}
+// The colour of part k, as in hitops.
+Rgb palette(std::size_t k) { return Part_decomposition_tools::part_rgb(k); }
 
 Rgb parse_hex(const std::string& s)
 {
@@ -96,12 +70,6 @@ struct Mesh
   std::vector<Rgb> face_colors;   // empty, or one per triangle
   std::vector<Rgb> point_colors;  // empty, or one per point (vertex colours, or point-set colours)
   std::vector<std::size_t> source_face; // the polygon of the file each triangle comes from
-};
-
-struct Image
-{
-  int width = 0, height = 0;
-  std::vector<Rgb> pixels;
 };
 
 std::string read_token(std::istream& in)
@@ -354,12 +322,6 @@ std::string lower_extension(const std::string& file)
 // ------------------------------------------------------------------------------------------
 // Scene
 
-struct Triangle
-{
-  std::array<Vec3, 3> p;
-  Rgb color;
-};
-
 struct Layer
 {
   std::vector<Triangle> triangles;
@@ -508,392 +470,14 @@ Layer make_layer(const std::string& spec)
 }
 
 // ------------------------------------------------------------------------------------------
-// Camera and rasterization
+// Framing and drawing (the rasterizer itself is in part_renderer.h)
 
-struct Camera
-{
-  Vec3 right, up, forward; // forward points from the camera into the scene
-  double cx = 0, cy = 0, scale = 1; // image centre of the framed box (camera coordinates), pixels per unit
-  double depth_span = 1;
-};
-
-Vec3 axis_vector(const std::string& s)
-{
-  const double sign = s[0] == '-' ? -1. : 1.;
-  const char a = s.back();
-  Vec3 v{{0, 0, 0}};
-  v[std::size_t(a == 'x' ? 0 : a == 'y' ? 1 : 2)] = sign;
-  return v;
-}
-
-// Camera axes from azimuth/elevation around the up axis.
-void orient(Camera& cam, const Vec3& world_up, double azimuth_deg, double elevation_deg)
-{
-  // a reference horizontal frame: e1, e2 orthogonal to up
-  Vec3 e1 = std::abs(world_up[2]) < 0.9 ? Vec3{{0, 0, 1}} : Vec3{{1, 0, 0}};
-  e1 = normalized(sub(e1, Vec3{{world_up[0] * dot(e1, world_up), world_up[1] * dot(e1, world_up), world_up[2] * dot(e1, world_up)}}));
-  const Vec3 e2 = cross(world_up, e1);
-  const double az = azimuth_deg * M_PI / 180., el = elevation_deg * M_PI / 180.;
-  // direction from the scene to the camera
-  Vec3 to_cam;
-  for(int i = 0; i < 3; ++i)
-    to_cam[std::size_t(i)] = std::cos(el) * (std::cos(az) * e1[std::size_t(i)] + std::sin(az) * e2[std::size_t(i)]) +
-                             std::sin(el) * world_up[std::size_t(i)];
-  cam.forward = {{-to_cam[0], -to_cam[1], -to_cam[2]}};
-  cam.right = normalized(cross(cam.forward, world_up));
-  cam.up = cross(cam.right, cam.forward);
-}
-
-struct Bounds
-{
-  double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                  std::numeric_limits<double>::infinity()};
-  double hi[3] = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                  -std::numeric_limits<double>::infinity()};
-  void add(double x, double y, double z)
-  {
-    const double v[3] = {x, y, z};
-    for(int i = 0; i < 3; ++i)
-    {
-      lo[i] = std::min(lo[i], v[i]);
-      hi[i] = std::max(hi[i], v[i]);
-    }
-  }
-  bool empty() const { return !(lo[0] <= hi[0]); }
-};
-
-// The bounds of a panel in camera coordinates (right, up, forward).
 Bounds camera_bounds(const Panel& panel, const Camera& cam)
 {
   Bounds b;
-  for(const Layer& l : panel.layers)
-    for(const Triangle& t : l.triangles)
-      for(const Vec3& p : t.p) b.add(dot(p, cam.right), dot(p, cam.up), dot(p, cam.forward));
+  for(const Layer& l : panel.layers) add_bounds(b, l.triangles, cam);
   return b;
 }
-
-void frame(Camera& cam, const Bounds& b, int width, int height, double zoom)
-{
-  cam.cx = (b.lo[0] + b.hi[0]) / 2;
-  cam.cy = (b.lo[1] + b.hi[1]) / 2;
-  const double w = std::max(b.hi[0] - b.lo[0], 1e-12), h = std::max(b.hi[1] - b.lo[1], 1e-12);
-  cam.scale = zoom * 0.92 * std::min(width / w, height / h);
-  cam.depth_span = std::max(b.hi[2] - b.lo[2], 1e-12);
-}
-
-struct Canvas
-{
-  int width, height;
-  std::vector<double> depth;
-  std::vector<Vec3> color; // linear [0,1]
-  std::vector<std::uint8_t> covered; // drawn by an opaque or a translucent triangle
-  Canvas(int w, int h, const Vec3& background)
-    : width(w), height(h), depth(std::size_t(w) * std::size_t(h), std::numeric_limits<double>::infinity()),
-      color(std::size_t(w) * std::size_t(h), background), covered(std::size_t(w) * std::size_t(h), 0)
-  {}
-};
-
-Vec3 shade(const Triangle& t, const Camera& cam)
-{
-  Vec3 n = normalized(cross(sub(t.p[1], t.p[0]), sub(t.p[2], t.p[0])));
-  // two-sided: open meshes and inward components are lit like their outside
-  if(dot(n, cam.forward) > 0) n = {{-n[0], -n[1], -n[2]}};
-  // a key light from the upper left of the camera and a weaker fill light from the right
-  const Vec3 key = normalized(Vec3{{-0.45 * cam.right[0] + 0.6 * cam.up[0] - cam.forward[0],
-                                    -0.45 * cam.right[1] + 0.6 * cam.up[1] - cam.forward[1],
-                                    -0.45 * cam.right[2] + 0.6 * cam.up[2] - cam.forward[2]}});
-  const Vec3 fill = normalized(Vec3{{0.8 * cam.right[0] - 0.2 * cam.up[0] - cam.forward[0],
-                                     0.8 * cam.right[1] - 0.2 * cam.up[1] - cam.forward[1],
-                                     0.8 * cam.right[2] - 0.2 * cam.up[2] - cam.forward[2]}});
-  const double light = 0.32 + 0.58 * std::max(0., dot(n, key)) + 0.18 * std::max(0., dot(n, fill));
-  Vec3 c;
-  for(int i = 0; i < 3; ++i) c[std::size_t(i)] = std::min(1., light * t.color[std::size_t(i)] / 255.);
-  return c;
-}
-
-void rasterize(Canvas& cv, const Triangle& t, const Camera& cam, int ox, int oy, double alpha)
-{
-  double x[3], y[3], z[3];
-  for(int k = 0; k < 3; ++k)
-  {
-    const Vec3& p = t.p[std::size_t(k)];
-    x[k] = ox + (dot(p, cam.right) - cam.cx) * cam.scale;
-    y[k] = oy - (dot(p, cam.up) - cam.cy) * cam.scale; // image rows grow downwards
-    z[k] = dot(p, cam.forward);
-  }
-  const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-  if(std::abs(area) < 1e-12) return;
-  const Vec3 c = shade(t, cam);
-  const int x0 = std::max(0, int(std::floor(std::min({x[0], x[1], x[2]})))),
-            x1 = std::min(cv.width - 1, int(std::ceil(std::max({x[0], x[1], x[2]})))),
-            y0 = std::max(0, int(std::floor(std::min({y[0], y[1], y[2]})))),
-            y1 = std::min(cv.height - 1, int(std::ceil(std::max({y[0], y[1], y[2]}))));
-  for(int py = y0; py <= y1; ++py)
-    for(int px = x0; px <= x1; ++px)
-    {
-      const double sx = px + 0.5, sy = py + 0.5;
-      const double w0 = ((x[1] - sx) * (y[2] - sy) - (x[2] - sx) * (y[1] - sy)) / area;
-      const double w1 = ((x[2] - sx) * (y[0] - sy) - (x[0] - sx) * (y[2] - sy)) / area;
-      const double w2 = 1. - w0 - w1;
-      if(w0 < 0 || w1 < 0 || w2 < 0) continue;
-      const double d = w0 * z[0] + w1 * z[1] + w2 * z[2];
-      const std::size_t i = std::size_t(py) * std::size_t(cv.width) + std::size_t(px);
-      if(d >= cv.depth[i]) continue;
-      cv.covered[i] = 1;
-      if(alpha >= 1.)
-      {
-        cv.depth[i] = d;
-        cv.color[i] = c;
-      }
-      else
-        for(int ch = 0; ch < 3; ++ch)
-          cv.color[i][std::size_t(ch)] = alpha * c[std::size_t(ch)] + (1 - alpha) * cv.color[i][std::size_t(ch)];
-    }
-}
-
-// Darkens the pixels at depth discontinuities: silhouettes and occluding contours.
-void outline(Canvas& cv, const std::vector<std::uint8_t>& mask, double threshold)
-{
-  std::vector<Vec3> out = cv.color;
-  for(int y = 0; y < cv.height; ++y)
-    for(int x = 0; x < cv.width; ++x)
-    {
-      const std::size_t i = std::size_t(y) * std::size_t(cv.width) + std::size_t(x);
-      if(!mask[i]) continue;
-      const double d = cv.depth[i];
-      bool edge = false;
-      for(int k = 0; k < 4 && !edge; ++k)
-      {
-        const int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
-        if(nx < 0 || ny < 0 || nx >= cv.width || ny >= cv.height) continue;
-        const double e = cv.depth[std::size_t(ny) * std::size_t(cv.width) + std::size_t(nx)];
-        edge = !std::isfinite(e) ? true : e - d > threshold;
-      }
-      if(edge)
-        for(double& c : out[i]) c *= 0.35;
-    }
-  cv.color.swap(out);
-}
-
-// ------------------------------------------------------------------------------------------
-// PNG output: zlib stream of fixed-Huffman deflate blocks with LZ77 matches.
-
-class Bit_writer
-{
-public:
-  std::vector<std::uint8_t> bytes;
-  void bits(std::uint32_t value, int count) // LSB first
-  {
-    for(int i = 0; i < count; ++i)
-    {
-      m_acc |= ((value >> i) & 1u) << m_n;
-      if(++m_n == 8) flush_byte();
-    }
-  }
-  void huffman(std::uint32_t code, int length) // MSB of the code first
-  {
-    for(int i = length - 1; i >= 0; --i)
-    {
-      m_acc |= ((code >> i) & 1u) << m_n;
-      if(++m_n == 8) flush_byte();
-    }
-  }
-  void align()
-  {
-    if(m_n > 0) flush_byte();
-  }
-
-private:
-  void flush_byte()
-  {
-    bytes.push_back(std::uint8_t(m_acc));
-    m_acc = 0;
-    m_n = 0;
-  }
-  std::uint32_t m_acc = 0;
-  int m_n = 0;
-};
-
-void literal_code(Bit_writer& w, int sym)
-{
-  if(sym < 144) w.huffman(std::uint32_t(0x30 + sym), 8);
-  else if(sym < 256) w.huffman(std::uint32_t(0x190 + sym - 144), 9);
-  else if(sym < 280) w.huffman(std::uint32_t(sym - 256), 7);
-  else w.huffman(std::uint32_t(0xC0 + sym - 280), 8);
-}
-
-void write_match(Bit_writer& w, int length, int distance)
-{
-  static const int len_base[29] = {3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31,
-                                   35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
-  static const int len_extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-  static const int dist_base[30] = {1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97, 129, 193, 257, 385, 513, 769,
-                                    1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-  static const int dist_extra[30] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
-  int l = 28;
-  while(len_base[l] > length) --l;
-  literal_code(w, 257 + l);
-  w.bits(std::uint32_t(length - len_base[l]), len_extra[l]);
-  int d = 29;
-  while(dist_base[d] > distance) --d;
-  w.huffman(std::uint32_t(d), 5);
-  w.bits(std::uint32_t(distance - dist_base[d]), dist_extra[d]);
-}
-
-std::vector<std::uint8_t> zlib_compress(const std::vector<std::uint8_t>& data)
-{
-  Bit_writer w;
-  w.bits(0x78, 8);
-  w.bits(0x01, 8);
-  const std::size_t n = data.size();
-  const int hash_bits = 15, window = 32768, max_chain = 48;
-  std::vector<int> head(std::size_t(1) << hash_bits, -1), prev(n, -1);
-  auto hash = [&](std::size_t i) {
-    return ((std::uint32_t(data[i]) << 10) ^ (std::uint32_t(data[i + 1]) << 5) ^ data[i + 2]) & ((1u << hash_bits) - 1);
-  };
-  auto insert = [&](std::size_t i) {
-    if(i + 2 >= n) return;
-    const std::uint32_t h = hash(i);
-    prev[i] = head[h];
-    head[h] = int(i);
-  };
-  // one final block with fixed codes
-  w.bits(1, 1);
-  w.bits(1, 2);
-  std::size_t i = 0;
-  while(i < n)
-  {
-    int best_len = 0, best_dist = 0;
-    if(i + 2 < n)
-    {
-      int cand = head[hash(i)];
-      int chain = 0;
-      const std::size_t max_len = std::min<std::size_t>(258, n - i);
-      while(cand >= 0 && int(i) - cand <= window - 1 && chain++ < max_chain)
-      {
-        std::size_t l = 0;
-        while(l < max_len && data[std::size_t(cand) + l] == data[i + l]) ++l;
-        if(int(l) > best_len)
-        {
-          best_len = int(l);
-          best_dist = int(i) - cand;
-          if(l == max_len) break;
-        }
-        cand = prev[std::size_t(cand)];
-      }
-    }
-    if(best_len >= 3)
-    {
-      write_match(w, best_len, best_dist);
-      for(int k = 0; k < best_len; ++k) insert(i + std::size_t(k));
-      i += std::size_t(best_len);
-    }
-    else
-    {
-      literal_code(w, data[i]);
-      insert(i);
-      ++i;
-    }
-  }
-  literal_code(w, 256);
-  w.align();
-  std::uint32_t a = 1, b = 0;
-  for(std::uint8_t c : data)
-  {
-    a = (a + c) % 65521;
-    b = (b + a) % 65521;
-  }
-  const std::uint32_t adler = (b << 16) | a;
-  for(int s = 24; s >= 0; s -= 8) w.bytes.push_back(std::uint8_t(adler >> s));
-  return w.bytes;
-}
-
-std::uint32_t crc32(const std::uint8_t* p, std::size_t n, std::uint32_t crc = 0)
-{
-  static std::uint32_t table[256];
-  static bool init = false;
-  if(!init)
-  {
-    for(std::uint32_t k = 0; k < 256; ++k)
-    {
-      std::uint32_t c = k;
-      for(int j = 0; j < 8; ++j) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      table[k] = c;
-    }
-    init = true;
-  }
-  crc = ~crc;
-  for(std::size_t i = 0; i < n; ++i) crc = table[(crc ^ p[i]) & 0xFF] ^ (crc >> 8);
-  return ~crc;
-}
-
-void write_chunk(std::ofstream& out, const char* type, const std::vector<std::uint8_t>& payload)
-{
-  const std::uint32_t len = std::uint32_t(payload.size());
-  const std::uint8_t l[4] = {std::uint8_t(len >> 24), std::uint8_t(len >> 16), std::uint8_t(len >> 8), std::uint8_t(len)};
-  out.write(reinterpret_cast<const char*>(l), 4);
-  std::vector<std::uint8_t> body(type, type + 4);
-  body.insert(body.end(), payload.begin(), payload.end());
-  out.write(reinterpret_cast<const char*>(body.data()), std::streamsize(body.size()));
-  const std::uint32_t c = crc32(body.data(), body.size());
-  const std::uint8_t cb[4] = {std::uint8_t(c >> 24), std::uint8_t(c >> 16), std::uint8_t(c >> 8), std::uint8_t(c)};
-  out.write(reinterpret_cast<const char*>(cb), 4);
-}
-
-void write_png(const std::string& file, int width, int height, const std::vector<Rgb>& pixels)
-{
-  // Each row with the filter (none, sub, up, paeth) of smallest absolute sum, the usual heuristic.
-  std::vector<std::uint8_t> raw;
-  const std::size_t stride = std::size_t(width) * 3;
-  std::vector<std::uint8_t> zero(stride, 0), candidate(stride);
-  for(int y = 0; y < height; ++y)
-  {
-    const std::uint8_t* cur = &pixels[std::size_t(y) * std::size_t(width)][0];
-    const std::uint8_t* up = y > 0 ? &pixels[std::size_t(y - 1) * std::size_t(width)][0] : zero.data();
-    int best = 0;
-    long best_sum = std::numeric_limits<long>::max();
-    std::vector<std::uint8_t> best_row;
-    for(int f = 0; f < 4; ++f)
-    {
-      long sum = 0;
-      for(std::size_t i = 0; i < stride; ++i)
-      {
-        const int a = i >= 3 ? cur[i - 3] : 0, b = up[i], c = i >= 3 ? up[i - 3] : 0;
-        int pred = 0;
-        if(f == 1) pred = a;
-        else if(f == 2) pred = b;
-        else if(f == 3)
-        {
-          const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-          pred = (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
-        }
-        candidate[i] = std::uint8_t(cur[i] - pred);
-        sum += std::min<int>(candidate[i], 256 - candidate[i]);
-      }
-      if(sum < best_sum)
-      {
-        best_sum = sum;
-        best = f;
-        best_row = candidate;
-      }
-    }
-    raw.push_back(std::uint8_t(best == 3 ? 4 : best));
-    raw.insert(raw.end(), best_row.begin(), best_row.end());
-  }
-  std::ofstream out(file, std::ios::binary);
-  if(!out) throw std::runtime_error("cannot write " + file);
-  const std::uint8_t signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-  out.write(reinterpret_cast<const char*>(signature), 8);
-  std::vector<std::uint8_t> ihdr;
-  for(std::uint32_t v : {std::uint32_t(width), std::uint32_t(height)})
-    for(int s = 24; s >= 0; s -= 8) ihdr.push_back(std::uint8_t(v >> s));
-  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0}); // 8-bit RGB, deflate, adaptive filters, no interlace
-  write_chunk(out, "IHDR", ihdr);
-  write_chunk(out, "IDAT", zlib_compress(raw));
-  write_chunk(out, "IEND", {});
-  if(!out) throw std::runtime_error("cannot write " + file);
-}
-
 // ------------------------------------------------------------------------------------------
 
 struct Options
@@ -1039,36 +623,7 @@ void draw_meshes(Canvas& cv, const Panel& panel, Camera pc, const Bounds& frame_
   for(const Layer& l : panel.layers)
     if(!l.is_image && l.alpha < 1.)
       for(const Triangle& t : l.triangles) rasterize(local, t, pc, pw / 2, ph / 2, l.alpha);
-  std::vector<std::uint8_t> local_mask(local.depth.size(), 0);
-  for(std::size_t i = 0; i < local.depth.size(); ++i) local_mask[i] = std::isfinite(local.depth[i]);
-  outline(local, local_mask, 0.04 * pc.depth_span);
-  for(int y = 0; y < ph; ++y)
-    for(int x = 0; x < pw; ++x)
-    {
-      const std::size_t li = std::size_t(y) * std::size_t(pw) + std::size_t(x);
-      if(local.covered[li]) cv.color[std::size_t(py + y) * std::size_t(cv.width) + std::size_t(px + x)] = local.color[li];
-    }
-}
-
-// Averages the s x s blocks of the canvas.
-std::vector<Rgb> downsample(const Canvas& cv, int s, int W, int H)
-{
-  std::vector<Rgb> pixels(std::size_t(W) * std::size_t(H));
-  for(int y = 0; y < H; ++y)
-    for(int x = 0; x < W; ++x)
-    {
-      Vec3 acc{{0, 0, 0}};
-      for(int dy = 0; dy < s; ++dy)
-        for(int dx = 0; dx < s; ++dx)
-        {
-          const Vec3& c = cv.color[std::size_t(y * s + dy) * std::size_t(cv.width) + std::size_t(x * s + dx)];
-          for(int ch = 0; ch < 3; ++ch) acc[std::size_t(ch)] += c[std::size_t(ch)];
-        }
-      Rgb& p = pixels[std::size_t(y) * std::size_t(W) + std::size_t(x)];
-      for(int ch = 0; ch < 3; ++ch)
-        p[std::size_t(ch)] = std::uint8_t(std::lround(std::min(1., acc[std::size_t(ch)] / (s * s)) * 255.));
-    }
-  return pixels;
+  outline_and_copy(cv, local, pc, px, py);
 }
 
 } // namespace
@@ -1103,7 +658,11 @@ int main(int argc, char** argv)
       draw_meshes(cv, panel, pc, o.shared_frame && !panel.own_view ? shared : own, px, py, pw, ph, bg);
     }
     const int W = width / s, H = height / s;
-    write_png(o.output, W, H, downsample(cv, s, W, H));
+    Image image;
+    image.width = W;
+    image.height = H;
+    image.pixels = downsample(cv, s, W, H);
+    write_png(o.output, image);
     std::cout << "wrote " << o.output << " (" << W << "x" << H << ", " << n << " panels)" << std::endl;
   }
   catch(const std::exception& e)
