@@ -1510,3 +1510,65 @@ TEST_CASE("above the default parts two large parts of one piece wait with the co
     CHECK((c.x() > box.xmin() && c.x() < box.xmax() && c.y() > box.ymin() && c.y() < box.ymax()));
   }
 }
+
+namespace {
+
+// A keyboard: a base plate, a lid standing on its back edge, `keys` small congruent boxes on the
+// plate in rows of 8 (the last one wider) and a crumb on the lid. Returns per face its
+// box: 0 plate, 1 lid, 2 keys, 3 crumb.
+Mesh make_keyboard(std::size_t keys, std::vector<std::size_t>& box)
+{
+  Mesh m;
+  auto add = [&](const Point& a, const Point& b, int subdivisions, std::size_t kind) {
+    test_shapes::append(m, test_shapes::make_box(a, b, subdivisions));
+    box.resize(num_faces(m), kind);
+  };
+  add(Point(0, 0, 0), Point(4, 2, 0.1), 4, 0);
+  add(Point(0, 2, 0), Point(4, 2.1, 2), 4, 1);
+  for(std::size_t k = 0; k < keys; ++k)
+  {
+    const double x = 0.25 + 0.45 * double(k % 8), y = 0.25 + 0.45 * double(k / 8);
+    add(Point(x, y, 0.1), Point(x + (k + 1 == keys ? 0.3 : 0.2), y + 0.2, 0.15), 1, 2);
+  }
+  add(Point(2, 2.1, 1), Point(2.02, 2.12, 1.02), 1, 3);
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("keys laid out on a plate and a crumb join the piece they sit on; the hierarchy keeps them apart",
+          "[hierarchy][pieces][decompose]")
+{
+  std::vector<std::size_t> box;
+  const Mesh m = make_keyboard(25, box);
+  std::vector<std::size_t> part(num_faces(m));
+  PD::Part_hierarchy<K> h;
+  CHECK(PD::decompose(m, CGAL::make_property_map(part), PDP::part_hierarchy(&h)) == 2);
+  // the plate with its keys, the lid with its crumb
+  for(std::size_t i = 0; i < part.size(); ++i)
+    if((part[i] == part[0]) != (box[i] == 0 || box[i] == 2)) FAIL("face " << i << " of box kind " << box[i]);
+  // every key and the crumb are leaves of their own, joined to their group by attached merges
+  CHECK(h.number_of_leaves() >= 28);
+  const std::size_t attached = std::size_t(std::count_if(
+    h.nodes.begin(), h.nodes.end(), [](const PD::Part_hierarchy_node<K>& n) { return n.kind == PD::Merge_kind::ATTACHED; }));
+  CHECK(attached == 26);
+  // a level of the hierarchy reaches the keys: each key a part of its own
+  const std::vector<std::size_t> fine = h.labels(h.default_number_of_parts + 26);
+  std::set<std::size_t> key_parts;
+  for(std::size_t i = 0; i < fine.size(); ++i)
+    if(box[i] == 2) key_parts.insert(fine[i]);
+  CHECK(key_parts.size() == 25);
+}
+
+TEST_CASE("a few congruent pieces on a plate are not a pattern: they stay parts", "[hierarchy][pieces][decompose]")
+{
+  std::vector<std::size_t> box;
+  const Mesh m = make_keyboard(4, box);
+  std::vector<std::size_t> part(num_faces(m));
+  // plate, lid with its crumb, and the four keys
+  CHECK(PD::decompose(m, CGAL::make_property_map(part)) == 6);
+  std::set<std::size_t> key_parts;
+  for(std::size_t i = 0; i < part.size(); ++i)
+    if(box[i] == 2) key_parts.insert(part[i]);
+  CHECK(key_parts.size() == 4);
+}

@@ -13,6 +13,7 @@
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/part_merging.h>
+#include <CGAL/Part_decomposition/internal/piece_grouping.h>
 #include <CGAL/Part_decomposition/internal/piece_regions.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
 
@@ -105,6 +106,37 @@ inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& 
   return result;
 }
 
+// Groups crumbs and repeated pieces with the piece they sit on (`grouped_pieces()`): `leaf_piece`
+// (per leaf its piece, `none` if several) becomes the piece of the group's root, and `attached`
+// flags the leaves of grouped pieces that are not roots. `touching`: the touching leaves.
+template <typename Corner>
+void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, const std::vector<std::size_t>& piece,
+                           const std::vector<std::pair<std::size_t, std::size_t> >& touching, const Eigen::Vector3d& origin,
+                           std::vector<std::size_t>& leaf_piece, std::vector<std::uint8_t>& attached)
+{
+  if(touching.empty()) return;
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)(); // a leaf of several pieces
+  const std::size_t number_of_pieces = *std::max_element(piece.begin(), piece.end()) + 1;
+  std::vector<std::size_t> faces(number_of_pieces, 0);
+  for(std::size_t i = 0; i < number_of_faces; ++i) ++faces[piece[i]];
+  std::vector<std::pair<std::size_t, std::size_t> > contacts;
+  for(const auto& e : touching)
+  {
+    const std::size_t a = leaf_piece[e.first], b = leaf_piece[e.second];
+    if(a != none && b != none && a != b) contacts.emplace_back((std::min)(a, b), (std::max)(a, b));
+  }
+  std::sort(contacts.begin(), contacts.end());
+  contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+  const std::vector<std::size_t> root =
+    grouped_pieces(leaf_boxes(number_of_faces, corner, piece, number_of_pieces, origin), faces, contacts);
+  for(std::size_t l = 0; l < leaf_piece.size(); ++l)
+    if(leaf_piece[l] != none && root[leaf_piece[l]] != leaf_piece[l])
+    {
+      leaf_piece[l] = root[leaf_piece[l]];
+      attached[l] = 1;
+    }
+}
+
 // The hierarchy of the leaves of a mesh given by its face graph `adj` and the corners of its faces
 // (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
 // whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face;
@@ -146,8 +178,14 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
   const std::vector<std::size_t> leaf_subgroup = subgroup.empty() ? std::vector<std::size_t>(number_of_leaves, none)
                                                                   : label_of_leaves(subgroup, leaf, number_of_leaves, none);
   const std::vector<std::size_t> leaf_piece = label_of_leaves(piece, leaf, number_of_leaves, none);
+  std::vector<std::pair<std::size_t, std::size_t> > touching;
+  if(std::any_of(leaf_piece.begin(), leaf_piece.end(), [&](std::size_t q) { return q != leaf_piece[0]; }))
+    touching = touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance);
+  std::vector<std::size_t> host_piece = leaf_piece;
+  std::vector<std::uint8_t> attached(number_of_leaves, 0);
+  group_attached_leaves(nf, corner, piece, touching, origin, host_piece, attached);
   Part_agglomeration agglomeration(leaf_boxes(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
-                                   leaf_piece, p, total_volume);
+                                   host_piece, attached, p, total_volume);
 
   // links: leaves sharing an edge (with the length and concavity of their boundary), and leaves
   // of different pieces whose surfaces touch
@@ -174,11 +212,10 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     agglomeration.link(shared[e].first.first, shared[e].first.second, false, sum[0], sum[1]);
     e = f;
   }
-  if(std::any_of(leaf_piece.begin(), leaf_piece.end(), [&](std::size_t q) { return q != leaf_piece[0]; }))
-  {
-    for(const auto& e : touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance))
+  // a grouped piece touches its group alone: screws do not glue a leg to the panel they hold
+  for(const auto& e : touching)
+    if(host_piece[e.first] == host_piece[e.second] || !(attached[e.first] || attached[e.second]))
       agglomeration.link(e.first, e.second, true);
-  }
   const std::size_t number_of_nodes = agglomeration.run();
 
   // the nodes
@@ -229,9 +266,18 @@ tree whose leaves are these parts and whose root is the whole mesh.
 The parts are merged two at a time, greedily. Two parts may merge if they share an edge, if they
 belong to different pieces (edge-connected components) whose surfaces come within 1% of the
 bounding box diagonal of each other (a contact), or, once no such pair is left, if they are
-neighbours in the Hilbert order of their centres (parts in separate places). The pairs are taken
-by kind first, parts of one piece before parts in contact before the others, so that the pieces
-of the mesh are a level of the tree, and within a kind by increasing cost
+neighbours in the Hilbert order of their centres (parts in separate places). Before the parts of a
+piece merge, the pieces a person names with the piece they sit on join it (`Merge_kind::ATTACHED`):
+a crumb, a piece of at most 0.02% of the surface's area touching a piece at least 10 times as
+large (the smallest such piece), and a pattern, at least 20 congruent pieces (the same number of
+faces, areas and box extents within 5%), each at most 0.5% of the surface, touching one piece at
+least 10 times as large, with the pieces of at most twice their size that touch that piece too
+(the keys of a keyboard, of several widths). A grouped piece keeps only its contacts within its
+group. These merges are always below the default parts, so the crumbs and the members of a
+pattern are one part with their host by default and separate nodes of the tree. The other pairs
+are taken by kind first, parts of one piece before parts in contact before the others, so that
+the pieces of the mesh, with their groups, are a level of the tree, and within a kind by
+increasing cost
 \f[ c(a, b) = \frac{\max(0,\ V(a \cup b) - V(a) - V(b))}{V(M)} + 0.05\,\frac{C(a, b)}{L(a, b)}, \f]
 where \f$V\f$ is the volume of the box, on the principal axes of the area moments of a part's
 surface, that holds the part (its box-like superquadric), with a thickness of at least 1% of the

@@ -245,6 +245,7 @@ enum class Merge_kind
   NONE,           ///< a leaf: no merge
   SAME_PRIMITIVE, ///< two pieces of one part of the default decomposition explained by one fitted primitive
   SAME_PART,      ///< two pieces of one part of the default decomposition
+  ATTACHED,       ///< a crumb or a repeated piece and the piece it is grouped with (see `build_part_hierarchy()`)
   SAME_PIECE,   ///< two parts of one piece of the mesh that share an edge
   CONTACT,      ///< two parts of different pieces whose surfaces touch
   NO_CONTACT    ///< two parts that do not touch (the parts of a mesh in separate places)
@@ -256,6 +257,7 @@ namespace internal {
 // that do not touch. The hierarchy's cut and its merge order share this rule.
 inline bool merge_beyond_default_parts(Merge_kind kind, double cost, double maximum_cost)
 {
+  if(kind == Merge_kind::ATTACHED) return false; // grouped pieces are one default part
   return cost >= maximum_cost || kind == Merge_kind::NO_CONTACT;
 }
 

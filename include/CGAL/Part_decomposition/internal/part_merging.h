@@ -275,17 +275,20 @@ touching_leaves(std::size_t number_of_faces, const Corner& corner, const std::ve
 }
 
 // Greedy agglomeration of the leaves into a binary tree, by kind of merge (same subgroup, same
-// group, same piece, contact, none) then by cost. `subgroup` (nested in `group`), `group` and
-// `piece` are per leaf (`none`: none); `link()` joins the leaves that share an edge or touch.
+// group, attached, same piece, contact, none) then by cost. `subgroup` (nested in `group`), `group`
+// and `piece` are per leaf (`none`: none); `attached` flags the leaves of pieces grouped with a
+// larger piece, whose `piece` is that of the larger piece. `link()` joins the leaves that share an
+// edge or touch.
 class Part_agglomeration
 {
 public:
   static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
 
   Part_agglomeration(std::vector<Part_box> boxes, std::vector<std::size_t> subgroup, std::vector<std::size_t> group,
-                     std::vector<std::size_t> piece, const Merge_parameters& p, double total_volume)
-    : m_box(std::move(boxes)), m_subgroup(std::move(subgroup)), m_group(std::move(group)), m_piece(std::move(piece)), m_p(p),
-      m_volume((std::max)(total_volume, std::numeric_limits<double>::min()))
+                     std::vector<std::size_t> piece, std::vector<std::uint8_t> attached, const Merge_parameters& p,
+                     double total_volume)
+    : m_box(std::move(boxes)), m_subgroup(std::move(subgroup)), m_group(std::move(group)), m_piece(std::move(piece)),
+      m_attached(std::move(attached)), m_p(p), m_volume((std::max)(total_volume, std::numeric_limits<double>::min()))
   {
     const std::size_t n = m_box.size();
     m_links.resize(n);
@@ -381,7 +384,8 @@ private:
   {
     if(m_subgroup[a] != none && m_subgroup[a] == m_subgroup[b]) return Merge_kind::SAME_PRIMITIVE;
     if(m_group[a] != none && m_group[a] == m_group[b]) return Merge_kind::SAME_PART;
-    if(m_piece[a] != none && m_piece[a] == m_piece[b]) return Merge_kind::SAME_PIECE;
+    if(m_piece[a] != none && m_piece[a] == m_piece[b])
+      return m_attached[a] || m_attached[b] ? Merge_kind::ATTACHED : Merge_kind::SAME_PIECE;
     return contact ? Merge_kind::CONTACT : Merge_kind::NO_CONTACT;
   }
 
@@ -439,7 +443,8 @@ private:
   // linked: those of one subgroup, of one group, of one piece, or all (`NO_CONTACT`).
   void complete(Merge_kind phase)
   {
-    if(phase == Merge_kind::CONTACT) return; // contacts are found, never completed
+    // contacts are found, never completed; attached pieces are linked to their host by contacts
+    if(phase == Merge_kind::CONTACT || phase == Merge_kind::ATTACHED) return;
     std::vector<std::pair<std::size_t, std::size_t> > members; // (set, node)
     for(std::size_t n = 0; n < m_box.size(); ++n)
     {
@@ -498,6 +503,7 @@ private:
     m_subgroup.push_back(m_subgroup[e.a] == m_subgroup[e.b] ? m_subgroup[e.a] : none);
     m_group.push_back(m_group[e.a] == m_group[e.b] ? m_group[e.a] : none);
     m_piece.push_back(m_piece[e.a] == m_piece[e.b] ? m_piece[e.a] : none);
+    m_attached.push_back(m_attached[e.a] && m_attached[e.b]);
     m_children.push_back({{e.a, e.b}});
     m_kind.push_back(e.kind);
     // above the default parts a merge costs at least their maximum, whatever its place in the order
@@ -528,6 +534,7 @@ private:
 
   std::vector<Part_box> m_box;
   std::vector<std::size_t> m_subgroup, m_group, m_piece;
+  std::vector<std::uint8_t> m_attached;
   Merge_parameters m_p;
   double m_volume, m_area; // of the bounding box of the mesh, of its surface
   std::vector<std::vector<Link> > m_links;
