@@ -2,15 +2,18 @@
 //
 //   hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]
 //                [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]
-//                [--labels-glb OUT.glb] [--threads N] [parameter options]
-//   hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--threads N]
-//                [parameter options]
+//                [--labels-glb OUT.glb] [--thumbnail OUT.png] [--threads N] [parameter options]
+//   hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--report] [--quiet]
+//                [--threads N] [parameter options]
 //
 // `hitops --help` lists every option. A bad input gives a one-line error on stderr and exit
 // status 1; output files are written to a temporary name and renamed once complete, so a failed
 // run never leaves a partial file. In batch mode, the summary gives the SHA-256 of every input
 // file, and `--mesh-timeout` decomposes each mesh in a child process that is killed when it takes
 // longer (status `timeout`; the batch goes on with the next mesh, and the mesh leaves no output).
+// On a terminal, a batch keeps a status line up to date (elsewhere: one line per mesh), and one
+// mesh that takes over a second shows its stage; `--quiet` leaves only the errors. `--report`
+// writes DIR/report.html, a contact sheet with a thumbnail of every mesh and its parts.
 //
 // On a glTF input, --parts-glb keeps the input's materials, textures, UVs, normals and vertex
 // colours in each part, and --labels-glb writes the input's scene unchanged with the part of every
@@ -24,6 +27,9 @@
 #include <CGAL/Part_decomposition/decompose.h>
 
 #include "decomposition_settings.h"
+#include "part_palette.h"
+#include "part_renderer.h"
+#include "progress_line.h"
 #include "sha256.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -31,10 +37,13 @@
 #endif
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -44,6 +53,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -78,6 +88,9 @@ struct Options
   double mesh_timeout = 0.; // seconds per mesh of a batch; 0: no limit
   int threads = 0;
   bool timings = false;
+  bool quiet = false, report = false;
+  std::string thumbnail;
+  int thumbnail_width = 320, thumbnail_height = 160;
   double weld_tolerance = PD::defaults::weld_tolerance; // the named parameter of the reader
   Part_decomposition_tools::Decomposition_settings decomposition; // the named parameters of decompose()
 };
@@ -85,9 +98,9 @@ struct Options
 const char* const usage_text =
   "usage: hitops INPUT [--labels OUT.seg] [--colored OUT.ply] [--primitives OUT.json]\n"
   "                    [--primitive-mesh OUT.off] [--parts-glb OUT.glb [--parts-glb-primitives]]\n"
-  "                    [--labels-glb OUT.glb] [--threads N] [parameter options]\n"
-  "       hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--threads N]\n"
-  "                    [parameter options]\n"
+  "                    [--labels-glb OUT.glb] [--thumbnail OUT.png] [--threads N] [parameter options]\n"
+  "       hitops --batch LIST --out DIR [--shard I/N] [--mesh-timeout SECONDS] [--report] [--quiet]\n"
+  "                    [--threads N] [parameter options]\n"
   "\n"
   "Decomposes a triangle mesh (OFF, OBJ, PLY, STL, glTF .gltf/.glb) into parts with the Hi-TOPS method.\n"
   "\n"
@@ -106,6 +119,11 @@ const char* const usage_text =
   "  --labels-glb FILE        binary glTF with the part of every face as an EXT_mesh_features feature ID\n"
   "                           (vertex attribute _FEATURE_ID_0): a glTF INPUT's scene unchanged otherwise,\n"
   "                           another format as one mesh\n"
+  "  --thumbnail FILE         a PNG picture: the input in grey beside its parts in their colours\n"
+  "  --thumbnail-size WxH     pixels of the thumbnails of --thumbnail and --report (default 320x160)\n"
+  "  --quiet                  no progress on stderr, only errors (on a terminal, a batch keeps a status\n"
+  "                           line and one mesh that takes over a second shows its stage; elsewhere a\n"
+  "                           batch prints one line per mesh)\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
   "  --list-parameters        the table of the parameters (name, option, default, type, range, stage,\n"
@@ -117,7 +135,10 @@ const char* const usage_text =
   "                           the input, message); meshes whose outputs exist are skipped\n"
   "  --shard I/N              process only the meshes of rank I modulo N (0 <= I < N)\n"
   "  --mesh-timeout SECONDS   stop a mesh (read, decomposition, outputs) that takes longer: status timeout, no\n"
-  "                           output, the batch goes on (each mesh then runs in a child process); 0: no limit\n";
+  "                           output, the batch goes on (each mesh then runs in a child process); 0: no limit\n"
+  "  --report                 also writes DIR/thumbnails/NAME.png per mesh and DIR/report[.I-of-N].html, a\n"
+  "                           contact sheet (no script, opens offline): thumbnail, faces, parts, seconds,\n"
+  "                           status and message of every mesh, links to its outputs\n";
 
 // Former spellings of parameter options, still accepted: the option, its parameter and the value it
 // implies (nullptr: it takes one).
@@ -343,6 +364,19 @@ Options parse(int argc, char** argv)
     else if(a == "--labels-glb") o.labels_glb = value();
     else if(a == "--threads") { o.threads = int(to_count(a, value())); if(o.threads < 1) throw Usage_error("--threads expects at least 1"); }
     else if(a == "--timings") o.timings = true;
+    else if(a == "--quiet") o.quiet = true;
+    else if(a == "--report") o.report = true;
+    else if(a == "--thumbnail") o.thumbnail = value();
+    else if(a == "--thumbnail-size")
+    {
+      const std::string s = value();
+      const std::size_t x = s.find('x');
+      if(x == std::string::npos) throw Usage_error("--thumbnail-size expects WxH");
+      o.thumbnail_width = int(to_count(a, s.substr(0, x)));
+      o.thumbnail_height = int(to_count(a, s.substr(x + 1)));
+      if(o.thumbnail_width < 2 || o.thumbnail_height < 2 || o.thumbnail_width > 4096 || o.thumbnail_height > 4096)
+        throw Usage_error("--thumbnail-size expects WxH, each from 2 to 4096");
+    }
     else if(a == "--verbose")
     {
       // a flag before it took true or false: a value is read only if it is one
@@ -376,6 +410,8 @@ Options parse(int argc, char** argv)
   if(!o.batch.empty() && o.out_dir.empty()) throw Usage_error("--batch needs --out DIR");
   if(o.parts_glb_primitives && o.parts_glb.empty()) throw Usage_error("--parts-glb-primitives needs --parts-glb FILE");
   if(o.mesh_timeout > 0 && o.batch.empty()) throw Usage_error("--mesh-timeout applies to --batch only");
+  if(o.report && o.batch.empty()) throw Usage_error("--report applies to --batch only (one mesh: --thumbnail FILE)");
+  if(!o.thumbnail.empty() && !o.batch.empty()) throw Usage_error("--thumbnail applies to one mesh (a batch: --report)");
   return o;
 }
 
@@ -418,8 +454,8 @@ private:
 // The colour of part k, as in --parts-glb (sRGB, 0 to 255).
 std::array<int, 3> part_colour(std::size_t k)
 {
-  const std::array<double, 3> c = PD::internal::part_srgb(k);
-  return {{int(std::lround(255 * c[0])), int(std::lround(255 * c[1])), int(std::lround(255 * c[2]))}};
+  const std::array<std::uint8_t, 3> c = Part_decomposition_tools::part_rgb(k);
+  return {{int(c[0]), int(c[1]), int(c[2])}};
 }
 
 struct Result
@@ -560,16 +596,64 @@ void print_reading(const PD::IO::Mesh_file_info& info)
             << " values beyond the header's properties ignored\n";
 }
 
+namespace render = Part_decomposition_tools::render;
+
+// The PNG of the mesh in grey beside its parts; `face_part` in the order of faces(mesh).
+std::vector<std::uint8_t> thumbnail_png(const Mesh& mesh, const std::vector<std::size_t>& face_part, const Options& o)
+{
+  // vertex indices of a mesh with removed elements are not dense: points by index, gaps unused
+  std::vector<std::array<double, 3> > points(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  for(Mesh::Vertex_index v : vertices(mesh))
+  {
+    const K::Point_3& p = mesh.point(v);
+    points[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<render::Rgb> colours;
+  std::size_t i = 0;
+  for(Mesh::Face_index f : faces(mesh))
+  {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      if(k < 3) t[k++] = std::size_t(v);
+    triangles.push_back(t);
+    colours.push_back(Part_decomposition_tools::part_rgb(face_part[i++]));
+  }
+  render::Picture_options picture;
+  picture.width = o.thumbnail_width;
+  picture.height = o.thumbnail_height;
+  return render::encode_png(render::render_input_and_parts(points, triangles, colours, picture));
+}
+
+void write_bytes(std::ostream& out, const std::vector<std::uint8_t>& bytes)
+{
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// The stage line of one mesh: on a terminal only, once it took a second; never with --quiet.
+Part_decomposition_tools::Progress_line::Mode single_mesh_mode(const Options& o)
+{
+  typedef Part_decomposition_tools::Progress_line Progress_line;
+  return Progress_line::mode_of_stderr(o.quiet) == Progress_line::TERMINAL ? Progress_line::TERMINAL
+                                                                          : Progress_line::QUIET;
+}
+
 int single(const Options& o)
 {
+  Part_decomposition_tools::Progress_line progress(single_mesh_mode(o), 0, 1.);
+  progress.begin(std::filesystem::path(o.input).filename().string());
+  progress.stage("reading");
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
   const PD::IO::Mesh_file_info info =
     PD::IO::read_triangle_mesh(o.input, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
   if(o.decomposition.verbose) print_reading(info);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.stage("decomposing");
   const Result r = run(mesh, o);
 
+  progress.stage("writing");
   const std::vector<std::size_t> file_labels = PD::IO::labels_in_file_order(info, r.face_part);
   Atomic_outputs outputs;
   if(!o.labels.empty()) write_labels(outputs.open(o.labels), file_labels);
@@ -584,7 +668,9 @@ int single(const Options& o)
     PD::IO::write_parts_glb(outputs.open(o.parts_glb), mesh, r.face_part, r.parts, glb_primitives);
   if(!o.labels_glb.empty())
     PD::IO::write_labels_glb(outputs.open(o.labels_glb), o.input, file_labels, r.parts);
+  if(!o.thumbnail.empty()) write_bytes(outputs.open(o.thumbnail), thumbnail_png(mesh, r.face_part, o));
   outputs.commit();
+  progress.finish();
 
   if(o.timings) print_timings(o.input, mesh, r, read_seconds);
   std::cout << o.input << ": " << num_faces(mesh) << " faces, " << r.parts << " parts" << std::endl;
@@ -635,20 +721,33 @@ std::string one_line(std::string message)
   return message;
 }
 
+// The output files of one mesh of a batch; png is empty without --report.
+struct Mesh_files
+{
+  std::string seg, json, png;
+};
+
+// Tells what one mesh of a batch does now.
+typedef std::function<void(const char*)> Stage_callback;
+
 // Reads, decomposes and writes the outputs of one mesh of a batch; an error is the outcome.
-Mesh_outcome decompose_one(const Options& o, const std::string& path, const std::string& seg, const std::string& json)
+Mesh_outcome decompose_one(const Options& o, const std::string& path, const Mesh_files& files, const Stage_callback& stage)
 {
   Mesh_outcome outcome;
   try
   {
+    stage("reading");
     Mesh mesh;
     const PD::IO::Mesh_file_info info =
       PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
     if(o.decomposition.verbose) print_reading(info);
+    stage("decomposing");
     const Result r = run(mesh, o);
+    stage("writing");
     Atomic_outputs outputs;
-    write_labels(outputs.open(seg), PD::IO::labels_in_file_order(info, r.face_part));
-    write_primitives(outputs.open(json), r);
+    write_labels(outputs.open(files.seg), PD::IO::labels_in_file_order(info, r.face_part));
+    write_primitives(outputs.open(files.json), r);
+    if(!files.png.empty()) write_bytes(outputs.open(files.png), thumbnail_png(mesh, r.face_part, o));
     outputs.commit();
     if(o.timings) print_timings(path, mesh, r, 0.);
     outcome.status = "ok";
@@ -701,24 +800,27 @@ bool read_until_closed(int fd, std::chrono::steady_clock::time_point deadline, s
 
 // decompose_one() in a child process, killed if it takes longer than o.mesh_timeout seconds; the
 // child sends its outcome through a pipe. A killed child leaves no output, complete or not.
-Mesh_outcome decompose_with_timeout(const Options& o, const std::string& path, const std::string& seg,
-                                    const std::string& json)
+Mesh_outcome decompose_with_timeout(const Options& o, const std::string& path, const Mesh_files& files,
+                                    Part_decomposition_tools::Progress_line& progress)
 {
   int channel[2];
   if(::pipe(channel) != 0) throw std::runtime_error("cannot create a pipe");
   std::cout.flush();
+  std::unique_lock<std::mutex> quiet_progress = progress.hold();
   const pid_t child = ::fork();
   if(child < 0) throw std::runtime_error("cannot start a process for '" + path + "'");
   if(child == 0)
   {
     ::close(channel[0]);
-    const Mesh_outcome m = decompose_one(o, path, seg, json);
+    // the progress belongs to the parent (its lock stays held here): the child draws nothing
+    const Mesh_outcome m = decompose_one(o, path, files, [](const char*) {});
     write_all(channel[1],
               m.status + '\t' + std::to_string(m.faces) + '\t' + std::to_string(m.parts) + '\t' + m.message);
     // no destructor of the parent's objects (its summary, with its temporary file) may run here
     std::cerr.flush();
     ::_exit(EXIT_SUCCESS);
   }
+  quiet_progress.unlock();
   ::close(channel[1]);
   // at most 30 years: the clock's range is not exceeded
   const std::chrono::duration<double> timeout((std::min)(o.mesh_timeout, 1e9));
@@ -740,8 +842,9 @@ Mesh_outcome decompose_with_timeout(const Options& o, const std::string& path, c
     return outcome;
   }
   // killed, or the child died without an outcome (a crash): its outputs are not complete
-  for(const std::string& f : {seg, json})
+  for(const std::string& f : {files.seg, files.json, files.png})
   {
+    if(f.empty()) continue;
     std::remove((f + ".tmp." + std::to_string(child)).c_str());
     std::remove(f.c_str());
   }
@@ -758,9 +861,178 @@ Mesh_outcome decompose_with_timeout(const Options& o, const std::string& path, c
   return outcome;
 }
 
+// The faces and parts of a label file (one label per line): a mesh done by an earlier run.
+bool label_file_counts(const std::string& seg, std::vector<std::size_t>& labels, Mesh_outcome& outcome)
+{
+  std::ifstream in(seg);
+  labels.clear();
+  for(std::size_t l; in >> l;) labels.push_back(l);
+  if(!in.eof() || labels.empty()) return false;
+  outcome.faces = labels.size();
+  outcome.parts = *std::max_element(labels.begin(), labels.end()) + 1;
+  return true;
+}
+
+// The thumbnail of a mesh done by an earlier run, from its input and label file; false if either
+// cannot be read or they do not fit.
+bool thumbnail_of_outputs(const Options& o, const std::string& path, const std::vector<std::size_t>& labels,
+                          const std::string& png)
+{
+  try
+  {
+    Mesh mesh;
+    const PD::IO::Mesh_file_info info =
+      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+    if(labels.size() != info.number_of_input_faces) return false;
+    std::vector<std::size_t> face_part;
+    for(std::size_t input_face : info.face_to_input) face_part.push_back(labels[input_face]);
+    Atomic_outputs outputs;
+    write_bytes(outputs.open(png), thumbnail_png(mesh, face_part, o));
+    outputs.commit();
+    return true;
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
+
+// One mesh of a batch as its summary row and its report entry give it.
+struct Batch_entry
+{
+  std::string name, input;
+  Mesh_files files;
+  Mesh_outcome outcome;
+  double seconds = 0.;
+};
+
+std::string html_escaped(const std::string& text)
+{
+  std::string out;
+  for(char c : text)
+  {
+    if(c == '&') out += "&amp;";
+    else if(c == '<') out += "&lt;";
+    else if(c == '>') out += "&gt;";
+    else if(c == '"') out += "&quot;";
+    else if(c == '\'') out += "&#39;";
+    else out += c;
+  }
+  return out;
+}
+
+// A relative URL of a file path: every byte but unreserved characters and '/' percent-encoded.
+std::string url_of_path(const std::string& path)
+{
+  static const char* const hex = "0123456789ABCDEF";
+  std::string out;
+  for(unsigned char c : path)
+  {
+    if(std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~' || c == '/') out += char(c);
+    else out += std::string("%") + hex[c >> 4] + hex[c & 15];
+  }
+  return out;
+}
+
+// The input of a mesh relative to the report's folder, empty if it does not exist.
+std::string input_relative_to(const std::string& input, const std::string& folder)
+{
+  std::error_code ec;
+  if(!file_exists(input)) return std::string();
+  const std::filesystem::path from = std::filesystem::absolute(folder, ec), to = std::filesystem::absolute(input, ec);
+  const std::filesystem::path relative = ec ? std::filesystem::path() : std::filesystem::relative(to, from, ec);
+  return ec || relative.empty() ? std::string() : relative.generic_string();
+}
+
+// One figure of the contact sheet: the thumbnail, or the error in its place; the numbers; links.
+void write_report_entry(std::ostream& out, const Options& o, const Batch_entry& e)
+{
+  const Mesh_outcome& m = e.outcome;
+  const std::string name = html_escaped(e.name);
+  const std::string png = "thumbnails/" + e.name + ".png";
+  const bool picture = !e.files.png.empty() && file_exists(e.files.png) && (m.status == "ok" || m.status == "skipped");
+  out << "<figure class=\"mesh " << m.status << "\" id=\"" << name << "\">\n";
+  if(picture)
+    out << "<a href=\"" << url_of_path(png) << "\"><img src=\"" << url_of_path(png) << "\" width=\"" << o.thumbnail_width
+        << "\" height=\"" << o.thumbnail_height << "\" alt=\"" << name << ": the input and its " << m.parts
+        << " parts\"></a>\n";
+  else
+    out << "<div class=\"error\" style=\"width:" << o.thumbnail_width << "px;height:" << o.thumbnail_height << "px\">"
+        << html_escaped(m.status) << (m.message.empty() ? "" : ": ") << html_escaped(m.message) << "</div>\n";
+  out << "<figcaption><b>" << name << "</b> <span class=\"status\">" << html_escaped(m.status) << "</span><br>";
+  if(m.faces > 0) out << m.faces << " faces, " << m.parts << " parts";
+  if(m.status != "skipped") out << (m.faces > 0 ? ", " : "") << std::fixed << std::setprecision(2) << e.seconds << " s";
+  if(!m.message.empty() && picture) out << "<br><span class=\"message\">" << html_escaped(m.message) << "</span>";
+  const std::string input = input_relative_to(e.input, o.out_dir);
+  if(!input.empty() || file_exists(e.files.seg)) out << "<br>";
+  if(!input.empty()) out << "<a href=\"" << url_of_path(input) << "\">input</a> ";
+  if(file_exists(e.files.seg)) out << "<a href=\"" << url_of_path(e.name + ".seg") << "\">labels</a> ";
+  if(file_exists(e.files.json)) out << "<a href=\"" << url_of_path(e.name + ".json") << "\">primitives</a>";
+  out << "</figcaption>\n</figure>\n";
+}
+
+// The contact sheet of a batch: one figure per mesh, inline CSS, no script.
+void write_report(std::ostream& out, const Options& o, const std::vector<Batch_entry>& entries,
+                  std::map<std::string, std::size_t>& count, double seconds)
+{
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>hitops: "
+      << html_escaped(o.batch) << "</title>\n<style>\n"
+      << "body{font-family:sans-serif;margin:1em;background:#f4f4f4;color:#222}\n"
+      << "main{display:flex;flex-wrap:wrap;gap:10px}\n"
+      << "figure{margin:0;padding:6px;background:#fff;border:1px solid #ccc;border-radius:4px;font-size:13px}\n"
+      << "figure img{display:block;border:0}\n"
+      << "figure.failed,figure.timeout{border-color:#c33}\n"
+      << ".error{box-sizing:border-box;overflow:auto;padding:6px;background:#fbe9e9;color:#a00;font-family:monospace}\n"
+      << ".status{color:#666}.failed .status,.timeout .status{color:#a00}.message{color:#a60}\n"
+      << "</style>\n</head>\n<body>\n<h1>hitops: " << html_escaped(o.batch) << "</h1>\n<p>" << entries.size()
+      << " meshes: " << count["ok"] << " decomposed, " << count["skipped"] << " skipped, " << count["failed"]
+      << " failed, " << count["timeout"] << " timed out; " << std::fixed << std::setprecision(1) << seconds
+      << " s. Left of each picture the input, right its parts.</p>\n<main>\n";
+  for(const Batch_entry& e : entries) write_report_entry(out, o, e);
+  out << "</main>\n</body>\n</html>\n";
+}
+
+// What a mesh of the batch line says after its status.
+std::string outcome_detail(const Mesh_outcome& m, double seconds)
+{
+  std::ostringstream detail;
+  detail << std::fixed << std::setprecision(2);
+  if(m.status == "ok") detail << m.faces << " faces, " << m.parts << " parts, " << seconds << " s";
+  else if(m.status == "skipped") detail << m.message;
+  else detail << seconds << " s: " << m.message;
+  return detail.str();
+}
+
+// Decomposes one mesh of the batch, or skips it if its outputs exist (then draws its missing
+// thumbnail for the report).
+void process(const Options& o, Batch_entry& e, Part_decomposition_tools::Progress_line& progress)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  if(file_exists(e.files.seg) && file_exists(e.files.json))
+  {
+    e.outcome.status = "skipped";
+    e.outcome.message = "already done";
+    std::vector<std::size_t> labels;
+    if(!e.files.png.empty() && label_file_counts(e.files.seg, labels, e.outcome) && !file_exists(e.files.png))
+    {
+      progress.stage("drawing");
+      thumbnail_of_outputs(o, e.input, labels, e.files.png);
+    }
+  }
+  else if(o.mesh_timeout > 0)
+  {
+    progress.stage("in a child process");
+    e.outcome = decompose_with_timeout(o, e.input, e.files, progress);
+  }
+  else
+    e.outcome = decompose_one(o, e.input, e.files, [&progress](const char* stage) { progress.stage(stage); });
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 // One line per mesh of the shard: name, input, status, faces, parts, seconds, sha256, message.
 int batch(const Options& o)
 {
+  const auto start = std::chrono::steady_clock::now();
   const std::vector<std::string> paths = read_list(o.batch);
   // names must be unique in the output folder: repeated stems get their rank appended
   std::map<std::string, std::size_t> stem_count;
@@ -768,7 +1040,7 @@ int batch(const Options& o)
 
   // shards on many machines may all create the folder: an existing one is fine
   std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
+  std::filesystem::create_directories(o.report ? o.out_dir + "/thumbnails" : o.out_dir, ec);
   if(ec) throw Usage_error("cannot create the output folder '" + o.out_dir + "': " + ec.message());
 
   const std::string suffix = o.shards > 1 ? "." + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) : "";
@@ -776,35 +1048,41 @@ int batch(const Options& o)
   std::ostream& summary = summary_file.open(o.out_dir + "/summary" + suffix + ".tsv");
   summary << "name\tinput\tstatus\tfaces\tparts\tseconds\tsha256\tmessage\n";
   std::map<std::string, std::size_t> count; // per status
-  for(std::size_t i = 0; i < paths.size(); ++i)
+  const std::size_t share = paths.size() / o.shards + (o.shard < paths.size() % o.shards ? 1 : 0);
+  typedef Part_decomposition_tools::Progress_line Progress_line;
+  Progress_line progress(Progress_line::mode_of_stderr(o.quiet), share);
+  std::vector<Batch_entry> entries;
+  for(std::size_t i = o.shard; i < paths.size(); i += o.shards)
   {
-    if(i % o.shards != o.shard) continue;
-    const std::string name = stem_count[stem(paths[i])] > 1 ? stem(paths[i]) + "_" + std::to_string(i) : stem(paths[i]);
-    const std::string seg = o.out_dir + "/" + name + ".seg", json = o.out_dir + "/" + name + ".json";
+    Batch_entry e;
+    e.input = paths[i];
+    e.name = stem_count[stem(paths[i])] > 1 ? stem(paths[i]) + "_" + std::to_string(i) : stem(paths[i]);
+    e.files = {o.out_dir + "/" + e.name + ".seg", o.out_dir + "/" + e.name + ".json",
+               o.report ? o.out_dir + "/thumbnails/" + e.name + ".png" : std::string()};
     std::string sha256; // empty if the file cannot be read
     Part_decomposition_tools::sha256_of_file(paths[i], sha256);
-    const auto t0 = std::chrono::steady_clock::now();
-    Mesh_outcome outcome;
-    if(file_exists(seg) && file_exists(json))
-    {
-      outcome.status = "skipped";
-      outcome.message = "already done";
-    }
-    else
-      outcome =
-        o.mesh_timeout > 0 ? decompose_with_timeout(o, paths[i], seg, json) : decompose_one(o, paths[i], seg, json);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    progress.begin(e.name);
+    process(o, e, progress);
+    const Mesh_outcome& outcome = e.outcome;
     const bool ok = outcome.status == "ok";
-    summary << name << '\t' << paths[i] << '\t' << outcome.status << '\t';
+    summary << e.name << '\t' << paths[i] << '\t' << outcome.status << '\t';
     if(ok) summary << outcome.faces << '\t' << outcome.parts;
     else summary << '\t';
     summary << '\t';
-    if(outcome.status != "skipped") summary << s;
+    if(outcome.status != "skipped") summary << e.seconds;
     summary << '\t' << sha256 << '\t' << outcome.message << '\n';
-    if(!ok && outcome.status != "skipped") std::cerr << "hitops: " << paths[i] << ": " << outcome.message << std::endl;
+    progress.end(outcome.status, outcome_detail(outcome, e.seconds), e.seconds);
+    // one line per mesh already names the failures
+    if(!ok && outcome.status != "skipped" && progress.mode() != Progress_line::LINES)
+      progress.message("hitops: " + paths[i] + ": " + outcome.message);
     ++count[outcome.status];
     summary.flush();
+    if(o.report) entries.push_back(e);
   }
+  progress.finish();
+  if(o.report)
+    write_report(summary_file.open(o.out_dir + "/report" + suffix + ".html"), o, entries, count,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   summary_file.commit();
   std::cout << "batch: " << count["ok"] << " decomposed, " << count["skipped"] << " skipped, " << count["failed"]
             << " failed, " << count["timeout"] << " timed out" << std::endl;
