@@ -9,6 +9,8 @@
 #include <CGAL/Part_decomposition/decompose.h>
 
 #include "decomposition_settings.h"
+#include "part_palette.h"
+#include "part_renderer.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -372,6 +374,90 @@ std::string keyword_documentation()
   return doc;
 }
 
+namespace render = Part_decomposition_tools::render;
+
+// (m,) non-negative integer labels.
+std::vector<std::size_t> read_labels(py::handle object)
+{
+  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(object);
+  if(!a || a.ndim() != 1) throw py::value_error("labels must be a one-dimensional array of integers");
+  std::vector<std::size_t> labels(std::size_t(a.shape(0)));
+  for(std::size_t i = 0; i < labels.size(); ++i)
+  {
+    if(a.data()[i] < 0) throw py::value_error("labels must not be negative");
+    labels[i] = std::size_t(a.data()[i]);
+  }
+  return labels;
+}
+
+render::Picture_options picture_options(const std::pair<int, int>& size)
+{
+  if(size.first < 2 || size.second < 2 || size.first > 4096 || size.second > 4096)
+    throw py::value_error("size must be (width, height), each from 2 to 4096");
+  render::Picture_options o;
+  o.width = size.first;
+  o.height = size.second;
+  return o;
+}
+
+// The PNG of the triangles beside their parts, one label per triangle.
+py::bytes picture_png(const std::vector<std::array<double, 3> >& points,
+                      const std::vector<std::array<std::int64_t, 3> >& triangles, const std::vector<std::size_t>& labels,
+                      const render::Picture_options& options)
+{
+  std::vector<render::Rgb> colours;
+  for(std::size_t l : labels) colours.push_back(Part_decomposition_tools::part_rgb(l));
+  std::vector<std::uint8_t> png;
+  {
+    py::gil_scoped_release release;
+    png = render::encode_png(render::render_input_and_parts(points, triangles, colours, options));
+  }
+  return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
+}
+
+// render_parts() on arrays: one label per row of faces.
+py::bytes render_arrays_png(py::handle vertices, py::handle faces, py::handle labels, std::pair<int, int> size)
+{
+  const render::Picture_options options = picture_options(size);
+  const std::vector<std::array<double, 3> > points = read_vertices(vertices);
+  const std::vector<std::array<std::int64_t, 3> > triangles = read_faces(faces, points.size());
+  const std::vector<std::size_t> l = read_labels(labels);
+  if(l.size() != triangles.size())
+    throw py::value_error("labels has " + std::to_string(l.size()) + " entries, faces " + std::to_string(triangles.size()) +
+                          " rows");
+  return picture_png(points, triangles, l, options);
+}
+
+// render_parts() on a mesh file: one label per face of the file, in its order (decompose_file()).
+py::bytes render_file_png(py::object path_like, py::handle labels, std::pair<int, int> size)
+{
+  const render::Picture_options options = picture_options(size);
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
+  const std::vector<std::size_t> l = read_labels(labels);
+  Mesh mesh;
+  const PD::IO::Mesh_file_info info = PD::IO::read_triangle_mesh(path, mesh);
+  if(l.size() != info.number_of_input_faces)
+    throw py::value_error("labels has " + std::to_string(l.size()) + " entries, the file " +
+                          std::to_string(info.number_of_input_faces) + " faces");
+  // the reader's mesh is dense (no removed element): its indices are 0..n-1
+  std::vector<std::array<double, 3> > points;
+  for(Mesh::Vertex_index v : vertices(mesh))
+    points.push_back({{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}});
+  std::vector<std::array<std::int64_t, 3> > triangles;
+  std::vector<std::size_t> face_labels;
+  std::size_t i = 0;
+  for(Mesh::Face_index f : faces(mesh))
+  {
+    std::array<std::int64_t, 3> t{};
+    std::size_t k = 0;
+    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      if(k < 3) t[k++] = std::int64_t(v);
+    triangles.push_back(t);
+    face_labels.push_back(l[info.face_to_input[i++]]);
+  }
+  return picture_png(points, triangles, face_labels, options);
+}
+
 } // namespace
 
 // write_labels_glb(output, input, labels, number_of_labels): the library's writer, labels in the
@@ -471,5 +557,9 @@ PYBIND11_MODULE(_core, m)
         "a glTF input keeps its scene, materials and textures. labels: one per face in the file's\n"
         "order, as decompose_file() gives them; number_of_labels (the featureCount) defaults to\n"
         "max(labels) + 1. ValueError for labels that do not fit the file.\n");
+  m.def("_render_arrays_png", &render_arrays_png, py::arg("vertices"), py::arg("faces"), py::arg("labels"),
+        py::arg("size"), "The PNG of render_parts() on arrays, as bytes: use render_parts().");
+  m.def("_render_file_png", &render_file_png, py::arg("path"), py::arg("labels"), py::arg("size"),
+        "The PNG of render_parts() on a mesh file, as bytes: use render_parts().");
   m.attr("DEFAULTS") = default_parameters();
 }

@@ -3,6 +3,7 @@
     import part_decomposition as pd
     r = pd.decompose_file("animal.off")          # or pd.decompose(vertices, faces), pd.decompose(mesh)
     r.labels, r.number_of_parts, r.parts(), r.labels_at(3)
+    pd.render_parts("animal.off", r.labels, "animal.png")   # the input beside its parts, as PNG
 
 decompose() takes (n, 3) vertices and (m, 3) faces, or a mesh object with both (trimesh, Open3D);
 decompose_file() a mesh file; decompose_bytes() the contents of one. Every keyword and its default
@@ -19,7 +20,7 @@ from . import _core
 from ._core import DEFAULTS, Decomposition, InvalidInput, Primitive, __version__, decompose_file, write_labels_glb
 
 __all__ = ["DEFAULTS", "FORMATS", "Decomposition", "InvalidInput", "Primitive", "__version__", "decompose",
-           "decompose_bytes", "decompose_file", "write_labels_glb"]
+           "decompose_bytes", "decompose_file", "render_parts", "write_labels_glb"]
 
 # the classes show, and pickle, under the package's name rather than its private core's
 for _c in (Decomposition, InvalidInput, Primitive):
@@ -101,3 +102,30 @@ def decompose_bytes(data, format, **parameters):
             if message == str(e):
                 raise
             raise type(e)(message) from None
+
+
+def render_parts(mesh_or_path, labels, path, size=(640, 320)):
+    """render_parts(mesh_or_path, labels, path, size=(640, 320)) -> None
+
+    Draws the mesh in grey beside its parts in their colours (those of hitops --colored and
+    --parts-glb) and writes the picture as a PNG file: the thumbnails of hitops --report, drawn by
+    the package's own renderer, to look at a result without a 3D viewer. mesh_or_path is a mesh
+    file (labels: one per face of the file, in its order, as decompose_file() gives them), a
+    (vertices, faces) pair or a mesh object as decompose() takes them (labels: one per row of
+    faces). labels may also be a Decomposition. size is (width, height) in pixels, each from 2 to
+    4096. Raises ValueError for labels that do not fit the mesh, OSError if path cannot be written.
+    """
+    labels = np.asarray(getattr(labels, "labels", labels))
+    size = tuple(int(x) for x in size)
+    if len(size) != 2:
+        raise ValueError("size must be (width, height), got %r" % (size,))
+    if isinstance(mesh_or_path, (str, os.PathLike)):
+        png = _core._render_file_png(mesh_or_path, labels, size)
+    else:
+        if isinstance(mesh_or_path, (tuple, list)) and len(mesh_or_path) == 2:
+            vertices, faces = (np.asarray(a) for a in mesh_or_path)
+        else:
+            vertices, faces = _arrays_of(mesh_or_path)
+        png = _core._render_arrays_png(vertices, faces, labels, size)
+    with open(path, "wb") as f:
+        f.write(png)

@@ -108,3 +108,14 @@ def write_labels_glb(output: Union[str, os.PathLike[str]], input: Union[str, os.
     _FEATURE_ID_0); a glTF input keeps its scene, materials and textures. labels has one entry
     per face in the file's order, as decompose_file() gives them; number_of_labels (the
     featureCount) defaults to max(labels) + 1. Raises ValueError for labels that do not fit."""
+
+def render_parts(mesh_or_path: Union[str, os.PathLike[str], Tuple[ArrayLike, ArrayLike], _MeshWithFaces,
+                                     _MeshWithTriangles],
+                 labels: Union[ArrayLike, Decomposition], path: Union[str, os.PathLike[str]],
+                 size: Tuple[int, int] = (640, 320)) -> None:
+    """Writes a PNG picture of the mesh in grey beside its parts in their colours (those of hitops
+    --colored), drawn by the package's own renderer (the thumbnails of hitops --report).
+    mesh_or_path: a mesh file (labels in its face order, as decompose_file() gives them), a
+    (vertices, faces) pair or a mesh object (labels: one per row of faces); labels may be a
+    Decomposition. size: (width, height) in pixels, each from 2 to 4096. Raises ValueError for
+    labels that do not fit the mesh, OSError if path cannot be written."""

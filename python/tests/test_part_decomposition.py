@@ -410,3 +410,64 @@ def test_hitops_parts_glb_has_one_mesh_per_part_and_the_primitives():
     assert total == len(faces)
     assert len(colours) == k
     assert len(back.labels) > total
+
+
+def _png_decoder():
+    """The tests' PNG decoder (zlib of the standard library), shared with the hitops report tests."""
+    import importlib.util
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "test", "Part_decomposition", "hitops_report",
+                        "png_decode.py")
+    spec = importlib.util.spec_from_file_location("png_decode", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _check_picture(path, size, parts):
+    png = _png_decoder()
+    width, height, pixels = png.read_png(path)
+    assert (width, height) == size
+    left = {p for row in pixels for p in row[:width // 2]}
+    right = {p for row in pixels for p in row[width // 2:]}
+    assert max(png.saturation(p) for p in left) < 10  # the input in grey
+    assert len(right) >= parts
+    # a hue per part: saturated pixels binned by their normalized colour
+    hues = {tuple(round(6 * c / max(p)) for c in p) for p in right if png.saturation(p) > 60}
+    assert len(hues) >= parts
+
+
+def test_render_parts_draws_the_input_beside_its_parts(dumbbell, tmp_path):
+    path = os.path.join(DATA, "dumbbell.off")
+    r = pd.decompose_file(path, **FAST)
+    assert r.number_of_parts >= 2
+    out = tmp_path / "file.png"
+    pd.render_parts(path, r.labels, out, size=(300, 120))
+    _check_picture(str(out), (300, 120), r.number_of_parts)
+    # arrays, a mesh object and a Decomposition for the labels: the same kind of picture
+    vertices, faces = dumbbell
+    pd.render_parts((vertices, faces), r, str(tmp_path / "arrays.png"), size=(64, 40))
+    _check_picture(str(tmp_path / "arrays.png"), (64, 40), r.number_of_parts)
+
+    class Mesh:
+        pass
+
+    mesh = Mesh()
+    mesh.vertices, mesh.faces = vertices, faces
+    pd.render_parts(mesh, r.labels, str(tmp_path / "object.png"))
+    _check_picture(str(tmp_path / "object.png"), (640, 320), r.number_of_parts)
+
+
+def test_render_parts_refuses_what_does_not_fit(dumbbell, tmp_path):
+    vertices, faces = dumbbell
+    out = str(tmp_path / "x.png")
+    with pytest.raises(ValueError, match="labels"):
+        pd.render_parts((vertices, faces), np.zeros(len(faces) - 1, dtype=np.int64), out)
+    with pytest.raises(ValueError, match="labels"):
+        pd.render_parts(os.path.join(DATA, "dumbbell.off"), [0, 1], out)
+    with pytest.raises(ValueError, match="negative"):
+        pd.render_parts((vertices, faces), -np.ones(len(faces), dtype=np.int64), out)
+    with pytest.raises(ValueError, match="size"):
+        pd.render_parts((vertices, faces), np.zeros(len(faces), dtype=np.int64), out, size=(1, 100))
+    with pytest.raises(OSError):
+        pd.render_parts((vertices, faces), np.zeros(len(faces), dtype=np.int64), str(tmp_path / "no" / "x.png"))
+    assert not os.path.exists(out)
