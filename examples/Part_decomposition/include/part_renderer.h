@@ -148,41 +148,50 @@ struct Canvas
   {}
 };
 
-inline Vec3 shade(const Triangle& t, const Camera& cam)
+// The brightness of a flat triangle: two-sided, a key light from the upper left of the camera and
+// a weaker fill light from the right.
+inline double light_of(const std::array<Vec3, 3>& p, const Camera& cam)
 {
-  Vec3 n = normalized(cross(sub(t.p[1], t.p[0]), sub(t.p[2], t.p[0])));
+  Vec3 n = normalized(cross(sub(p[1], p[0]), sub(p[2], p[0])));
   // two-sided: open meshes and inward components are lit like their outside
   if(dot(n, cam.forward) > 0) n = {{-n[0], -n[1], -n[2]}};
-  // a key light from the upper left of the camera and a weaker fill light from the right
   const Vec3 key = normalized(Vec3{{-0.45 * cam.right[0] + 0.6 * cam.up[0] - cam.forward[0],
                                     -0.45 * cam.right[1] + 0.6 * cam.up[1] - cam.forward[1],
                                     -0.45 * cam.right[2] + 0.6 * cam.up[2] - cam.forward[2]}});
   const Vec3 fill = normalized(Vec3{{0.8 * cam.right[0] - 0.2 * cam.up[0] - cam.forward[0],
                                      0.8 * cam.right[1] - 0.2 * cam.up[1] - cam.forward[1],
                                      0.8 * cam.right[2] - 0.2 * cam.up[2] - cam.forward[2]}});
-  const double light = 0.32 + 0.58 * std::max(0., dot(n, key)) + 0.18 * std::max(0., dot(n, fill));
+  return 0.32 + 0.58 * std::max(0., dot(n, key)) + 0.18 * std::max(0., dot(n, fill));
+}
+
+// A colour lit with `light`, linear in [0, 1].
+inline Vec3 lit(const Rgb& colour, double light)
+{
   Vec3 c;
-  for(int i = 0; i < 3; ++i) c[std::size_t(i)] = std::min(1., light * t.color[std::size_t(i)] / 255.);
+  for(int i = 0; i < 3; ++i) c[std::size_t(i)] = std::min(1., light * colour[std::size_t(i)] / 255.);
   return c;
 }
 
-inline void rasterize(Canvas& cv, const Triangle& t, const Camera& cam, int ox, int oy, double alpha)
+inline Vec3 shade(const Triangle& t, const Camera& cam) { return lit(t.color, light_of(t.p, cam)); }
+
+// Calls f(sample index, depth) for each sample of a width x height canvas whose centre the
+// triangle covers, in the camera centred at (ox, oy); false for a degenerate triangle.
+template <typename F>
+bool for_each_sample(const std::array<Vec3, 3>& p, const Camera& cam, int ox, int oy, int width, int height, F f)
 {
   double x[3], y[3], z[3];
   for(int k = 0; k < 3; ++k)
   {
-    const Vec3& p = t.p[std::size_t(k)];
-    x[k] = ox + (dot(p, cam.right) - cam.cx) * cam.scale;
-    y[k] = oy - (dot(p, cam.up) - cam.cy) * cam.scale; // image rows grow downwards
-    z[k] = dot(p, cam.forward);
+    x[k] = ox + (dot(p[std::size_t(k)], cam.right) - cam.cx) * cam.scale;
+    y[k] = oy - (dot(p[std::size_t(k)], cam.up) - cam.cy) * cam.scale; // image rows grow downwards
+    z[k] = dot(p[std::size_t(k)], cam.forward);
   }
   const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-  if(std::abs(area) < 1e-12) return;
-  const Vec3 c = shade(t, cam);
+  if(std::abs(area) < 1e-12) return false;
   const int x0 = std::max(0, int(std::floor(std::min({x[0], x[1], x[2]})))),
-            x1 = std::min(cv.width - 1, int(std::ceil(std::max({x[0], x[1], x[2]})))),
+            x1 = std::min(width - 1, int(std::ceil(std::max({x[0], x[1], x[2]})))),
             y0 = std::max(0, int(std::floor(std::min({y[0], y[1], y[2]})))),
-            y1 = std::min(cv.height - 1, int(std::ceil(std::max({y[0], y[1], y[2]}))));
+            y1 = std::min(height - 1, int(std::ceil(std::max({y[0], y[1], y[2]}))));
   for(int py = y0; py <= y1; ++py)
     for(int px = x0; px <= x1; ++px)
     {
@@ -191,19 +200,30 @@ inline void rasterize(Canvas& cv, const Triangle& t, const Camera& cam, int ox, 
       const double w1 = ((x[2] - sx) * (y[0] - sy) - (x[0] - sx) * (y[2] - sy)) / area;
       const double w2 = 1. - w0 - w1;
       if(w0 < 0 || w1 < 0 || w2 < 0) continue;
-      const double d = w0 * z[0] + w1 * z[1] + w2 * z[2];
-      const std::size_t i = std::size_t(py) * std::size_t(cv.width) + std::size_t(px);
-      if(d >= cv.depth[i]) continue;
-      cv.covered[i] = 1;
-      if(alpha >= 1.)
-      {
-        cv.depth[i] = d;
-        cv.color[i] = c;
-      }
-      else
-        for(int ch = 0; ch < 3; ++ch)
-          cv.color[i][std::size_t(ch)] = alpha * c[std::size_t(ch)] + (1 - alpha) * cv.color[i][std::size_t(ch)];
+      f(std::size_t(py) * std::size_t(width) + std::size_t(px), w0 * z[0] + w1 * z[1] + w2 * z[2]);
     }
+  return true;
+}
+
+// Draws a triangle, opaque (alpha 1, z-buffered) or blended over what is nearer than it is not.
+inline void rasterize(Canvas& cv, const Triangle& t, const Camera& cam, int ox, int oy, double alpha)
+{
+  Vec3 c{{0, 0, 0}};
+  bool shaded = false;
+  for_each_sample(t.p, cam, ox, oy, cv.width, cv.height, [&](std::size_t i, double d) {
+    if(d >= cv.depth[i]) return;
+    if(!shaded) c = shade(t, cam); // only for a triangle that shows
+    shaded = true;
+    cv.covered[i] = 1;
+    if(alpha >= 1.)
+    {
+      cv.depth[i] = d;
+      cv.color[i] = c;
+    }
+    else
+      for(int ch = 0; ch < 3; ++ch)
+        cv.color[i][std::size_t(ch)] = alpha * c[std::size_t(ch)] + (1 - alpha) * cv.color[i][std::size_t(ch)];
+  });
 }
 
 // Darkens the pixels at depth discontinuities: silhouettes and occluding contours.
@@ -525,43 +545,61 @@ Image render_input_and_parts(const PointRange& points, const TriangleRange& tria
   if(s < 1 || s > 8) throw std::invalid_argument("supersampling out of [1, 8]");
   if(colours.size() != std::size_t(std::distance(std::begin(triangles), std::end(triangles))))
     throw std::invalid_argument("one colour per triangle expected");
-  std::vector<Triangle> input, parts;
-  std::size_t t = 0;
+  std::vector<std::array<Vec3, 3> > corners;
   for(const auto& tri : triangles)
   {
-    Triangle x;
+    std::array<Vec3, 3> x;
     for(std::size_t k = 0; k < 3; ++k)
     {
       const std::size_t v = std::size_t(tri[k]);
       if(v >= std::size_t(std::size(points))) throw std::invalid_argument("a vertex index out of range");
       const auto& p = points[v];
-      x.p[k] = {{double(p[0]), double(p[1]), double(p[2])}};
+      x[k] = {{double(p[0]), double(p[1]), double(p[2])}};
     }
-    x.color = options.input_colour;
-    input.push_back(x);
-    x.color = colours[t++];
-    parts.push_back(x);
+    corners.push_back(x);
   }
   Camera cam;
   orient(cam, axis_vector(options.up), options.azimuth, options.elevation);
   Bounds bounds;
-  add_bounds(bounds, input, cam);
+  for(const auto& x : corners)
+    for(const Vec3& p : x) bounds.add(dot(p, cam.right), dot(p, cam.up), dot(p, cam.forward));
   const Vec3 bg{{options.background[0] / 255., options.background[1] / 255., options.background[2] / 255.}};
-  Canvas cv(W * s, H * s, bg);
-  const int left = (W / 2) * s, panel_width[2] = {left, W * s - left};
-  const std::vector<Triangle>* panel[2] = {&input, &parts};
-  for(int i = 0; i < 2 && !bounds.empty(); ++i)
-  {
-    Camera pc = cam;
-    frame(pc, bounds, panel_width[i], H * s, 1.);
-    Canvas local(panel_width[i], H * s, bg);
-    for(const Triangle& x : *panel[i]) rasterize(local, x, pc, panel_width[i] / 2, H * s / 2, 1.);
-    outline_and_copy(cv, local, pc, i == 0 ? 0 : left, 0);
-  }
   Image image;
   image.width = W;
   image.height = H;
-  image.pixels = downsample(cv, s, W, H);
+  image.pixels.assign(std::size_t(W) * std::size_t(H), options.background);
+  if(bounds.empty()) return image;
+  // the two panels differ only in colour: one pass finds the triangle that shows at each sample
+  const int pw = (W / 2) * s, ph = H * s;
+  frame(cam, bounds, pw, ph, 1.);
+  Canvas local(pw, ph, bg);
+  std::vector<std::size_t> shown(local.depth.size(), corners.size());
+  for(std::size_t t = 0; t < corners.size(); ++t)
+    for_each_sample(corners[t], cam, pw / 2, ph / 2, pw, ph, [&](std::size_t i, double d) {
+      if(d >= local.depth[i]) return;
+      local.depth[i] = d;
+      shown[i] = t;
+    });
+  std::vector<std::uint8_t> mask(shown.size());
+  for(std::size_t i = 0; i < shown.size(); ++i) mask[i] = shown[i] < corners.size();
+  std::vector<double> light(corners.size(), -1.); // of the triangles that show
+  for(int panel = 0; panel < 2; ++panel)
+  {
+    // each panel colours the same samples, so the previous panel's outline is overwritten
+    for(std::size_t i = 0; i < shown.size(); ++i)
+    {
+      const std::size_t t = shown[i];
+      if(!mask[i]) continue;
+      if(light[t] < 0) light[t] = light_of(corners[t], cam);
+      local.color[i] = lit(panel == 0 ? options.input_colour : colours[t], light[t]);
+    }
+    outline(local, mask, 0.04 * cam.depth_span);
+    const std::vector<Rgb> pixels = downsample(local, s, pw / s, H);
+    const std::size_t x0 = panel == 0 ? 0 : std::size_t(W - pw / s);
+    for(int y = 0; y < H; ++y)
+      std::copy(pixels.begin() + std::ptrdiff_t(y) * (pw / s), pixels.begin() + std::ptrdiff_t(y + 1) * (pw / s),
+                image.pixels.begin() + std::ptrdiff_t(std::size_t(y) * std::size_t(W) + x0));
+  }
   return image;
 }
 
