@@ -2,6 +2,7 @@
 // decomposition of the shipped example meshes against their true parts.
 #include <catch2/catch.hpp>
 
+#include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
@@ -24,7 +25,10 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <cstdio>
+#include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -1571,4 +1575,76 @@ TEST_CASE("a few congruent pieces on a plate are not a pattern: they stay parts"
   for(std::size_t i = 0; i < part.size(); ++i)
     if(box[i] == 2) key_parts.insert(part[i]);
   CHECK(key_parts.size() == 4);
+}
+
+namespace {
+
+// A one-sided figure cut out of a sheet, as an OBJ file: a round body of radius 1 and three limbs
+// 0.5 wide reaching radius 2.6, at 90, 210 and 330 degrees, on a grid of step 0.1 (two triangles
+// per cell whose centre is in the figure). `bend` lifts the sheet by bend (x^2 + y^2): a relief.
+std::string cut_out_figure_obj(double bend)
+{
+  const double pi = 3.14159265358979323846, step = 0.1;
+  const int n = 60; // cells per side over [-3, 3]
+  auto inside = [&](double x, double y) {
+    if(x * x + y * y <= 1.) return true;
+    for(double degrees : {90., 210., 330.})
+    {
+      const double c = std::cos(degrees * pi / 180.), s = std::sin(degrees * pi / 180.);
+      const double along = c * x + s * y, across = -s * x + c * y;
+      if(along >= 0. && along <= 2.6 && std::abs(across) <= 0.25) return true;
+    }
+    return false;
+  };
+  std::ostringstream obj;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const double x = -3. + step * i, y = -3. + step * j;
+      obj << "v " << x << ' ' << y << ' ' << bend * (x * x + y * y) << '\n';
+    }
+  auto id = [&](int i, int j) { return j * (n + 1) + i + 1; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      if(inside(-3. + step * (i + 0.5), -3. + step * (j + 0.5)))
+        obj << "f " << id(i, j) << ' ' << id(i + 1, j) << ' ' << id(i + 1, j + 1) << '\n'
+            << "f " << id(i, j) << ' ' << id(i + 1, j + 1) << ' ' << id(i, j + 1) << '\n';
+  return obj.str();
+}
+
+} // namespace
+
+TEST_CASE("a one-sided cut-out figure or relief is decomposed as its inflated solid: its limbs are parts",
+          "[decompose][pieces][open]")
+{
+  for(double bend : {0., 0.1})
+  {
+    INFO("bend " << bend);
+    const std::string path = "pd_test_cut_out_figure.obj";
+    {
+      std::ofstream out(path);
+      out << cut_out_figure_obj(bend);
+    }
+    Mesh m;
+    PD::IO::read_triangle_mesh(path, m);
+    std::remove(path.c_str());
+    std::vector<std::size_t> part(num_faces(m));
+    const std::size_t K = PD::decompose(m, CGAL::make_property_map(part));
+    CHECK(K >= 4);
+    // the part of the face nearest to a point of the figure's plane
+    auto part_at = [&](double x, double y) {
+      std::size_t best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for(auto f : faces(m))
+      {
+        const Point c = CGAL::centroid(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
+                                       m.point(target(next(halfedge(f, m), m), m)));
+        const double d = CGAL::square(c.x() - x) + CGAL::square(c.y() - y);
+        if(d < best_d) { best_d = d; best = std::size_t(f); }
+      }
+      return part[best];
+    };
+    const std::size_t body = part_at(0., 0.), a = part_at(0., 2.4), b = part_at(-2.08, -1.2), c = part_at(2.08, -1.2);
+    CHECK(std::set<std::size_t>{body, a, b, c}.size() == 4);
+  }
 }

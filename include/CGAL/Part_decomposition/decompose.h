@@ -19,6 +19,7 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/sheet_inflation.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
@@ -222,15 +223,12 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_resu
   out.number_of_parts = K;
 }
 
-// `decompose()`: the stage functions in their documented order, their results left in `s`. `np`
-// holds the normalization.
+// The stage functions in their documented order up to the composed parts, their results left in
+// `s`; returns whether a primitive was fitted. `np` holds the normalization.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
-                    Decomposition_pass<GT>& out, Stage_timings& timings)
+bool compose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s, Stage_timings& timings)
 {
-  timings.overlapping = is_parallel_tag<ConcurrencyTag>();
   const bool use_pieces = read_piece_parameters(np).use_pieces;
-  // the stage times start at 0: each is added once
   std::vector<std::uint8_t> splittable;
   add_seconds(timings.pieces, [&] {
     if(!use_pieces) return;
@@ -241,7 +239,42 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_res
   const bool fitted =
     needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, splittable, s, timings);
   add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
-  cut_hierarchy(tm, np, s, out, timings);
+  return fitted;
+}
+
+// The composed parts of `tm` from those of the solid of its open sheets (`inflate_sheets()`);
+// returns per vertex index the point of `tm` on the solid's side of its normals.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+std::vector<typename GT::Point_3> compose_inflated_sheets(const TriangleMesh& tm, const NamedParameters& np,
+                                                          Stage_results<GT>& s, Stage_timings& timings)
+{
+  std::vector<typename GT::Point_3> raised;
+  const auto solid = inflated_sheets(tm, s.pieces, np, raised);
+  const auto solid_np = parameters::combine(np, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, solid)),
+                                            CGAL::parameters::face_index_map(get(CGAL::face_index, solid)));
+  Stage_results<GT> r;
+  compose_once<ConcurrencyTag>(
+    solid, parameters::combine(solid_np, parameters::normalization(compute_normalization(solid, solid_np))), r, timings);
+  s.composed = composed_parts_of_first_faces(r.composed, num_faces(tm));
+  return raised;
+}
+
+// `decompose()`: the stage functions in their documented order, their results left in `s`; the
+// solid of the open sheets when no piece bounds a volume. `np` holds the normalization.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
+                    Decomposition_pass<GT>& out, Stage_timings& timings)
+{
+  timings.overlapping = is_parallel_tag<ConcurrencyTag>();
+  // the stage times start at 0: each is added once
+  const bool fitted = compose_once<ConcurrencyTag>(tm, np, s, timings);
+  if(fitted || !read_piece_parameters(np).use_pieces || !decomposes_inflated_sheets(tm, s.pieces, np))
+    return cut_hierarchy(tm, np, s, out, timings);
+  // the hierarchy measures the boxes of the sheets' parts on the solid's side of their normals: a
+  // flat part has no volume, so that every merge of flat parts would be cheap
+  const std::vector<typename GT::Point_3> raised = compose_inflated_sheets<ConcurrencyTag>(tm, np, s, timings);
+  const auto raised_map = boost::make_iterator_property_map(raised.begin(), CGAL::get_initialized_vertex_index_map(tm));
+  cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map)), s, out, timings);
 }
 
 } // namespace internal
@@ -654,7 +687,11 @@ piece is volumetric, `compute_flow_freeze_prior()`, `compute_fitting_zones()`,
 `fit_superquadrics()`, `over_segment()`, `assign_parts()`, `separate_residual_patches()` (with
 `keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
 hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
-cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. Every named
+cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. When no piece is
+volumetric and the open sheets that `inflate_sheets()` inflates hold at least half of the area (a
+cut-out figure, a relief), the stages up to `compose_parts()` run on that solid instead, each face
+takes the part of its copy, and the hierarchy measures its parts on the solid's side of their
+normals (`Part_decomposer` does not take this path). Every named
 parameter of these functions is accepted here and passed to the stage that reads it; the table below lists them all, as does
 `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
