@@ -31,6 +31,9 @@ namespace internal {
 // A mesh of open sheets is decomposed as their solid (`inflate_sheets()`) if its open pieces free of
 // junctions (not assemblies of sheets) hold at least this fraction of its area.
 constexpr double minimum_inflated_area_fraction = 0.5;
+// A sheet whose outline fills at least this fraction of its convex hull has no limbs to find: a
+// plate or a disk stays one part without inflation.
+constexpr double maximum_outline_fill = 0.9;
 
 // Per face index, 1 if its piece is an open sheet that `inflate_sheets()` inflates: open and not
 // an assembly of sheets (its junction chains below `maximum_junction_fraction`).
@@ -39,7 +42,8 @@ std::vector<std::uint8_t> inflated_sheet_faces(const TriangleMesh& tm, const Pie
                                                const NamedParameters& np, std::vector<double>* area = nullptr)
 {
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_adjacency adj = piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np);
+  const auto graph = shared_piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np);
+  const Face_adjacency& adj = *graph;
   const std::vector<double> junction =
     junction_length_fractions(adj, Face_corners(tm, maps.fim, maps.vpm), pieces.piece, pieces.number_of_pieces);
   std::vector<std::uint8_t> sheet(adj.number_of_faces, 0);
@@ -50,7 +54,8 @@ std::vector<std::uint8_t> inflated_sheet_faces(const TriangleMesh& tm, const Pie
 }
 
 // Whether `decompose()` decomposes the solid of the open sheets of `tm`, given that no piece bounds
-// a volume: the sheets it inflates hold most of the area.
+// a volume: the sheets it inflates hold most of the area, and their outline has limbs (it fills
+// less than `maximum_outline_fill` of its convex hull).
 template <typename TriangleMesh, typename NamedParameters>
 bool decomposes_inflated_sheets(const TriangleMesh& tm, const Piece_segmentation& pieces, const NamedParameters& np)
 {
@@ -59,7 +64,10 @@ bool decomposes_inflated_sheets(const TriangleMesh& tm, const Piece_segmentation
   double sheet_area = 0.;
   for(std::size_t i = 0; i < sheet.size(); ++i)
     if(sheet[i]) sheet_area += area[i];
-  return sheet_area > 0. && sheet_area >= minimum_inflated_area_fraction * pieces.area;
+  if(!(sheet_area > 0.) || sheet_area < minimum_inflated_area_fraction * pieces.area) return false;
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
+  const Face_corners corners(tm, maps.fim, maps.vpm);
+  return outline_fill_fraction(corners.point, corners.vertex, sheet) < maximum_outline_fill;
 }
 
 // The composed parts of the faces [0, number_of_faces) of a mesh whose first faces are those of
@@ -117,7 +125,8 @@ thickness grows from its outline inwards: a limb of a flat figure becomes a limb
 thick as it is wide. The other pieces are copied unchanged.
 
 `decompose()` decomposes this solid instead of `tm` when no piece of `tm` bounds a volume
-(`volumetric_pieces()`) and the sheets it inflates hold at least half of its area: a one-sided cut-out figure or a relief has
+(`volumetric_pieces()`), the sheets it inflates hold at least half of its area and their outline
+has limbs (projected on their least-squares plane, they fill less than 90% of their convex hull): a one-sided cut-out figure or a relief has
 no inside, but its outline has limbs. Each face of `tm` then gets the part of its copy.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles

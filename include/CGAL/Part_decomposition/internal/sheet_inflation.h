@@ -16,6 +16,10 @@
 // normal for an inflated face); triangles F.. are the other sides of the inflated faces. The
 // border vertices of the inflated sheets are shared by both sides, so a sheet becomes closed.
 
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/convex_hull_2.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -23,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <queue>
 #include <unordered_map>
@@ -112,6 +117,44 @@ inline void inflate_sheet_soup(const std::vector<Eigen::Vector3d>& point, const 
   for(std::size_t i = 0; i < nf; ++i) out_triangles.push_back({{vertex[3 * i], vertex[3 * i + 1], vertex[3 * i + 2]}});
   for(std::size_t i = 0; i < nf; ++i)
     if(inflate[i]) out_triangles.push_back({{other[vertex[3 * i]], other[vertex[3 * i + 2]], other[vertex[3 * i + 1]]}});
+}
+
+// The area of the inflated faces projected on their least-squares plane, as a fraction of the
+// area of the convex hull of their projected corners: about 1 for a sheet whose outline is convex
+// (a plate, a disk: no limbs), well below for a figure with limbs.
+inline double outline_fill_fraction(const std::vector<Eigen::Vector3d>& point, const std::vector<std::size_t>& vertex,
+                                    const std::vector<std::uint8_t>& inflate)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < inflate.size(); ++i)
+    if(inflate[i])
+      for(int k = 0; k < 3; ++k, ++n) mean += point[vertex[3 * i + k]];
+  if(n == 0) return 1.;
+  mean /= double(n);
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for(std::size_t i = 0; i < inflate.size(); ++i)
+    if(inflate[i])
+      for(int k = 0; k < 3; ++k) cov += (point[vertex[3 * i + k]] - mean) * (point[vertex[3 * i + k]] - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const Eigen::Vector3d u = eig.eigenvectors().col(2), v = eig.eigenvectors().col(1);
+  typedef CGAL::Simple_cartesian<double>::Point_2 P;
+  std::vector<P> projected, hull;
+  double area = 0.;
+  for(std::size_t i = 0; i < inflate.size(); ++i)
+    if(inflate[i])
+    {
+      std::array<P, 3> c;
+      for(int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d d = point[vertex[3 * i + k]] - mean;
+        projected.push_back(c[k] = P(d.dot(u), d.dot(v)));
+      }
+      area += std::abs(CGAL::area(c[0], c[1], c[2]));
+    }
+  CGAL::convex_hull_2(projected.begin(), projected.end(), std::back_inserter(hull));
+  const double hull_area = hull.size() < 3 ? 0. : CGAL::polygon_area_2(hull.begin(), hull.end(), CGAL::Simple_cartesian<double>());
+  return hull_area > 0. ? area / hull_area : 1.;
 }
 
 } // namespace internal
