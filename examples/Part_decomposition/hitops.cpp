@@ -539,7 +539,7 @@ void write_primitives(std::ostream& out, const Result& r)
 
 void write_hierarchy(std::ostream& out, const PD::IO::Mesh_file_info& info, const Result& r)
 {
-  static const char* const kinds[] = {"leaf", "same_primitive", "same_part", "same_piece", "contact", "no_contact"};
+  static const char* const kinds[] = {"leaf", "same_primitive", "same_part", "attached", "same_piece", "contact", "no_contact"};
   const PD::Part_hierarchy<K>& h = r.hierarchy;
   const std::size_t none = PD::Part_hierarchy<K>::Node::no_node;
   out << "{\"leaves\":" << h.number_of_leaves() << ",\"default_number_of_parts\":" << h.default_number_of_parts
