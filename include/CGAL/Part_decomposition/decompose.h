@@ -251,7 +251,8 @@ std::vector<typename GT::Point_3> compose_inflated_sheets(const TriangleMesh& tm
   std::vector<typename GT::Point_3> raised;
   const auto solid = inflated_sheets(tm, s.pieces, np, raised);
   const auto solid_np = parameters::combine(np, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, solid)),
-                                            CGAL::parameters::face_index_map(get(CGAL::face_index, solid)));
+                                            CGAL::parameters::face_index_map(get(CGAL::face_index, solid)),
+                                            face_graphs_parameter(nullptr));
   Stage_results<GT> r;
   compose_once<ConcurrencyTag>(
     solid, parameters::combine(solid_np, parameters::normalization(compute_normalization(solid, solid_np))), r, timings);
@@ -274,7 +275,8 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_res
   // flat part has no volume, so that every merge of flat parts would be cheap
   const std::vector<typename GT::Point_3> raised = compose_inflated_sheets<ConcurrencyTag>(tm, np, s, timings);
   const auto raised_map = boost::make_iterator_property_map(raised.begin(), CGAL::get_initialized_vertex_index_map(tm));
-  cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map)), s, out, timings);
+  cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map), face_graphs_parameter(nullptr)),
+                s, out, timings);
 }
 
 } // namespace internal
@@ -688,8 +690,8 @@ piece is volumetric, `compute_flow_freeze_prior()`, `compute_fitting_zones()`,
 `keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
 hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
 cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. When no piece is
-volumetric and the open sheets that `inflate_sheets()` inflates hold at least half of the area (a
-cut-out figure, a relief), the stages up to `compose_parts()` run on that solid instead, each face
+volumetric and the open sheets that `inflate_sheets()` inflates hold at least half of the area
+and have limbs (a cut-out figure, a relief; see `inflate_sheets()`), the stages up to `compose_parts()` run on that solid instead, each face
 takes the part of its copy, and the hierarchy measures its parts on the solid's side of their
 normals (`Part_decomposer` does not take this path). Every named
 parameter of these functions is accepted here and passed to the stage that reads it; the table below lists them all, as does
@@ -1088,8 +1090,15 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   Stage_timings timings;
   internal::Decomposition_pass<GT> pass;
   internal::Stage_results<GT> s;
-  internal::decompose_once<ConcurrencyTag>(tm, parameters::combine(np, parameters::normalization(normalization)), s,
-                                           pass, timings);
+  // every stage reads the face graphs built here once
+  const internal::Face_graphs graphs = internal::add_seconds(timings.pieces, [&] {
+    return internal::build_face_graphs<ConcurrencyTag>(
+      tm, fim, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)),
+      np);
+  });
+  internal::decompose_once<ConcurrencyTag>(
+    tm, parameters::combine(np, parameters::normalization(normalization), internal::face_graphs_parameter(&graphs)), s,
+    pass, timings);
   internal::put_face_values(tm, fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;

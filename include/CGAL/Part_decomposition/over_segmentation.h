@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -222,10 +223,9 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
   static_check_concurrency_tag<ConcurrencyTag>();
   const Over_segmentation_parameters p = read_over_segmentation_parameters(np);
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
-  Face_adjacency local;
-  Face_adjacency& adj = adjacency ? *adjacency : local;
-  adj = face_adjacency_of<ConcurrencyTag>(tm, fim, np);
-  return over_segment_faces<ConcurrencyTag>(tm, fim, adj, p, label, stats);
+  const std::shared_ptr<const Face_adjacency> graph = shared_face_adjacency<ConcurrencyTag>(tm, fim, np);
+  if(adjacency) *adjacency = *graph;
+  return over_segment_faces<ConcurrencyTag>(tm, fim, *graph, p, label, stats);
 }
 
 } // namespace internal

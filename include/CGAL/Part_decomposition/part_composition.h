@@ -263,7 +263,8 @@ std::vector<std::uint8_t> splittable_pieces(const TriangleMesh& tm, const Piece_
                                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const internal::Face_adjacency adj = internal::piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const internal::Face_adjacency& adj = *graph;
   return internal::splittable_solid_pieces(adj, internal::Face_corners(tm, maps.fim, maps.vpm), pieces,
                                           internal::read_piece_parameters(np));
 }
@@ -296,7 +297,8 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
 {
   const internal::Piece_parameters p = internal::read_piece_parameters(np);
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const internal::Face_adjacency adj = internal::piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const internal::Face_adjacency& adj = *graph;
   const internal::Face_corners corners(tm, maps.fim, maps.vpm);
   std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
   // the triangles by face index, in the unit frame of the field
@@ -352,7 +354,8 @@ void separate_residual_patches(const TriangleMesh& tm, Volumetric_parts& parts, 
   internal::check_parameter(internal::same_frame(prior.normalization, fitting.normalization),
                             "the normalization of the prior", "the one of the fitting (same center and scale)");
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const internal::Face_adjacency adj = internal::face_adjacency_of<CGAL::Sequential_tag>(tm, maps.fim, np);
+  const auto graph = internal::shared_face_adjacency<CGAL::Sequential_tag>(tm, maps.fim, np);
+  const internal::Face_adjacency& adj = *graph;
   const internal::Face_corners corners(tm, maps.fim, maps.vpm);
   const std::size_t number_of_patches =
     parts.patches.empty() ? 0 : *std::max_element(parts.patches.begin(), parts.patches.end()) + 1;
@@ -417,7 +420,8 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
   std::vector<double> face_area;
   if(p.use_pieces)
   {
-    const internal::Face_adjacency adj = internal::piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+    const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+    const internal::Face_adjacency& adj = *graph;
     if(has_volume)
     {
       volume_part = parts.parts;
@@ -440,7 +444,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
     std::vector<std::size_t> former;
     internal::renumber_by_first_face(c.parts, &former);
     for(std::size_t k : former) c.part_to_primitive.push_back(parts.part_to_primitive[k]);
-    face_area = internal::face_adjacency_of<ConcurrencyTag>(tm, maps.fim, np).area;
+    face_area = internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np)->area;
   }
   c.part_primitives =
     internal::part_primitives<GeomTraits>(tm, maps.vpm, maps.fim, c.parts, c.part_to_primitive, fitting.input_primitives);
@@ -478,10 +482,11 @@ Part_hierarchy<GeomTraits> build_part_hierarchy(const TriangleMesh& tm, const Pi
   const double maximum_merge_cost = internal::read_hierarchy_parameters(np).maximum_merge_cost;
   if(internal::read_piece_parameters(np).use_pieces)
     return internal::hierarchy_of_leaves<GeomTraits>(
-      internal::piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np), corners, parts.finest_parts,
+      *internal::shared_piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np), corners, parts.finest_parts,
       parts.number_of_finest_parts, parts.part_groups, parts.parts, parts.part_primitives, pieces.piece,
       pieces.orientation, maximum_merge_cost);
-  const internal::Face_adjacency adj = internal::face_adjacency_of<CGAL::Sequential_tag>(tm, maps.fim, np);
+  const auto graph = internal::shared_face_adjacency<CGAL::Sequential_tag>(tm, maps.fim, np);
+  const internal::Face_adjacency& adj = *graph;
   std::vector<std::size_t> piece;
   const std::vector<int> orientation(internal::label_pieces(adj, piece), 1);
   return internal::hierarchy_of_leaves<GeomTraits>(adj, corners, parts.finest_parts, parts.number_of_finest_parts,

@@ -364,7 +364,8 @@ build_part_hierarchy(const TriangleMesh& tm, FacePartMap face_part_map,
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
-  const internal::Face_adjacency adj = internal::piece_adjacency<CGAL::Sequential_tag>(tm, fim, vpm, np);
+  const auto graph = internal::shared_piece_adjacency<CGAL::Sequential_tag>(tm, fim, vpm, np);
+  const internal::Face_adjacency& adj = *graph;
   const Piece_segmentation pieces = internal::segment_pieces_of_graph(adj, internal::Piece_parameters());
   std::vector<std::size_t> leaf(adj.number_of_faces, 0);
   std::size_t number_of_leaves = 0;

@@ -142,7 +142,7 @@ Piece_segmentation segment_pieces(const TriangleMesh& tm,
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
-  return internal::segment_pieces_of_graph(internal::piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np), p);
+  return internal::segment_pieces_of_graph(*internal::shared_piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np), p);
 }
 
 } // namespace Part_decomposition

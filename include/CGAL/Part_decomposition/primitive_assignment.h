@@ -33,6 +33,7 @@
 #include <limits>
 #include <numeric>
 #include <utility>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -424,9 +425,9 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
   // the one conversion from the caller's map, and the one to the other
   std::vector<std::size_t> patch(num_faces(tm)), part;
   for(auto f : faces(tm)) patch[std::size_t(get(fim, f))] = std::size_t(get(face_patch_map, f));
-  const internal::Face_adjacency adj = p.boundary_smoothness > 0.
-                                          ? internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np)
-                                          : internal::Face_adjacency();
+  const auto graph = p.boundary_smoothness > 0. ? internal::shared_face_adjacency<ConcurrencyTag>(tm, fim, np)
+                                                : std::make_shared<const internal::Face_adjacency>();
+  const internal::Face_adjacency& adj = *graph;
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
       tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj, part);
   internal::put_face_values(tm, fim, part, face_part_map);

@@ -137,7 +137,8 @@ std::size_t merge_thin_sheet_parts(const TriangleMesh& tm, FacePartMap face_part
                             "the normalization of the distance field", "the one of the fitting (same center and scale)");
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
 
-  const internal::Face_adjacency adj = internal::face_adjacency_of<ConcurrencyTag>(tm, fim, np);
+  const auto graph = internal::shared_face_adjacency<ConcurrencyTag>(tm, fim, np);
+  const internal::Face_adjacency& adj = *graph;
   std::vector<std::size_t> part(num_faces(tm));
   for(auto f : faces(tm)) part[std::size_t(get(fim, f))] = std::size_t(get(face_part_map, f));
   const std::size_t K = internal::merge_thin_sheets_on_faces<ConcurrencyTag>(tm, vpm, fim, adj, tsdf,

@@ -29,6 +29,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -94,9 +95,10 @@ void find_twin_faces(const Corners& corners, Face_adjacency& adj)
 // taken from the two normals; the slots of an edge of three faces or more are marked in
 // `adj.junction`. Faces with the same three corners are twins (`find_twin_faces()`).
 // Only the edges of border slots are sorted (none on a closed mesh), then every slot on one of
-// them (a fin on a plate glues a border edge to an interior one).
+// them (a fin on a plate glues a border edge to an interior one). Returns whether a slot was
+// glued or a twin found: if not, the graph reads as the unglued one.
 template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
-void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+bool glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
                                   Face_adjacency& adj)
 {
   typedef std::array<double, 3> P;
@@ -129,6 +131,7 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
   }
   std::sort(edges.begin(), edges.end());
   adj.junction.assign(adj.neighbor.size(), 0);
+  bool glued = false;
   for(std::size_t s = 0; s < edges.size();)
   {
     std::size_t e = s + 1;
@@ -139,12 +142,14 @@ void glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
       if(adj.neighbor[slot] != Face_adjacency::no_face) continue;
       const std::size_t j = edges[t + 1 < e ? t + 1 : s].second / 3;
       adj.neighbor[slot] = j;
+      glued = true;
       adj.junction[slot] = e - s > 2;
       adj.angle[slot] = dihedral_angle(adj, i, j);
     }
     s = e;
   }
   find_twin_faces(corners, adj);
+  return glued || std::any_of(adj.twin.begin(), adj.twin.end(), [](std::size_t t) { return t != Face_adjacency::no_face; });
 }
 
 // The face graph of the pieces: the graph of `face_adjacency_of()` with coincident border edges
@@ -157,6 +162,32 @@ Face_adjacency piece_adjacency(const TriangleMesh& tm, const FaceIndexMap& fim, 
   Face_adjacency adj = face_adjacency_of<ConcurrencyTag>(tm, fim, np);
   glue_coincident_border_edges(tm, fim, vpm, adj);
   return adj;
+}
+
+// `piece_adjacency()`, shared with the other stages of `decompose()`.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename NamedParameters>
+std::shared_ptr<const Face_adjacency> shared_piece_adjacency(const TriangleMesh& tm, const FaceIndexMap& fim,
+                                                             const VertexPointMap& vpm, const NamedParameters& np)
+{
+  const Face_graphs* graphs = face_graphs_of(np);
+  if(graphs != nullptr && graphs->pieces) return graphs->pieces;
+  return std::make_shared<const Face_adjacency>(piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np));
+}
+
+// The two face graphs of `tm` for the stages of `decompose()`: one object when gluing changes
+// nothing (a mesh without coincident border edges or twin faces), which saves its memory.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename NamedParameters>
+Face_graphs build_face_graphs(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+                              const NamedParameters& np)
+{
+  Face_graphs g;
+  auto glued = std::make_shared<Face_adjacency>(face_adjacency_of<ConcurrencyTag>(tm, fim, np));
+  const bool changed = glue_coincident_border_edges(tm, fim, vpm, *glued);
+  g.pieces = glued;
+  g.plain = changed ? std::make_shared<const Face_adjacency>(face_adjacency_of<ConcurrencyTag>(tm, fim, np)) : g.pieces;
+  return g;
 }
 
 // Whether slot s of `adj` joins three faces or more (see glue_coincident_border_edges()).
