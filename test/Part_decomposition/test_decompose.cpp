@@ -1648,3 +1648,64 @@ TEST_CASE("a one-sided cut-out figure or relief is decomposed as its inflated so
     CHECK(std::set<std::size_t>{body, a, b, c}.size() == 4);
   }
 }
+
+namespace {
+
+// A closed cup of radius 1 and height 2 whose wall and bottom are `thickness` thick: the profile
+// (outer bottom, outer wall, rim, inner wall, inner bottom) revolved in `n` steps. Per face, 1 if
+// it lies on the wall (outer or inner) between heights 0.2 and 1.8.
+Mesh make_thin_cup(double thickness, int n, std::vector<std::uint8_t>& wall)
+{
+  const double pi = 3.14159265358979323846;
+  const std::vector<std::array<double, 2> > corners = {
+    {{0., 0.}}, {{1., 0.}}, {{1., 2.}}, {{1. - thickness, 2.}}, {{1. - thickness, thickness}}, {{0., thickness}}};
+  std::vector<std::array<double, 2> > profile;
+  for(std::size_t c = 0; c + 1 < corners.size(); ++c)
+  {
+    const double length = std::hypot(corners[c + 1][0] - corners[c][0], corners[c + 1][1] - corners[c][1]);
+    const int steps = (std::max)(1, int(length / 0.1));
+    for(int s = 0; s < steps; ++s)
+      profile.push_back({{corners[c][0] + (corners[c + 1][0] - corners[c][0]) * s / steps,
+                          corners[c][1] + (corners[c + 1][1] - corners[c][1]) * s / steps}});
+  }
+  profile.push_back(corners.back());
+  Mesh m;
+  std::vector<std::vector<Mesh::Vertex_index> > ring(profile.size());
+  for(std::size_t r = 0; r < profile.size(); ++r)
+    for(int k = 0; k < (profile[r][0] == 0. ? 1 : n); ++k)
+    {
+      const double a = 2. * pi * k / n;
+      ring[r].push_back(m.add_vertex(Point(profile[r][0] * std::cos(a), profile[r][0] * std::sin(a), profile[r][1])));
+    }
+  for(std::size_t r = 0; r + 1 < profile.size(); ++r)
+    for(int k = 0; k < n; ++k)
+    {
+      auto at = [&](std::size_t q, int j) { return ring[q].size() == 1 ? ring[q][0] : ring[q][std::size_t(j % n)]; };
+      const bool on_wall = std::abs(profile[r][0] - profile[r + 1][0]) < 1e-12 && profile[r][1] > 0.2 &&
+                           profile[r][1] < 1.8 && profile[r + 1][1] > 0.2 && profile[r + 1][1] < 1.8;
+      // outward: the profile runs counterclockwise around the solid seen from +y
+      if(ring[r].size() > 1) { m.add_face(at(r, k), at(r, k + 1), at(r + 1, k + 1)); wall.push_back(on_wall); }
+      if(ring[r + 1].size() > 1) { m.add_face(at(r, k), at(r + 1, k + 1), at(r + 1, k)); wall.push_back(on_wall); }
+    }
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("a cup whose wall is thinner than a voxel has its wall in one part", "[decompose][sheet_merge]")
+{
+  for(double thickness : {0.01, 0.03})
+  {
+    INFO("thickness " << thickness);
+    std::vector<std::uint8_t> wall;
+    const Mesh m = make_thin_cup(thickness, 64, wall);
+    REQUIRE(CGAL::is_closed(m));
+    std::vector<std::size_t> part(num_faces(m));
+    const std::size_t K = PD::decompose(m, CGAL::make_property_map(part));
+    CHECK(K <= 3);
+    std::set<std::size_t> wall_parts;
+    for(std::size_t i = 0; i < part.size(); ++i)
+      if(wall[i]) wall_parts.insert(part[i]);
+    CHECK(wall_parts.size() == 1);
+  }
+}
