@@ -400,21 +400,13 @@ TEST_CASE("over_segment with every default given explicitly gives the default pa
   CHECK(na <= 1000);
 }
 
-TEST_CASE("the former names of dihedral_percentile and patch_split_size still work", "[over_segmentation]")
+TEST_CASE("dihedral_percentile and patch_split_size reach the over-segmentation", "[over_segmentation]")
 {
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 4);
-  std::vector<std::size_t> renamed(num_faces(m)), former(num_faces(m)), by_default(num_faces(m));
+  std::vector<std::size_t> given(num_faces(m)), by_default(num_faces(m));
   const auto np = PDP::combine(PDP::dihedral_percentile(80.), PDP::patch_split_size(0.01));
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-  const auto former_np = PDP::combine(PDP::dihedral_quantile(80.), PDP::maximum_patch_size(0.01));
-#pragma GCC diagnostic pop
-  const std::size_t n_renamed = PD::over_segment(m, CGAL::make_property_map(renamed), np);
-  const std::size_t n_former = PD::over_segment(m, CGAL::make_property_map(former), former_np);
-  CHECK(n_former == n_renamed);
-  CHECK(former == renamed);
-  // the values reached the stage: a cap twenty times the default gives fewer patches
-  CHECK(n_renamed < PD::over_segment(m, CGAL::make_property_map(by_default)));
+  // a cap twenty times the default gives fewer patches
+  CHECK(PD::over_segment(m, CGAL::make_property_map(given), np) < PD::over_segment(m, CGAL::make_property_map(by_default)));
 }
 
 TEST_CASE("the nearest claimed leaf of a uniform grid is exact, near and far from the claims", "[assignment]")

@@ -534,16 +534,6 @@ public:
     return m_s.composed.number_of_parts();
   }
 
-  /// \deprecated the former name of `compose_parts()`, whose name now clashes with the free
-  /// primitive assignment `Part_decomposition::assign_parts()`.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  CGAL_DEPRECATED std::size_t assign_parts(FacePartMap face_part_map,
-                                           const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    return compose_parts<ConcurrencyTag>(face_part_map, np);
-  }
-
   /*!
   builds the part hierarchy of the parts of `compose_parts()` with
   `Part_decomposition::build_part_hierarchy(tm, pieces, parts, np)` and returns it, composing the

@@ -496,8 +496,6 @@ parameter, with its type, default, range, meaning and the functions that read it
 `parameter_table`, from which the reference page \ref PD_ParameterTable is made.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
-`dihedral_quantile()` and `maximum_patch_size()`, the former names of `dihedral_percentile()` and
-`patch_split_size()`, are deprecated and will be removed in the next release.
 \cgal's own parameters keep their names: `vertex_point_map`, `vertex_index_map`,
 `face_index_map`, `geom_traits`, `number_of_points_per_face` (36), `verbose`, and, for
 `evaluate_segmentation()`, `number_of_points_on_faces` and `random_seed`.
@@ -514,19 +512,6 @@ namespace parameters {
 CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
 #undef CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION
 
-// Former names, kept for one release.
-template <typename T>
-[[deprecated("renamed dihedral_percentile()")]]
-CGAL::Named_function_parameters<T, internal_np::dihedral_percentile_t> dihedral_quantile(const T& t)
-{
-  return CGAL::Named_function_parameters<T, internal_np::dihedral_percentile_t>(t);
-}
-template <typename T>
-[[deprecated("renamed patch_split_size()")]]
-CGAL::Named_function_parameters<T, internal_np::patch_split_size_t> maximum_patch_size(const T& t)
-{
-  return CGAL::Named_function_parameters<T, internal_np::patch_split_size_t>(t);
-}
 /// \endcond
 
 /// returns `np` unchanged: the end of a `combine()` chain.

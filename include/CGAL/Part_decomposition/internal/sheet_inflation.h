@@ -17,13 +17,14 @@
 // border vertices of the inflated sheets are shared by both sides, so a sheet becomes closed.
 
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -137,8 +138,10 @@ inline double outline_fill_fraction(const std::vector<Eigen::Vector3d>& point, c
     if(inflate[i])
       for(int k = 0; k < 3; ++k) cov += (point[vertex[3 * i + k]] - mean) * (point[vertex[3 * i + k]] - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  const Eigen::Vector3d u = eig.eigenvectors().col(2), v = eig.eigenvectors().col(1);
-  typedef CGAL::Simple_cartesian<double>::Point_2 P;
+  // unit-free coordinates, and exact predicates: the hull of nearly collinear points is still one
+  const double scale = std::sqrt((std::max)(eig.eigenvalues()[2] / double(n), std::numeric_limits<double>::min()));
+  const Eigen::Vector3d u = eig.eigenvectors().col(2) / scale, v = eig.eigenvectors().col(1) / scale;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
   std::vector<P> projected, hull;
   double area = 0.;
   for(std::size_t i = 0; i < inflate.size(); ++i)
@@ -153,7 +156,8 @@ inline double outline_fill_fraction(const std::vector<Eigen::Vector3d>& point, c
       area += std::abs(CGAL::area(c[0], c[1], c[2]));
     }
   CGAL::convex_hull_2(projected.begin(), projected.end(), std::back_inserter(hull));
-  const double hull_area = hull.size() < 3 ? 0. : CGAL::polygon_area_2(hull.begin(), hull.end(), CGAL::Simple_cartesian<double>());
+  const double hull_area =
+    hull.size() < 3 ? 0. : CGAL::polygon_area_2(hull.begin(), hull.end(), CGAL::Exact_predicates_inexact_constructions_kernel());
   return hull_area > 0. ? area / hull_area : 1.;
 }
 
