@@ -242,14 +242,16 @@ bool compose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_resul
   return fitted;
 }
 
-// The composed parts of `tm` from those of the solid of its open sheets (`inflate_sheets()`);
-// returns per vertex index the point of `tm` on the solid's side of its normals.
+// The composed parts of `tm` from those of the solid of its open sheets (`inflate_sheets()` of the
+// faces `sheet`); returns per vertex index the point of `tm` on the solid's side of its normals.
 template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
 std::vector<typename GT::Point_3> compose_inflated_sheets(const TriangleMesh& tm, const NamedParameters& np,
-                                                          Stage_results<GT>& s, Stage_timings& timings)
+                                                          const Face_corners& corners,
+                                                          const std::vector<std::uint8_t>& sheet, Stage_results<GT>& s,
+                                                          Stage_timings& timings)
 {
   std::vector<typename GT::Point_3> raised;
-  const auto solid = inflated_sheets(tm, s.pieces, np, raised);
+  const auto solid = inflated_sheets(corners, sheet, raised);
   const auto solid_np = parameters::combine(np, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, solid)),
                                             CGAL::parameters::face_index_map(get(CGAL::face_index, solid)),
                                             face_graphs_parameter(nullptr));
@@ -269,11 +271,15 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_res
   timings.overlapping = is_parallel_tag<ConcurrencyTag>();
   // the stage times start at 0: each is added once
   const bool fitted = compose_once<ConcurrencyTag>(tm, np, s, timings);
-  if(fitted || !read_piece_parameters(np).use_pieces || !decomposes_inflated_sheets(tm, s.pieces, np))
-    return cut_hierarchy(tm, np, s, out, timings);
+  if(fitted || !read_piece_parameters(np).use_pieces) return cut_hierarchy(tm, np, s, out, timings);
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
+  const Face_corners corners(tm, maps.fim, maps.vpm);
+  std::vector<std::uint8_t> sheet;
+  if(!decomposes_inflated_sheets(tm, s.pieces, corners, np, sheet)) return cut_hierarchy(tm, np, s, out, timings);
   // the hierarchy measures the boxes of the sheets' parts on the solid's side of their normals: a
   // flat part has no volume, so that every merge of flat parts would be cheap
-  const std::vector<typename GT::Point_3> raised = compose_inflated_sheets<ConcurrencyTag>(tm, np, s, timings);
+  const std::vector<typename GT::Point_3> raised =
+    compose_inflated_sheets<ConcurrencyTag>(tm, np, corners, sheet, s, timings);
   const auto raised_map = boost::make_iterator_property_map(raised.begin(), CGAL::get_initialized_vertex_index_map(tm));
   cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map), face_graphs_parameter(nullptr)),
                 s, out, timings);

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -36,37 +37,36 @@ constexpr double minimum_inflated_area_fraction = 0.5;
 constexpr double maximum_outline_fill = 0.9;
 
 // Per face index, 1 if its piece is an open sheet that `inflate_sheets()` inflates: open and not
-// an assembly of sheets (its junction chains below `maximum_junction_fraction`).
+// an assembly of sheets (its junction chains below `maximum_junction_fraction`). `corners`: of `tm`.
 template <typename TriangleMesh, typename NamedParameters>
 std::vector<std::uint8_t> inflated_sheet_faces(const TriangleMesh& tm, const Piece_segmentation& pieces,
-                                               const NamedParameters& np, std::vector<double>* area = nullptr)
+                                               const Face_corners& corners, const NamedParameters& np)
 {
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const auto graph = shared_piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np);
-  const Face_adjacency& adj = *graph;
-  const std::vector<double> junction =
-    junction_length_fractions(adj, Face_corners(tm, maps.fim, maps.vpm), pieces.piece, pieces.number_of_pieces);
-  std::vector<std::uint8_t> sheet(adj.number_of_faces, 0);
-  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
+  const std::vector<double> junction = junction_length_fractions(*graph, corners, pieces.piece, pieces.number_of_pieces);
+  std::vector<std::uint8_t> sheet(graph->number_of_faces, 0);
+  for(std::size_t i = 0; i < sheet.size(); ++i)
     sheet[i] = !pieces.closed[pieces.piece[i]] && junction[pieces.piece[i]] < maximum_junction_fraction;
-  if(area) *area = adj.area;
   return sheet;
 }
 
 // Whether `decompose()` decomposes the solid of the open sheets of `tm`, given that no piece bounds
-// a volume: the sheets it inflates hold most of the area, and their outline has limbs (it fills
-// less than `maximum_outline_fill` of its convex hull).
+// a volume: the sheets it inflates (`sheet`, per face index) hold most of the area, and their
+// outline has limbs (it fills less than `maximum_outline_fill` of its convex hull).
 template <typename TriangleMesh, typename NamedParameters>
-bool decomposes_inflated_sheets(const TriangleMesh& tm, const Piece_segmentation& pieces, const NamedParameters& np)
+bool decomposes_inflated_sheets(const TriangleMesh& tm, const Piece_segmentation& pieces, const Face_corners& corners,
+                                const NamedParameters& np, std::vector<std::uint8_t>& sheet)
 {
-  std::vector<double> area;
-  const std::vector<std::uint8_t> sheet = inflated_sheet_faces(tm, pieces, np, &area);
+  // most meshes without a volume are closed pieces: no sheet to look at
+  if(std::all_of(pieces.closed.begin(), pieces.closed.end(), [](std::uint8_t c) { return c != 0; })) return false;
+  sheet = inflated_sheet_faces(tm, pieces, corners, np);
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
+  const std::vector<double>& area = shared_face_adjacency<CGAL::Sequential_tag>(tm, maps.fim, np)->area;
   double sheet_area = 0.;
   for(std::size_t i = 0; i < sheet.size(); ++i)
     if(sheet[i]) sheet_area += area[i];
   if(!(sheet_area > 0.) || sheet_area < minimum_inflated_area_fraction * pieces.area) return false;
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_corners corners(tm, maps.fim, maps.vpm);
   return outline_fill_fraction(corners.point, corners.vertex, sheet) < maximum_outline_fill;
 }
 
@@ -92,17 +92,15 @@ Composed_parts<GeomTraits> composed_parts_of_first_faces(const Composed_parts<Ge
   return r;
 }
 
-// `inflate_sheets()`; also returns, per vertex index of `tm` (`get_initialized_vertex_index_map()`),
-// its point on the side of the normals of the solid.
-template <typename TriangleMesh, typename NamedParameters, typename Point_3>
-CGAL::Surface_mesh<Point_3> inflated_sheets(const TriangleMesh& tm, const Piece_segmentation& pieces,
-                                            const NamedParameters& np, std::vector<Point_3>& raised)
+// The solid of `inflate_sheets()` from the corners of `tm` and the faces to inflate; also returns,
+// per vertex index of `tm` (`Face_corners`), its point on the side of the normals of the solid.
+template <typename Point_3>
+CGAL::Surface_mesh<Point_3> inflated_sheets(const Face_corners& corners, const std::vector<std::uint8_t>& sheet,
+                                            std::vector<Point_3>& raised)
 {
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_corners corners(tm, maps.fim, maps.vpm);
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<std::size_t, 3> > triangles;
-  inflate_sheet_soup(corners.point, corners.vertex, inflated_sheet_faces(tm, pieces, np), points, triangles);
+  inflate_sheet_soup(corners.point, corners.vertex, sheet, points, triangles);
   std::vector<Point_3> soup_points;
   for(const Eigen::Vector3d& p : points) soup_points.emplace_back(p[0], p[1], p[2]);
   raised.assign(soup_points.begin(), soup_points.begin() + std::ptrdiff_t(corners.point.size()));
@@ -144,8 +142,10 @@ CGAL::Surface_mesh<typename GetGeomTraits<TriangleMesh, NamedParameters>::type::
 inflate_sheets(const TriangleMesh& tm, const Piece_segmentation& pieces,
                const NamedParameters& np = CGAL::parameters::default_values())
 {
+  const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
+  const internal::Face_corners corners(tm, maps.fim, maps.vpm);
   std::vector<typename GetGeomTraits<TriangleMesh, NamedParameters>::type::Point_3> raised;
-  return internal::inflated_sheets(tm, pieces, np, raised);
+  return internal::inflated_sheets(corners, internal::inflated_sheet_faces(tm, pieces, corners, np), raised);
 }
 
 } // namespace Part_decomposition
