@@ -24,6 +24,7 @@
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/segmentation_metrics.h>
 
 #include "decomposition_settings.h"

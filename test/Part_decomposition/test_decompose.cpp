@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/Part_decomposer.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>

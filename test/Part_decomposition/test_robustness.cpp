@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/Part_decomposer.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>

@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/Part_decomposer.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/fitting_zones.h>
 

@@ -9,38 +9,21 @@
 #define CGAL_PART_DECOMPOSITION_DECOMPOSE_H
 
 #include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/fitting_zones.h>
-#include <CGAL/Part_decomposition/flow_freeze_prior.h>
-#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
-#include <CGAL/Part_decomposition/over_segmentation.h>
-#include <CGAL/Part_decomposition/part_composition.h>
-#include <CGAL/Part_decomposition/part_hierarchy.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/piece_segmentation.h>
-#include <CGAL/Part_decomposition/primitive_assignment.h>
-#include <CGAL/Part_decomposition/sheet_inflation.h>
-#include <CGAL/Part_decomposition/superquadric_fitting.h>
-#include <CGAL/Part_decomposition/thin_sheet_merging.h>
-#include <CGAL/Part_decomposition/tsdf.h>
+#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/internal/parameter_checks.h>
-#include <CGAL/Part_decomposition/internal/patch_operations.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
-#include <CGAL/Bbox_3.h>
-#include <CGAL/Default.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#include <boost/property_map/property_map.hpp>
-
-#include <algorithm>
-#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <iterator>
-#include <utility>
+#include <limits>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -66,113 +49,8 @@ struct Stage_timings
   bool overlapping = false;
 };
 
+/// \cond SKIP_IN_MANUAL
 namespace internal {
-
-// Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
-// parameter out of its range is an error whatever the mesh.
-template <typename NamedParameters>
-void check_stage_parameters(const NamedParameters& np)
-{
-  read_prior_parameters(np);
-  read_tsdf_parameters(np);
-  read_fitting_zone_parameters(np);
-  read_fitting_parameters(np);
-  read_over_segmentation_parameters(np);
-  read_assignment_parameters(np);
-  read_sheet_merging_parameters(np);
-  read_piece_parameters(np);
-  read_hierarchy_parameters(np);
-}
-
-inline bool any_of_flags(const std::vector<std::uint8_t>& flags)
-{
-  return std::find(flags.begin(), flags.end(), std::uint8_t(1)) != flags.end();
-}
-
-// Per face index, whether its piece is flagged: the faces whose thin parts the grid refines are
-// those of the pieces the volume stages may decompose.
-inline std::vector<std::uint8_t> faces_of_pieces(const Piece_segmentation& pieces, const std::vector<std::uint8_t>& flags)
-{
-  std::vector<std::uint8_t> out(pieces.piece.size(), 0);
-  for(std::size_t i = 0; i < out.size(); ++i) out[i] = flags[pieces.piece[i]];
-  return out;
-}
-
-// The results of the stages of one decomposition, as the stage functions return them.
-template <typename GeomTraits>
-struct Stage_results
-{
-  Piece_segmentation pieces;
-  std::vector<std::uint8_t> volumetric_pieces; // per piece; empty before the distance field
-  Hierarchical_prior prior;
-  Truncated_signed_distance_field tsdf;
-  Fitting_zones zones;
-  Superquadric_fitting_result<GeomTraits> fitting;
-  Volumetric_parts volumetric;
-  Composed_parts<GeomTraits> composed;
-  Part_hierarchy<GeomTraits> hierarchy;
-};
-
-// The volumetric stages; returns whether the primitives were fitted (not if the distance field
-// shows that no piece bounds a volume). The distance field is computed on the grid the prior asks
-// for. The fitting's own loops are short (one primitive at a time), so its sequential part is the
-// longest of the pipeline: the over-segmentation runs next to the volume stages.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-bool run_volumetric_stages(const TriangleMesh& tm, const NamedParameters& np, bool use_pieces,
-                           const std::vector<std::uint8_t>& splittable, Stage_results<GT>& s, Stage_timings& t)
-{
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  bool fitted = false;
-  s.volumetric.patches.assign(num_faces(tm), 0);
-  std::vector<std::uint8_t> thin_faces;
-  if(use_pieces) thin_faces = faces_of_pieces(s.pieces, splittable);
-  run_side_by_side<ConcurrencyTag>(
-    [&] {
-      add_seconds(t.prior, [&] { s.prior = compute_flow_freeze_prior<ConcurrencyTag>(tm, np); });
-      add_seconds(t.tsdf, [&] {
-        s.tsdf = compute_tsdf_of_checked_mesh<ConcurrencyTag>(tm, &s.prior, np, use_pieces ? &thin_faces : nullptr);
-      });
-      if(use_pieces)
-      {
-        s.volumetric_pieces = Part_decomposition::volumetric_pieces<ConcurrencyTag>(tm, s.pieces, s.tsdf, np);
-        if(!any_of_flags(s.volumetric_pieces)) return;
-      }
-      const int cap = read_fitting_parameters(np).fitting_resolution_cap;
-      add_seconds(t.fitting_zones, [&] {
-        s.zones = compute_fitting_zones<ConcurrencyTag>(s.prior, s.tsdf,
-                                                        fitting_resolutions(s.prior.resolutions, cap), np);
-      });
-      add_seconds(t.fitting, [&] { s.fitting = fit_superquadrics<ConcurrencyTag, GT>(s.prior, s.tsdf, s.zones, np); });
-      t.fitting += t.fitting_zones;
-      fitted = true;
-    },
-    [&] {
-      add_seconds(t.over_segmentation, [&] {
-        over_segment<ConcurrencyTag>(tm, boost::make_iterator_property_map(s.volumetric.patches.begin(), fim), np);
-      });
-    });
-  return fitted;
-}
-
-// The parts of the primitives (assignment, residual patches, thin-sheet merge) and their
-// composition with the pieces.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fitted, Stage_results<GT>& s)
-{
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  Volumetric_parts& v = s.volumetric;
-  if(fitted)
-  {
-    v.parts.assign(num_faces(tm), 0);
-    const auto part_map = boost::make_iterator_property_map(v.parts.begin(), fim);
-    v.part_to_primitive = assign_parts<ConcurrencyTag>(
-      tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.tsdf, part_map, np);
-    if(read_assignment_parameters(np).keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
-    if(read_sheet_merging_parameters(np).merge_thin_sheets)
-      merge_thin_sheet_parts<ConcurrencyTag>(tm, part_map, v.part_to_primitive, s.fitting, s.tsdf, np);
-  }
-  s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
-}
 
 // The parts of one decomposition: per face index its part, per part its superquadric.
 template <typename GeomTraits>
@@ -184,492 +62,101 @@ struct Decomposition_pass
   std::size_t default_number_of_parts = 0; // at the default granularity (maximum_merge_cost)
 };
 
-// The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
-// it is not that of the composed parts.
-template <typename GT, typename TriangleMesh, typename NamedParameters>
-void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
-                   Decomposition_pass<GT>& out, Stage_timings& t)
+// A given value converted to the type of the pipeline; a value the type cannot hold (a negative
+// count, a fraction where an integer is meant) is out of the range of the parameter `name`.
+template <typename T, typename U>
+T pipeline_value(const U& value, const char* name)
+{
+  if constexpr(std::is_same_v<T, bool> || std::is_enum_v<T> || !std::is_arithmetic_v<U>)
+    return T(value);
+  else if constexpr(std::is_floating_point_v<T>)
+    return T(value);
+  else
+  {
+    const long double v = static_cast<long double>(value);
+    const bool fits = v == std::floor(v) && v >= static_cast<long double>((std::numeric_limits<T>::min)()) &&
+                      v <= static_cast<long double>((std::numeric_limits<T>::max)());
+    check_parameter(fits, name);
+    return T(value);
+  }
+}
+
+template <typename T>
+struct Pipeline_value
+{
+  template <typename U>
+  static T of(const U& value, const char* name) { return pipeline_value<T>(value, name); }
+};
+
+template <typename E>
+struct Pipeline_value<std::vector<E> >
+{
+  template <typename Range>
+  static std::vector<E> of(const Range& range, const char* name)
+  {
+    std::vector<E> v;
+    for(const auto& x : range) v.push_back(pipeline_value<E>(x, name));
+    return v;
+  }
+};
+
+template <typename E>
+struct Pipeline_value<std::optional<E> >
+{
+  template <typename U>
+  static std::optional<E> of(const U& value, const char* name)
+  {
+    const auto given = as_optional(value);
+    return given ? std::optional<E>(pipeline_value<E>(*given, name)) : std::nullopt;
+  }
+};
+
+// The value of the parameter `tag` of `np` in the type of the pipeline, `fallback` if absent.
+template <typename T, typename NamedParameters, typename Tag>
+T pipeline_parameter(const NamedParameters& np, Tag tag, const T& fallback, const char* name)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return fallback;
+  else
+    return Pipeline_value<T>::of(CGAL::parameters::get_parameter(np, tag), name);
+}
+
+// The pack that `decompose()` hands its pipeline: every value present, in one type per mesh, vertex
+// point map, face index map and traits, whatever parameters the program gave.
+template <typename TriangleMesh, typename NamedParameters>
+auto pipeline_parameters(const TriangleMesh& tm, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const Hierarchy_parameters hp = read_hierarchy_parameters(np);
-  Part_hierarchy<GT>* hierarchy_out =
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  Part_hierarchy<GT>* const hierarchy =
     choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  const std::size_t composed = s.composed.number_of_parts();
-  std::size_t K = composed;
-  out.default_number_of_parts = composed;
-  if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && composed > 1))
-    add_seconds(t.hierarchy, [&] {
-      s.hierarchy = build_part_hierarchy(tm, s.pieces, s.composed, np);
-      out.default_number_of_parts = s.hierarchy.level_below_cost(composed, hp.maximum_merge_cost);
-      K = hp.has_number_of_parts ? hp.number_of_parts : out.default_number_of_parts;
-      if(hierarchy_out != nullptr)
-      {
-        *hierarchy_out = s.hierarchy;
-        hierarchy_out->default_number_of_parts = out.default_number_of_parts;
-      }
-    });
-  if(K == composed && !hp.has_number_of_parts)
-  {
-    out.parts = s.composed.parts;
-    out.primitives = s.composed.part_primitives;
-  }
-  else
-  {
-    K = (std::min)(K, s.hierarchy.number_of_leaves());
-    out.parts = s.hierarchy.labels(K);
-    out.primitives = s.hierarchy.primitives(K);
-  }
-  out.number_of_parts = K;
+  return parameters::combine(
+    CGAL::parameters::geom_traits(choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits))),
+    CGAL::parameters::vertex_point_map(vpm),
+    CGAL::parameters::face_index_map(CGAL::get_initialized_face_index_map(tm, np)),
+    CGAL::parameters::verbose(bool(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), defaults::verbose))),
+    CGAL::parameters::number_of_points_per_face(pipeline_parameter<unsigned int>(
+      np, CGAL::internal_np::number_of_points_per_face, defaults::number_of_points_per_face,
+      "number_of_points_per_face")),
+    parameters::normalization(optional_parameter<Normalization>(np, internal_np::normalization)),
+    parameters::part_hierarchy(hierarchy)
+#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, TYPE, DEFAULT)                                \
+    , parameters::NAME(pipeline_parameter<TYPE>(np, internal_np::NAME, DEFAULT, #NAME))
+    CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE)
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_VALUE
+  );
 }
 
-// The stage functions in their documented order up to the composed parts, their results left in
-// `s`; returns whether a primitive was fitted. `np` holds the normalization.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-bool compose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s, Stage_timings& timings)
-{
-  const bool use_pieces = read_piece_parameters(np).use_pieces;
-  std::vector<std::uint8_t> splittable;
-  add_seconds(timings.pieces, [&] {
-    if(!use_pieces) return;
-    s.pieces = segment_pieces<ConcurrencyTag>(tm, np);
-    splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(tm, s.pieces, np);
-  });
-  const bool needs_volume = !use_pieces || any_of_flags(splittable);
-  const bool fitted =
-    needs_volume && run_volumetric_stages<ConcurrencyTag>(tm, np, use_pieces, splittable, s, timings);
-  add_seconds(timings.assignment, [&] { run_part_stages<ConcurrencyTag>(tm, np, fitted, s); });
-  return fitted;
-}
-
-// The composed parts of `tm` from those of the solid of its open sheets (`inflate_sheets()` of the
-// faces `sheet`); returns per vertex index the point of `tm` on the solid's side of its normals.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-std::vector<typename GT::Point_3> compose_inflated_sheets(const TriangleMesh& tm, const NamedParameters& np,
-                                                          const Face_corners& corners,
-                                                          const std::vector<std::uint8_t>& sheet, Stage_results<GT>& s,
-                                                          Stage_timings& timings)
-{
-  std::vector<typename GT::Point_3> raised;
-  const auto solid = inflated_sheets(corners, sheet, raised);
-  const auto solid_np = parameters::combine(np, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, solid)),
-                                            CGAL::parameters::face_index_map(get(CGAL::face_index, solid)),
-                                            face_graphs_parameter(nullptr));
-  Stage_results<GT> r;
-  compose_once<ConcurrencyTag>(
-    solid, parameters::combine(solid_np, parameters::normalization(compute_normalization(solid, solid_np))), r, timings);
-  s.composed = composed_parts_of_first_faces(r.composed, num_faces(tm));
-  return raised;
-}
-
-// `decompose()`: the stage functions in their documented order, their results left in `s`; the
-// solid of the open sheets when no piece bounds a volume. `np` holds the normalization.
-template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
-void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_results<GT>& s,
-                    Decomposition_pass<GT>& out, Stage_timings& timings)
-{
-  timings.overlapping = is_parallel_tag<ConcurrencyTag>();
-  // the stage times start at 0: each is added once
-  const bool fitted = compose_once<ConcurrencyTag>(tm, np, s, timings);
-  if(fitted || !read_piece_parameters(np).use_pieces) return cut_hierarchy(tm, np, s, out, timings);
-  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_corners corners(tm, maps.fim, maps.vpm);
-  std::vector<std::uint8_t> sheet;
-  if(!decomposes_inflated_sheets(tm, s.pieces, corners, np, sheet)) return cut_hierarchy(tm, np, s, out, timings);
-  // the hierarchy measures the boxes of the sheets' parts on the solid's side of their normals: a
-  // flat part has no volume, so that every merge of flat parts would be cheap
-  const std::vector<typename GT::Point_3> raised =
-    compose_inflated_sheets<ConcurrencyTag>(tm, np, corners, sheet, s, timings);
-  const auto raised_map = boost::make_iterator_property_map(raised.begin(), CGAL::get_initialized_vertex_index_map(tm));
-  cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map), face_graphs_parameter(nullptr)),
-                s, out, timings);
-}
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
+void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np,
+                               Decomposition_pass<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>& pass,
+                               Stage_timings& timings);
 
 } // namespace internal
-
-/*!
-\ingroup PkgPartDecompositionRef
-The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1), keeping
-the result of each stage for inspection. Its constructor fixes the mesh, its maps and its
-normalization; each function runs one stage with the stage function of the same meaning
-(`segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`, `compute_fitting_zones()`,
-`fit_superquadrics()`, `over_segment()`, then `compose_parts()` for the parts and
-`build_part_hierarchy()`), with the named parameters given to it, to which the mesh, vertex point
-map, face index map and normalization of the decomposer are added.
-
-A stage computes the earlier stages it needs that are missing, with its own named parameters, and
-drops the results that depended on an earlier result it replaces: the stages may be called in
-any order, and `compose_parts()` alone gives the parts of `decompose()` without the hierarchy's
-merges. The results of a stage not computed yet are empty. A named parameter out of its range,
-and a `normalization` or `normalization_margin` other than the decomposer's, throw
-`Invalid_input` (`INVALID_PARAMETER`).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam GeomTraits a model of `PartDecompositionTraits`; `CGAL::Default` means the kernel of the
-points of `VertexPointMap`
-\tparam VertexPointMap a model of `ReadablePropertyMap` with
-`boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as
-value type; `CGAL::Default` means the internal vertex point map of `TriangleMesh`
-\tparam FaceIndexMap a model of `ReadablePropertyMap` with
-`boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type,
-a bijection onto `[0, num_faces(tm))`; `CGAL::Default` means the (initialized) internal face index
-map of `TriangleMesh`
-*/
-template <typename TriangleMesh, typename GeomTraits_ = CGAL::Default, typename VertexPointMap_ = CGAL::Default,
-          typename FaceIndexMap_ = CGAL::Default>
-class Part_decomposer
-{
-public:
-  /// \name Types
-  /// @{
-
-  /// the vertex point map
-  typedef typename CGAL::Default::Get<
-    VertexPointMap_, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type
-    Vertex_point_map;
-  /// the face index map
-  typedef typename CGAL::Default::Get<
-    FaceIndexMap_, typename GetInitializedFaceIndexMap<TriangleMesh>::const_type>::type
-    Face_index_map;
-  /// the geometric traits
-  typedef typename CGAL::Default::Get<
-    GeomTraits_, typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type
-    Geom_traits;
-  /// the superquadric type
-  typedef Superquadric<Geom_traits> Primitive;
-  /// @}
-
-  /// \name Creation
-  /// @{
-  /*!
-  prepares the decomposition of `tm`, with its internal vertex point map and face index map and
-  the default normalization margin: checks the input and computes its normalization.
-  \param tm the mesh; it must outlive the decomposer and stay unchanged
-  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
-  */
-  explicit Part_decomposer(const TriangleMesh& tm)
-    : Part_decomposer(tm, get_const_property_map(CGAL::vertex_point, tm))
-  {}
-
-  /*!
-  prepares the decomposition of `tm` with its internal face index map: checks the input and
-  computes its normalization.
-  \param tm the mesh; it must outlive the decomposer and stay unchanged
-  \param vpm the vertex point map
-  \param margin the free margin of the normalization (see `compute_normalization()`)
-  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
-  */
-  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = defaults::normalization_margin)
-    : Part_decomposer(tm, vpm, CGAL::get_initialized_face_index_map(tm), margin)
-  {}
-
-  /*!
-  prepares the decomposition of `tm`: checks the input and computes its normalization.
-  \param tm the mesh; it must outlive the decomposer and stay unchanged
-  \param vpm the vertex point map
-  \param fim the face index map; every stage indexes the faces with it
-  \param margin the free margin of the normalization (see `compute_normalization()`)
-  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
-  */
-  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, Face_index_map fim,
-                  double margin = defaults::normalization_margin)
-    : m_tm(tm), m_vpm(vpm), m_fim(fim), m_margin(margin)
-  {
-    check_input(tm, CGAL::parameters::vertex_point_map(m_vpm).face_index_map(m_fim));
-    m_normalization = compute_normalization(
-      tm, parameters::combine(CGAL::parameters::vertex_point_map(m_vpm), parameters::normalization_margin(margin)));
-  }
-  /// @}
-
-  /// \name Stages
-  /// @{
-
-  /// splits the mesh into its pieces and their regions with `Part_decomposition::segment_pieces()`;
-  /// once the distance field is computed too, an open piece that bounds a volume of it faces out
-  /// of it (`volumetric_pieces()`).
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np));
-    m_s.pieces = m_segmented;
-    m_s.volumetric_pieces.clear();
-    m_has_pieces = true;
-    drop_parts();
-    if(m_has_tsdf) volumetric_pieces(np);
-    return m_s.pieces;
-  }
-
-  /// whether the parts of `compose_parts()` with the named parameters `np` need the volumetric
-  /// stages (prior, distance field, fit, over-segmentation): with `use_pieces(false)`, or if a
-  /// piece is splittable (`splittable_pieces()`) and, once the distance field is computed, the
-  /// volumetric stages decompose it (`volumetric_pieces()`). Before the distance field is known,
-  /// it tells whether it is worth computing. Segments the pieces if they are missing.
-  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    if(!internal::read_piece_parameters(np).use_pieces) return true;
-    if(!m_has_pieces) segment_pieces(np);
-    if(m_has_tsdf) return internal::any_of_flags(volumetric_pieces(np));
-    return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
-  }
-
-  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`; the distance
-  /// field, whose grid the prior shapes, is then out of date.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
-    m_has_prior = true;
-    m_has_tsdf = false;
-    m_s.pieces = m_segmented;
-    m_s.volumetric_pieces.clear();
-    drop_fitting();
-    return m_s.prior;
-  }
-
-  /// computes the truncated signed distance field with `compute_tsdf()` on the grid the prior
-  /// asks for, computing the prior if missing; once the pieces are segmented too, an open piece
-  /// that bounds a volume of it faces out of it (`volumetric_pieces()`).
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
-    std::vector<std::uint8_t> thin_faces;
-    const bool use_pieces = internal::read_piece_parameters(np).use_pieces;
-    if(use_pieces)
-    {
-      if(!m_has_pieces) segment_pieces<ConcurrencyTag>(np);
-      thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
-                                                                m_tm, m_segmented, with_mesh(np)));
-    }
-    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
-                                                                      use_pieces ? &thin_faces : nullptr);
-    m_has_tsdf = true;
-    m_s.pieces = m_segmented;
-    m_s.volumetric_pieces.clear();
-    drop_fitting();
-    if(m_has_pieces) volumetric_pieces(np);
-    return m_s.tsdf;
-  }
-
-  /// computes the zones of the fitter with `Part_decomposition::compute_fitting_zones()` at the
-  /// `fitting_resolutions()` of the prior with the `fitting_resolution_cap` of `np`, computing the
-  /// prior and the distance field if missing. `fit_primitives()` computes them if missing.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
-    if(!m_has_tsdf) compute_distance_field<ConcurrencyTag>(np);
-    const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
-    m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
-    m_has_zones = true;
-    drop_fitting(false);
-    return m_s.zones;
-  }
-
-  /// fits the superquadrics with `fit_superquadrics()`, computing the zones (and the prior and the
-  /// distance field) if missing.
-  /// \throws Invalid_input (`INVALID_PARAMETER`) if the prior and the distance field have different
-  /// resolutions.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    check_frame_parameters(np);
-    if(!m_has_zones) compute_fitting_zones<ConcurrencyTag>(np);
-    m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
-    m_has_fitting = true;
-    drop_parts();
-    return m_s.fitting;
-  }
-
-  /// computes the over-segmentation with `Part_decomposition::over_segment()` and returns the
-  /// number of patches.
-  template <typename ConcurrencyTag = CGAL::Sequential_tag,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    m_s.volumetric.patches.assign(num_faces(m_tm), 0);
-    const std::size_t count = Part_decomposition::over_segment<ConcurrencyTag>(
-      m_tm, boost::make_iterator_property_map(m_s.volumetric.patches.begin(), m_fim), with_mesh(np));
-    m_has_patches = true;
-    drop_parts();
-    return count;
-  }
-
-  /*!
-  computes the parts as `decompose()` does before its part hierarchy, writes the part id (0 to
-  `K-1`) of every face to `face_part_map`, once, and returns `K`: if `needs_volumetric_stages(np)`,
-  the primitives are assigned to the patches (`assign_parts()`), the residual patches kept
-  (`separate_residual_patches()`) with `keep_residual_patches(true)` and the thin sheets merged
-  (`merge_thin_sheet_parts()`) unless `merge_thin_sheets(false)` is given; then the parts are
-  composed with the pieces (`Part_decomposition::compose_parts()`). The stages it needs are
-  computed if missing. Part `k` is explained by `part_primitives()[k]`.
-  \tparam FacePartMap a model of `WritablePropertyMap` with
-  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
-  */
-  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
-            typename NamedParameters = CGAL::parameters::Default_named_parameters>
-  std::size_t compose_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
-  {
-    const auto mnp = with_mesh(np);
-    m_use_pieces = internal::read_piece_parameters(np).use_pieces;
-    bool fitted = needs_volumetric_stages(np);
-    // the distance field may show that no piece bounds a volume
-    if(fitted && m_use_pieces && !m_has_tsdf)
-    {
-      compute_distance_field<ConcurrencyTag>(np);
-      fitted = needs_volumetric_stages(np);
-    }
-    if(fitted)
-    {
-      if(!m_has_fitting) fit_primitives<ConcurrencyTag>(np);
-      if(!m_has_patches) over_segment<ConcurrencyTag>(np);
-    }
-    m_s.volumetric.parts.clear();
-    m_s.volumetric.residual_faces.clear();
-    internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s);
-    m_has_parts = true;
-    m_has_hierarchy = false;
-    internal::put_face_values(m_tm, m_fim, m_s.composed.parts, face_part_map);
-    return m_s.composed.number_of_parts();
-  }
-
-  /*!
-  builds the part hierarchy of the parts of `compose_parts()` with
-  `Part_decomposition::build_part_hierarchy(tm, pieces, parts, np)` and returns it, composing the
-  parts with default named parameters if they are missing. The parts of `compose_parts()` are
-  level `part_primitives().size()` of the tree. `decompose()` goes on from that level with
-  `Part_hierarchy::level_below_cost()` (named parameter `maximum_merge_cost`), from which merges
-  are ordered by size first.
-  */
-  const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
-  {
-    internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
-    if(!m_has_parts) compose_parts(boost::dummy_property_map());
-    m_s.hierarchy = build_part_hierarchy(
-      m_tm, m_s.pieces, m_s.composed,
-      with_mesh(parameters::combine(parameters::use_pieces(m_use_pieces), parameters::maximum_merge_cost(maximum_merge_cost))));
-    m_has_hierarchy = true;
-    return m_s.hierarchy;
-  }
-
-  /*!
-  writes the parts of level `k` of the hierarchy to `face_part_map` (ids `0` to `k - 1`, numbered
-  by smallest face index), their superquadrics to `primitives` in the same order, and returns `k`,
-  building the hierarchy if it is missing. A `k` above the number of leaves is clamped to it.
-  \tparam FacePartMap a model of `WritablePropertyMap` with
-  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
-  \tparam OutputIterator a model of `OutputIterator` accepting `Superquadric<Geom_traits>`
-  \throws Invalid_input (`INVALID_PARAMETER`) if `k` is 0.
-  */
-  template <typename FacePartMap, typename OutputIterator = CGAL::Emptyset_iterator>
-  std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map, OutputIterator primitives = OutputIterator())
-  {
-    internal::check_parameter(k >= 1, "number_of_parts");
-    if(!m_has_hierarchy) build_hierarchy();
-    k = (std::min)(k, m_s.hierarchy.number_of_leaves());
-    internal::put_face_values(m_tm, m_fim, m_s.hierarchy.labels(k), face_part_map);
-    for(const Primitive& q : m_s.hierarchy.primitives(k)) *primitives++ = q;
-    return k;
-  }
-  /// @}
-
-  /// \name Results
-  /// Each is empty until its stage has run.
-  /// @{
-
-  /// the pieces and their regions; once the distance field is computed, an open piece that
-  /// bounds a volume faces out of it, and its regions are those of that orientation.
-  const Piece_segmentation& pieces() const { return m_s.pieces; }
-  /// the normalization of the mesh into the cube of the grids.
-  const Normalization& normalization() const { return m_normalization; }
-  /// the face index map that indexes `patches()` and `parts()`.
-  const Face_index_map& face_index_map() const { return m_fim; }
-  /// the prior.
-  const Hierarchical_prior& prior() const { return m_s.prior; }
-  /// the zones of the fitter.
-  const Fitting_zones& fitting_zones() const { return m_s.zones; }
-  /// the distance field.
-  const Truncated_signed_distance_field& distance_field() const { return m_s.tsdf; }
-  /// the fitted primitives and claimed leaves.
-  const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_s.fitting; }
-  /// the patch of each face, indexed by the face index map.
-  const std::vector<std::size_t>& patches() const { return m_s.volumetric.patches; }
-  /// the parts of the volumetric stages, before their composition with the pieces.
-  const Volumetric_parts& volumetric_parts() const { return m_s.volumetric; }
-  /// the parts of `compose_parts()`.
-  const Composed_parts<Geom_traits>& composed_parts() const { return m_s.composed; }
-  /// the part of each face, indexed by the face index map.
-  const std::vector<std::size_t>& parts() const { return m_s.composed.parts; }
-  /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`.
-  const std::vector<std::size_t>& part_to_primitive() const { return m_s.composed.part_to_primitive; }
-  /// for each part, its superquadric in input coordinates (see `Composed_parts::part_primitives`).
-  const std::vector<Primitive>& part_primitives() const { return m_s.composed.part_primitives; }
-  /// per part, 1 if it is a residual part (see the named parameter `keep_residual_patches` of
-  /// `decompose()`), whose superquadric is only the box-like superquadric of its bounding box.
-  const std::vector<std::uint8_t>& residual_parts() const { return m_s.composed.residual_parts; }
-  /// the part hierarchy.
-  const Part_hierarchy<Geom_traits>& hierarchy() const { return m_s.hierarchy; }
-  /// @}
-
-private:
-  // the stage's parameters with the decomposer's mesh maps and normalization
-  template <typename NamedParameters>
-  auto with_mesh(const NamedParameters& np) const
-  {
-    check_frame_parameters(np);
-    return parameters::combine(np, CGAL::parameters::vertex_point_map(m_vpm), CGAL::parameters::face_index_map(m_fim),
-                               parameters::normalization(m_normalization));
-  }
-
-  // A normalization or margin given to one stage would put its grids in another frame.
-  template <typename NamedParameters>
-  void check_frame_parameters(const NamedParameters& np) const
-  {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    internal::check_parameter(
-      internal::same_frame(choose_parameter(get_parameter(np, internal_np::normalization), m_normalization), m_normalization),
-      "normalization", "the decomposer's (same center and scale)");
-    internal::check_parameter(choose_parameter(get_parameter(np, internal_np::normalization_margin), m_margin) == m_margin,
-                              "normalization_margin", "the decomposer's (given to its constructor)");
-  }
-
-  // The volumetric pieces, computed once per pieces and distance field (they turn the pieces).
-  template <typename NamedParameters>
-  const std::vector<std::uint8_t>& volumetric_pieces(const NamedParameters& np)
-  {
-    if(m_s.volumetric_pieces.empty())
-      m_s.volumetric_pieces = Part_decomposition::volumetric_pieces(m_tm, m_s.pieces, m_s.tsdf, with_mesh(np));
-    return m_s.volumetric_pieces;
-  }
-
-  void drop_parts() { m_has_parts = m_has_hierarchy = false; }
-  void drop_fitting(bool zones = true)
-  {
-    if(zones) m_has_zones = false;
-    m_has_fitting = false;
-    drop_parts();
-  }
-
-  const TriangleMesh& m_tm;
-  Vertex_point_map m_vpm;
-  Face_index_map m_fim;
-  double m_margin;
-  Normalization m_normalization;
-  Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
-  internal::Stage_results<Geom_traits> m_s;
-  bool m_use_pieces = true; // of the last compose_parts(), for the hierarchy
-  // which results are up to date; the stages compute the missing ones
-  bool m_has_pieces = false, m_has_prior = false, m_has_tsdf = false, m_has_zones = false, m_has_fitting = false,
-       m_has_patches = false, m_has_parts = false, m_has_hierarchy = false;
-};
+/// \endcond
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -1075,27 +562,11 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   const auto t0 = std::chrono::steady_clock::now();
-  check_input(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  // the normalization of every stage; a given one must be it
-  const Normalization normalization = compute_normalization(tm, np);
-  internal::check_parameter(
-    internal::same_frame(choose_parameter(get_parameter(np, internal_np::normalization), normalization), normalization),
-    "normalization", "the one computed from normalization_margin (same center and scale)");
-  internal::check_stage_parameters(np);
-  Stage_timings timings;
+  const auto pipeline_np = internal::pipeline_parameters(tm, np);
   internal::Decomposition_pass<GT> pass;
-  internal::Stage_results<GT> s;
-  // every stage reads the face graphs built here once
-  const internal::Face_graphs graphs = internal::add_seconds(timings.pieces, [&] {
-    return internal::build_face_graphs<ConcurrencyTag>(
-      tm, fim, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)),
-      np);
-  });
-  internal::decompose_once<ConcurrencyTag>(
-    tm, parameters::combine(np, parameters::normalization(normalization), internal::face_graphs_parameter(&graphs)), s,
-    pass, timings);
-  internal::put_face_values(tm, fim, pass.parts, face_part_map);
+  Stage_timings timings;
+  internal::decompose_with_parameters<ConcurrencyTag>(tm, pipeline_np, pass, timings);
+  internal::put_face_values(tm, get_parameter(pipeline_np, CGAL::internal_np::face_index), pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;
   timings.total = internal::seconds_since(t0);
@@ -1107,5 +578,43 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
 
 } // namespace Part_decomposition
 } // namespace CGAL
+
+// The pipeline: compiled once for all in the library CGAL::Part_decomposition for the types
+// below (see the manual), or in the program, for any mesh.
+#if defined(CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY) || defined(CGAL_PART_DECOMPOSITION_BUILDING_LIBRARY)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <utility>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Compiled_mesh;
+typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
+  Compiled_parameters;
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#define CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(EXTERN, CONCURRENCY_TAG)                      \
+  namespace CGAL { namespace Part_decomposition { namespace internal {                            \
+  EXTERN template void decompose_with_parameters<CONCURRENCY_TAG, Compiled_mesh, Compiled_parameters>( \
+    const Compiled_mesh&, const Compiled_parameters&, Decomposition_pass<CGAL::Epick>&, Stage_timings&); \
+  } } }
+/// \endcond
+#endif
+
+#ifdef CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY
+CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(extern, CGAL::Sequential_tag)
+#ifdef CGAL_LINKED_WITH_TBB
+CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(extern, CGAL::Parallel_tag)
+#endif
+#else
+#include <CGAL/Part_decomposition/pipeline.h>
+#endif
 
 #endif // CGAL_PART_DECOMPOSITION_DECOMPOSE_H

@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -197,12 +198,8 @@ namespace internal {
 template <typename TriangleMesh, typename NamedParameters>
 Normalization read_normalization(const TriangleMesh& tm, const NamedParameters& np)
 {
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  if constexpr(is_default_parameter<NamedParameters, internal_np::normalization_t>::value)
-    return compute_normalization(tm, np);
-  else
-    return get_parameter(np, internal_np::normalization);
+  const std::optional<Normalization> given = optional_parameter<Normalization>(np, internal_np::normalization);
+  return given ? *given : compute_normalization(tm, np);
 }
 
 // The one reader of the `voxel_resolutions` named parameter (any range of integers), checked by

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -25,69 +26,70 @@ namespace Part_decomposition {
 // `vertex_point_map`, `face_index_map`, `number_of_points_per_face`, `verbose`, ...) are used
 // unchanged wherever the meaning is the same.
 //
-// Each line: tag type, tag value, function name.
-#define CGAL_PART_DECOMPOSITION_PARAMETER_LIST(X)                                   \
-  /* cues and topology score (paper App. B) */                                       \
-  X(voxel_resolutions_t, voxel_resolutions, voxel_resolutions)                       \
-  X(number_of_neighbors_t, number_of_neighbors, number_of_neighbors)                 \
-  X(curvature_percentile_t, curvature_percentile, curvature_percentile)              \
-  X(use_concave_curvature_t, use_concave_curvature, use_concave_curvature)           \
-  X(cue_weights_t, cue_weights, cue_weights)                                         \
-  X(freeze_ratio_t, freeze_ratio, freeze_ratio)                                      \
-  X(use_density_t, use_density, use_density)                                        \
-  /* normalization and TSDF (App. E.2) */                                            \
-  X(normalization_t, normalization, normalization)                                   \
-  X(normalization_margin_t, normalization_margin, normalization_margin)              \
-  X(tsdf_truncation_t, tsdf_truncation, tsdf_truncation)                             \
-  X(tsdf_sign_method_t, tsdf_sign_method, tsdf_sign_method)                          \
-  X(grid_resolution_t, grid_resolution, grid_resolution)                             \
-  X(adaptive_grid_t, adaptive_grid, adaptive_grid)                                   \
-  /* superquadric fitting (App. E.2, Alg. A.2, A.3) */                               \
-  X(flow_zone_tolerance_t, flow_zone_tolerance, flow_zone_tolerance)                 \
-  X(trust_region_scales_t, trust_region_scales, trust_region_scales)                 \
-  X(body_seed_threshold_t, body_seed_threshold, body_seed_threshold)                 \
-  X(minimum_body_volume_t, minimum_body_volume, minimum_body_volume)                 \
-  X(minimum_surface_volume_t, minimum_surface_volume, minimum_surface_volume)        \
-  X(exterior_penalty_t, exterior_penalty, exterior_penalty)                          \
-  X(coverage_target_t, coverage_target, coverage_target)                             \
-  X(roi_radius_t, roi_radius, roi_radius)                                            \
-  X(interior_weight_mode_t, interior_weight_mode, interior_weight_mode)              \
-  X(maximum_number_of_primitives_t, maximum_number_of_primitives,                    \
-    maximum_number_of_primitives)                                                    \
-  X(use_freeze_zone_t, use_freeze_zone, use_freeze_zone)                             \
-  X(use_tsdf_guidance_t, use_tsdf_guidance, use_tsdf_guidance)                       \
-  X(use_body_seeds_t, use_body_seeds, use_body_seeds)                                \
-  X(fitting_resolution_cap_t, fitting_resolution_cap, fitting_resolution_cap)        \
-  X(use_exterior_band_samples_t, use_exterior_band_samples, use_exterior_band_samples) \
-  X(use_reachable_regions_t, use_reachable_regions, use_reachable_regions)          \
-  X(use_seed_exclusion_t, use_seed_exclusion, use_seed_exclusion)                    \
-  X(maximum_solver_evaluations_t, maximum_solver_evaluations, maximum_solver_evaluations) \
-  X(maximum_rejections_in_a_row_t, maximum_rejections_in_a_row, maximum_rejections_in_a_row) \
-  X(merge_primitives_t, merge_primitives, merge_primitives)                          \
-  X(minimum_merge_iou_t, minimum_merge_iou, minimum_merge_iou)                       \
-  /* over-segmentation and assignment (App. E.3, E.4) */                             \
-  X(dihedral_percentile_t, dihedral_percentile, dihedral_percentile)                 \
-  X(smoothing_iterations_t, smoothing_iterations, smoothing_iterations)              \
-  X(minimum_patch_size_t, minimum_patch_size, minimum_patch_size)                    \
-  X(patch_split_size_t, patch_split_size, patch_split_size)                          \
-  X(vote_temperature_t, vote_temperature, vote_temperature)                          \
-  X(boundary_smoothness_t, boundary_smoothness, boundary_smoothness)                 \
-  X(merge_thin_sheets_t, merge_thin_sheets, merge_thin_sheets)                       \
-  /* pieces and creases */                                                           \
-  X(use_pieces_t, use_pieces, use_pieces)                                            \
-  X(crease_angle_t, crease_angle, crease_angle)                                      \
-  X(minimum_part_area_t, minimum_part_area, minimum_part_area)                       \
-  /* the part hierarchy and residual patches */                                      \
-  X(number_of_parts_t, number_of_parts, number_of_parts)                             \
-  X(maximum_merge_cost_t, maximum_merge_cost, maximum_merge_cost)                    \
-  X(keep_residual_patches_t, keep_residual_patches, keep_residual_patches)           \
-  X(residual_tolerance_t, residual_tolerance, residual_tolerance)                    \
-  X(part_hierarchy_t, part_hierarchy, part_hierarchy)                                \
-  /* reading a mesh */                                                                \
-  X(weld_tolerance_t, weld_tolerance, weld_tolerance)                                \
-  /* the one-call decomposition */                                                   \
-  X(primitive_output_iterator_t, primitive_output_iterator, primitive_output_iterator) \
-  X(stage_timings_t, stage_timings, stage_timings)
+// The values, one line each: name, value type, default. `decompose()` hands its pipeline one
+// pack holding all of them with these types, so that the pipeline is compiled once per mesh type
+// whatever parameters a program gives (and once for all in the compiled library).
+#define CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(X)                                              \
+  /* reading a mesh */                                                                             \
+  X(weld_tolerance, double, defaults::weld_tolerance)                                              \
+  /* pieces and creases */                                                                         \
+  X(use_pieces, bool, defaults::use_pieces)                                                        \
+  X(crease_angle, double, defaults::crease_angle)                                                  \
+  X(minimum_part_area, double, defaults::minimum_part_area)                                        \
+  /* cues and topology score (paper App. B) */                                                     \
+  X(voxel_resolutions, std::vector<int>, defaults::voxel_resolutions())                            \
+  X(number_of_neighbors, unsigned int, defaults::number_of_neighbors)                              \
+  X(curvature_percentile, double, defaults::curvature_percentile)                                  \
+  X(use_concave_curvature, bool, defaults::use_concave_curvature)                                  \
+  X(cue_weights, std::vector<double>,                                                              \
+    std::vector<double>(defaults::cue_weights.begin(), defaults::cue_weights.end()))               \
+  X(freeze_ratio, double, defaults::freeze_ratio)                                                  \
+  X(use_density, bool, defaults::use_density)                                                      \
+  /* normalization and TSDF (App. E.2) */                                                          \
+  X(normalization_margin, double, defaults::normalization_margin)                                  \
+  X(tsdf_truncation, double, defaults::tsdf_truncation)                                            \
+  X(tsdf_sign_method, Tsdf_sign_method, defaults::tsdf_sign_method)                                \
+  X(grid_resolution, int, defaults::grid_resolution)                                               \
+  X(adaptive_grid, bool, defaults::adaptive_grid)                                                  \
+  /* superquadric fitting (App. E.2, Alg. A.2, A.3) */                                             \
+  X(flow_zone_tolerance, double, defaults::flow_zone_tolerance)                                    \
+  X(trust_region_scales, std::vector<double>, defaults::trust_region_scales())                     \
+  X(body_seed_threshold, double, defaults::body_seed_threshold)                                    \
+  X(minimum_body_volume, double, defaults::minimum_body_volume)                                    \
+  X(minimum_surface_volume, double, defaults::minimum_surface_volume)                              \
+  X(exterior_penalty, double, defaults::exterior_penalty)                                          \
+  X(coverage_target, double, defaults::coverage_target)                                            \
+  X(roi_radius, double, defaults::roi_radius)                                                      \
+  X(interior_weight_mode, Interior_weight_mode, defaults::interior_weight_mode)                    \
+  X(maximum_number_of_primitives, std::size_t, defaults::maximum_number_of_primitives)             \
+  X(use_freeze_zone, bool, defaults::use_freeze_zone)                                              \
+  X(use_tsdf_guidance, bool, defaults::use_tsdf_guidance)                                          \
+  X(use_body_seeds, bool, defaults::use_body_seeds)                                                \
+  X(fitting_resolution_cap, int, defaults::fitting_resolution_cap)                                 \
+  X(use_exterior_band_samples, bool, defaults::use_exterior_band_samples)                          \
+  X(use_reachable_regions, bool, defaults::use_reachable_regions)                                  \
+  X(use_seed_exclusion, bool, defaults::use_seed_exclusion)                                        \
+  X(maximum_solver_evaluations, int, defaults::maximum_solver_evaluations)                         \
+  X(maximum_rejections_in_a_row, std::size_t, defaults::maximum_rejections_in_a_row)               \
+  X(merge_primitives, bool, defaults::merge_primitives)                                            \
+  X(minimum_merge_iou, double, defaults::minimum_merge_iou)                                        \
+  /* over-segmentation and assignment (App. E.3, E.4) */                                           \
+  X(dihedral_percentile, double, defaults::dihedral_percentile)                                    \
+  X(smoothing_iterations, unsigned int, defaults::smoothing_iterations)                            \
+  X(minimum_patch_size, double, defaults::minimum_patch_size)                                      \
+  X(patch_split_size, double, defaults::patch_split_size)                                          \
+  X(vote_temperature, double, defaults::vote_temperature)                                          \
+  X(boundary_smoothness, double, defaults::boundary_smoothness)                                    \
+  X(merge_thin_sheets, bool, defaults::merge_thin_sheets)                                          \
+  /* the part hierarchy and residual patches; number_of_parts: none, the default granularity */    \
+  X(number_of_parts, std::optional<std::size_t>, std::optional<std::size_t>())                     \
+  X(maximum_merge_cost, double, defaults::maximum_merge_cost)                                      \
+  X(keep_residual_patches, bool, defaults::keep_residual_patches)                                  \
+  X(residual_tolerance, double, defaults::residual_tolerance)
+
+// The objects: a normalization, and what `decompose()` reports.
+#define CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(X)                                             \
+  X(normalization) X(part_hierarchy) X(primitive_output_iterator) X(stage_timings)
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -447,6 +449,32 @@ constexpr const Parameter_description* find_parameter(const char* name)
   return nullptr;
 }
 
+// The value of a parameter whose absence means something (`number_of_parts`, `normalization`);
+// empty if absent. The pack of `decompose()` holds such a parameter as a `std::optional`.
+template <typename T>
+std::optional<T> as_optional(const T& t)
+{
+  return t;
+}
+
+template <typename T>
+std::optional<T> as_optional(const std::optional<T>& t)
+{
+  return t;
+}
+
+template <typename T, typename NamedParameters, typename Tag>
+std::optional<T> optional_parameter(const NamedParameters& np, Tag tag)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return std::nullopt;
+  else
+  {
+    const auto given = as_optional(CGAL::parameters::get_parameter(np, tag));
+    return given ? std::optional<T>(T(*given)) : std::nullopt;
+  }
+}
+
 // The rule of the range check of `name`, as the table states it.
 constexpr const char* range_rule(const char* name)
 {
@@ -457,12 +485,15 @@ constexpr const char* range_rule(const char* name)
 
 // The table cannot miss a named parameter, nor list one that does not exist: it has one entry per
 // tag plus the three of CGAL and of the reader that it adds.
-#define CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY(TYPE, VALUE, FUNCTION)                       \
-  static_assert(internal::find_parameter(#FUNCTION) != nullptr, "parameter_table misses " #FUNCTION);
-CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
+#define CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY(NAME, ...)                                     \
+  static_assert(internal::find_parameter(#NAME) != nullptr, "parameter_table misses " #NAME);
+CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
+CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
 #undef CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY
-#define CGAL_PART_DECOMPOSITION_COUNT_TAG(TYPE, VALUE, FUNCTION) +1
-static_assert(std::size(parameter_table) == 2 CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_COUNT_TAG),
+#define CGAL_PART_DECOMPOSITION_COUNT_TAG(NAME, ...) +1
+static_assert(std::size(parameter_table) ==
+                2 CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_COUNT_TAG)
+                  CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_COUNT_TAG),
               "parameter_table lists a parameter that has no tag");
 #undef CGAL_PART_DECOMPOSITION_COUNT_TAG
 static_assert(internal::find_parameter("number_of_points_per_face") && internal::find_parameter("verbose"),
@@ -471,8 +502,9 @@ static_assert(internal::find_parameter("number_of_points_per_face") && internal:
 
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {
-#define CGAL_PART_DECOMPOSITION_DECLARE_TAG(TYPE, VALUE, FUNCTION) enum TYPE { VALUE };
-CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_DECLARE_TAG)
+#define CGAL_PART_DECOMPOSITION_DECLARE_TAG(NAME, ...) enum NAME##_t { NAME };
+CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_TAG)
+CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_TAG)
 #undef CGAL_PART_DECOMPOSITION_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -503,13 +535,14 @@ Each function is `template <typename T> Named_function_parameters<T, Tag> name(c
 namespace parameters {
 
 /// \cond SKIP_IN_MANUAL
-#define CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION(TYPE, VALUE, FUNCTION)                       \
-  template <typename T>                                                                     \
-  CGAL::Named_function_parameters<T, internal_np::TYPE> FUNCTION(const T& t)                \
-  {                                                                                         \
-    return CGAL::Named_function_parameters<T, internal_np::TYPE>(t);                        \
+#define CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION(NAME, ...)                                      \
+  template <typename T>                                                                       \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                  \
+  {                                                                                           \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t);                      \
   }
-CGAL_PART_DECOMPOSITION_PARAMETER_LIST(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
+CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
+CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
 #undef CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION
 
 /// \endcond

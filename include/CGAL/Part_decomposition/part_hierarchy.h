@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -49,8 +50,9 @@ Hierarchy_parameters read_hierarchy_parameters(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   namespace inp = Part_decomposition::internal_np;
   Hierarchy_parameters p;
-  p.has_number_of_parts = !CGAL::parameters::is_default_parameter<NamedParameters, inp::number_of_parts_t>::value;
-  p.number_of_parts = choose_parameter(get_parameter(np, inp::number_of_parts), std::size_t(0));
+  const std::optional<std::size_t> k = optional_parameter<std::size_t>(np, inp::number_of_parts);
+  p.has_number_of_parts = k.has_value();
+  p.number_of_parts = k.value_or(0);
   if(p.has_number_of_parts) check_parameter(p.number_of_parts >= 1, "number_of_parts");
   p.maximum_merge_cost = choose_parameter(get_parameter(np, inp::maximum_merge_cost), defaults::maximum_merge_cost);
   check_non_negative(p.maximum_merge_cost, "maximum_merge_cost");

@@ -1,0 +1,415 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_PART_DECOMPOSER_H
+#define CGAL_PART_DECOMPOSITION_PART_DECOMPOSER_H
+
+#include <CGAL/Part_decomposition/pipeline.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+
+/*!
+\ingroup PkgPartDecompositionRef
+The Hi-TOPS part decomposition of a triangle mesh, stage by stage (paper Algorithm A.1), keeping
+the result of each stage for inspection. Its constructor fixes the mesh, its maps and its
+normalization; each function runs one stage with the stage function of the same meaning
+(`segment_pieces()`, `compute_flow_freeze_prior()`, `compute_tsdf()`, `compute_fitting_zones()`,
+`fit_superquadrics()`, `over_segment()`, then `compose_parts()` for the parts and
+`build_part_hierarchy()`), with the named parameters given to it, to which the mesh, vertex point
+map, face index map and normalization of the decomposer are added.
+
+A stage computes the earlier stages it needs that are missing, with its own named parameters, and
+drops the results that depended on an earlier result it replaces: the stages may be called in
+any order, and `compose_parts()` alone gives the parts of `decompose()` without the hierarchy's
+merges. The results of a stage not computed yet are empty. A named parameter out of its range,
+and a `normalization` or `normalization_margin` other than the decomposer's, throw
+`Invalid_input` (`INVALID_PARAMETER`).
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam GeomTraits a model of `PartDecompositionTraits`; `CGAL::Default` means the kernel of the
+points of `VertexPointMap`
+\tparam VertexPointMap a model of `ReadablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GeomTraits::Point_3` as
+value type; `CGAL::Default` means the internal vertex point map of `TriangleMesh`
+\tparam FaceIndexMap a model of `ReadablePropertyMap` with
+`boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type,
+a bijection onto `[0, num_faces(tm))`; `CGAL::Default` means the (initialized) internal face index
+map of `TriangleMesh`
+*/
+template <typename TriangleMesh, typename GeomTraits_ = CGAL::Default, typename VertexPointMap_ = CGAL::Default,
+          typename FaceIndexMap_ = CGAL::Default>
+class Part_decomposer
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// the vertex point map
+  typedef typename CGAL::Default::Get<
+    VertexPointMap_, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type
+    Vertex_point_map;
+  /// the face index map
+  typedef typename CGAL::Default::Get<
+    FaceIndexMap_, typename GetInitializedFaceIndexMap<TriangleMesh>::const_type>::type
+    Face_index_map;
+  /// the geometric traits
+  typedef typename CGAL::Default::Get<
+    GeomTraits_, typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type
+    Geom_traits;
+  /// the superquadric type
+  typedef Superquadric<Geom_traits> Primitive;
+  /// @}
+
+  /// \name Creation
+  /// @{
+  /*!
+  prepares the decomposition of `tm`, with its internal vertex point map and face index map and
+  the default normalization margin: checks the input and computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  explicit Part_decomposer(const TriangleMesh& tm)
+    : Part_decomposer(tm, get_const_property_map(CGAL::vertex_point, tm))
+  {}
+
+  /*!
+  prepares the decomposition of `tm` with its internal face index map: checks the input and
+  computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \param vpm the vertex point map
+  \param margin the free margin of the normalization (see `compute_normalization()`)
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, double margin = defaults::normalization_margin)
+    : Part_decomposer(tm, vpm, CGAL::get_initialized_face_index_map(tm), margin)
+  {}
+
+  /*!
+  prepares the decomposition of `tm`: checks the input and computes its normalization.
+  \param tm the mesh; it must outlive the decomposer and stay unchanged
+  \param vpm the vertex point map
+  \param fim the face index map; every stage indexes the faces with it
+  \param margin the free margin of the normalization (see `compute_normalization()`)
+  \throws Invalid_input if `tm` cannot be decomposed (see `check_input()`).
+  */
+  Part_decomposer(const TriangleMesh& tm, Vertex_point_map vpm, Face_index_map fim,
+                  double margin = defaults::normalization_margin)
+    : m_tm(tm), m_vpm(vpm), m_fim(fim), m_margin(margin)
+  {
+    check_input(tm, CGAL::parameters::vertex_point_map(m_vpm).face_index_map(m_fim));
+    m_normalization = compute_normalization(
+      tm, parameters::combine(CGAL::parameters::vertex_point_map(m_vpm), parameters::normalization_margin(margin)));
+  }
+  /// @}
+
+  /// \name Stages
+  /// @{
+
+  /// splits the mesh into its pieces and their regions with `Part_decomposition::segment_pieces()`;
+  /// once the distance field is computed too, an open piece that bounds a volume of it faces out
+  /// of it (`volumetric_pieces()`).
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
+    m_has_pieces = true;
+    drop_parts();
+    if(m_has_tsdf) volumetric_pieces(np);
+    return m_s.pieces;
+  }
+
+  /// whether the parts of `compose_parts()` with the named parameters `np` need the volumetric
+  /// stages (prior, distance field, fit, over-segmentation): with `use_pieces(false)`, or if a
+  /// piece is splittable (`splittable_pieces()`) and, once the distance field is computed, the
+  /// volumetric stages decompose it (`volumetric_pieces()`). Before the distance field is known,
+  /// it tells whether it is worth computing. Segments the pieces if they are missing.
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    if(!internal::read_piece_parameters(np).use_pieces) return true;
+    if(!m_has_pieces) segment_pieces(np);
+    if(m_has_tsdf) return internal::any_of_flags(volumetric_pieces(np));
+    return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
+  }
+
+  /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`; the distance
+  /// field, whose grid the prior shapes, is then out of date.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
+    m_has_prior = true;
+    m_has_tsdf = false;
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
+    drop_fitting();
+    return m_s.prior;
+  }
+
+  /// computes the truncated signed distance field with `compute_tsdf()` on the grid the prior
+  /// asks for, computing the prior if missing; once the pieces are segmented too, an open piece
+  /// that bounds a volume of it faces out of it (`volumetric_pieces()`).
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
+    std::vector<std::uint8_t> thin_faces;
+    const bool use_pieces = internal::read_piece_parameters(np).use_pieces;
+    if(use_pieces)
+    {
+      if(!m_has_pieces) segment_pieces<ConcurrencyTag>(np);
+      thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
+                                                                m_tm, m_segmented, with_mesh(np)));
+    }
+    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
+                                                                      use_pieces ? &thin_faces : nullptr);
+    m_has_tsdf = true;
+    m_s.pieces = m_segmented;
+    m_s.volumetric_pieces.clear();
+    drop_fitting();
+    if(m_has_pieces) volumetric_pieces(np);
+    return m_s.tsdf;
+  }
+
+  /// computes the zones of the fitter with `Part_decomposition::compute_fitting_zones()` at the
+  /// `fitting_resolutions()` of the prior with the `fitting_resolution_cap` of `np`, computing the
+  /// prior and the distance field if missing. `fit_primitives()` computes them if missing.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
+    if(!m_has_tsdf) compute_distance_field<ConcurrencyTag>(np);
+    const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
+    m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
+      m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
+    m_has_zones = true;
+    drop_fitting(false);
+    return m_s.zones;
+  }
+
+  /// fits the superquadrics with `fit_superquadrics()`, computing the zones (and the prior and the
+  /// distance field) if missing.
+  /// \throws Invalid_input (`INVALID_PARAMETER`) if the prior and the distance field have different
+  /// resolutions.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    check_frame_parameters(np);
+    if(!m_has_zones) compute_fitting_zones<ConcurrencyTag>(np);
+    m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
+    m_has_fitting = true;
+    drop_parts();
+    return m_s.fitting;
+  }
+
+  /// computes the over-segmentation with `Part_decomposition::over_segment()` and returns the
+  /// number of patches.
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    m_s.volumetric.patches.assign(num_faces(m_tm), 0);
+    const std::size_t count = Part_decomposition::over_segment<ConcurrencyTag>(
+      m_tm, boost::make_iterator_property_map(m_s.volumetric.patches.begin(), m_fim), with_mesh(np));
+    m_has_patches = true;
+    drop_parts();
+    return count;
+  }
+
+  /*!
+  computes the parts as `decompose()` does before its part hierarchy, writes the part id (0 to
+  `K-1`) of every face to `face_part_map`, once, and returns `K`: if `needs_volumetric_stages(np)`,
+  the primitives are assigned to the patches (`assign_parts()`), the residual patches kept
+  (`separate_residual_patches()`) with `keep_residual_patches(true)` and the thin sheets merged
+  (`merge_thin_sheet_parts()`) unless `merge_thin_sheets(false)` is given; then the parts are
+  composed with the pieces (`Part_decomposition::compose_parts()`). The stages it needs are
+  computed if missing. Part `k` is explained by `part_primitives()[k]`.
+  \tparam FacePartMap a model of `WritablePropertyMap` with
+  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+  */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FacePartMap,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  std::size_t compose_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    const auto mnp = with_mesh(np);
+    m_use_pieces = internal::read_piece_parameters(np).use_pieces;
+    bool fitted = needs_volumetric_stages(np);
+    // the distance field may show that no piece bounds a volume
+    if(fitted && m_use_pieces && !m_has_tsdf)
+    {
+      compute_distance_field<ConcurrencyTag>(np);
+      fitted = needs_volumetric_stages(np);
+    }
+    if(fitted)
+    {
+      if(!m_has_fitting) fit_primitives<ConcurrencyTag>(np);
+      if(!m_has_patches) over_segment<ConcurrencyTag>(np);
+    }
+    m_s.volumetric.parts.clear();
+    m_s.volumetric.residual_faces.clear();
+    internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s);
+    m_has_parts = true;
+    m_has_hierarchy = false;
+    internal::put_face_values(m_tm, m_fim, m_s.composed.parts, face_part_map);
+    return m_s.composed.number_of_parts();
+  }
+
+  /*!
+  builds the part hierarchy of the parts of `compose_parts()` with
+  `Part_decomposition::build_part_hierarchy(tm, pieces, parts, np)` and returns it, composing the
+  parts with default named parameters if they are missing. The parts of `compose_parts()` are
+  level `part_primitives().size()` of the tree. `decompose()` goes on from that level with
+  `Part_hierarchy::level_below_cost()` (named parameter `maximum_merge_cost`), from which merges
+  are ordered by size first.
+  */
+  const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
+  {
+    internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
+    if(!m_has_parts) compose_parts(boost::dummy_property_map());
+    m_s.hierarchy = build_part_hierarchy(
+      m_tm, m_s.pieces, m_s.composed,
+      with_mesh(parameters::combine(parameters::use_pieces(m_use_pieces), parameters::maximum_merge_cost(maximum_merge_cost))));
+    m_has_hierarchy = true;
+    return m_s.hierarchy;
+  }
+
+  /*!
+  writes the parts of level `k` of the hierarchy to `face_part_map` (ids `0` to `k - 1`, numbered
+  by smallest face index), their superquadrics to `primitives` in the same order, and returns `k`,
+  building the hierarchy if it is missing. A `k` above the number of leaves is clamped to it.
+  \tparam FacePartMap a model of `WritablePropertyMap` with
+  `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type
+  \tparam OutputIterator a model of `OutputIterator` accepting `Superquadric<Geom_traits>`
+  \throws Invalid_input (`INVALID_PARAMETER`) if `k` is 0.
+  */
+  template <typename FacePartMap, typename OutputIterator = CGAL::Emptyset_iterator>
+  std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map, OutputIterator primitives = OutputIterator())
+  {
+    internal::check_parameter(k >= 1, "number_of_parts");
+    if(!m_has_hierarchy) build_hierarchy();
+    k = (std::min)(k, m_s.hierarchy.number_of_leaves());
+    internal::put_face_values(m_tm, m_fim, m_s.hierarchy.labels(k), face_part_map);
+    for(const Primitive& q : m_s.hierarchy.primitives(k)) *primitives++ = q;
+    return k;
+  }
+  /// @}
+
+  /// \name Results
+  /// Each is empty until its stage has run.
+  /// @{
+
+  /// the pieces and their regions; once the distance field is computed, an open piece that
+  /// bounds a volume faces out of it, and its regions are those of that orientation.
+  const Piece_segmentation& pieces() const { return m_s.pieces; }
+  /// the normalization of the mesh into the cube of the grids.
+  const Normalization& normalization() const { return m_normalization; }
+  /// the face index map that indexes `patches()` and `parts()`.
+  const Face_index_map& face_index_map() const { return m_fim; }
+  /// the prior.
+  const Hierarchical_prior& prior() const { return m_s.prior; }
+  /// the zones of the fitter.
+  const Fitting_zones& fitting_zones() const { return m_s.zones; }
+  /// the distance field.
+  const Truncated_signed_distance_field& distance_field() const { return m_s.tsdf; }
+  /// the fitted primitives and claimed leaves.
+  const Superquadric_fitting_result<Geom_traits>& fitting() const { return m_s.fitting; }
+  /// the patch of each face, indexed by the face index map.
+  const std::vector<std::size_t>& patches() const { return m_s.volumetric.patches; }
+  /// the parts of the volumetric stages, before their composition with the pieces.
+  const Volumetric_parts& volumetric_parts() const { return m_s.volumetric; }
+  /// the parts of `compose_parts()`.
+  const Composed_parts<Geom_traits>& composed_parts() const { return m_s.composed; }
+  /// the part of each face, indexed by the face index map.
+  const std::vector<std::size_t>& parts() const { return m_s.composed.parts; }
+  /// for each part, the index in `fitting().primitives` of its primitive, or `no_primitive`.
+  const std::vector<std::size_t>& part_to_primitive() const { return m_s.composed.part_to_primitive; }
+  /// for each part, its superquadric in input coordinates (see `Composed_parts::part_primitives`).
+  const std::vector<Primitive>& part_primitives() const { return m_s.composed.part_primitives; }
+  /// per part, 1 if it is a residual part (see the named parameter `keep_residual_patches` of
+  /// `decompose()`), whose superquadric is only the box-like superquadric of its bounding box.
+  const std::vector<std::uint8_t>& residual_parts() const { return m_s.composed.residual_parts; }
+  /// the part hierarchy.
+  const Part_hierarchy<Geom_traits>& hierarchy() const { return m_s.hierarchy; }
+  /// @}
+
+private:
+  // the stage's parameters with the decomposer's mesh maps and normalization
+  template <typename NamedParameters>
+  auto with_mesh(const NamedParameters& np) const
+  {
+    check_frame_parameters(np);
+    return parameters::combine(np, CGAL::parameters::vertex_point_map(m_vpm), CGAL::parameters::face_index_map(m_fim),
+                               parameters::normalization(m_normalization));
+  }
+
+  // A normalization or margin given to one stage would put its grids in another frame.
+  template <typename NamedParameters>
+  void check_frame_parameters(const NamedParameters& np) const
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    internal::check_parameter(
+      internal::same_frame(
+        internal::optional_parameter<Normalization>(np, internal_np::normalization).value_or(m_normalization),
+        m_normalization),
+      "normalization", "the decomposer's (same center and scale)");
+    internal::check_parameter(choose_parameter(get_parameter(np, internal_np::normalization_margin), m_margin) == m_margin,
+                              "normalization_margin", "the decomposer's (given to its constructor)");
+  }
+
+  // The volumetric pieces, computed once per pieces and distance field (they turn the pieces).
+  template <typename NamedParameters>
+  const std::vector<std::uint8_t>& volumetric_pieces(const NamedParameters& np)
+  {
+    if(m_s.volumetric_pieces.empty())
+      m_s.volumetric_pieces = Part_decomposition::volumetric_pieces(m_tm, m_s.pieces, m_s.tsdf, with_mesh(np));
+    return m_s.volumetric_pieces;
+  }
+
+  void drop_parts() { m_has_parts = m_has_hierarchy = false; }
+  void drop_fitting(bool zones = true)
+  {
+    if(zones) m_has_zones = false;
+    m_has_fitting = false;
+    drop_parts();
+  }
+
+  const TriangleMesh& m_tm;
+  Vertex_point_map m_vpm;
+  Face_index_map m_fim;
+  double m_margin;
+  Normalization m_normalization;
+  Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
+  internal::Stage_results<Geom_traits> m_s;
+  bool m_use_pieces = true; // of the last compose_parts(), for the hierarchy
+  // which results are up to date; the stages compute the missing ones
+  bool m_has_pieces = false, m_has_prior = false, m_has_tsdf = false, m_has_zones = false, m_has_fitting = false,
+       m_has_patches = false, m_has_parts = false, m_has_hierarchy = false;
+};
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_PART_DECOMPOSER_H
