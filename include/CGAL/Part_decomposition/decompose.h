@@ -26,6 +26,7 @@
 #include <type_traits>
 #include <vector>
 
+
 namespace CGAL {
 namespace Part_decomposition {
 
@@ -157,6 +158,41 @@ void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np
 
 } // namespace internal
 /// \endcond
+
+} // namespace Part_decomposition
+} // namespace CGAL
+
+// The library CGAL::Part_decomposition holds the pipeline for these types (see the manual);
+// programs that do not link it compile the pipeline themselves, for any mesh.
+#if defined(CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY) || defined(CGAL_PART_DECOMPOSITION_BUILDING_LIBRARY)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <utility>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Compiled_mesh;
+typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
+  Compiled_parameters;
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#define CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(EXTERN, CONCURRENCY_TAG)                      \
+  namespace CGAL { namespace Part_decomposition { namespace internal {                            \
+  EXTERN template void decompose_with_parameters<CONCURRENCY_TAG, Compiled_mesh, Compiled_parameters>( \
+    const Compiled_mesh&, const Compiled_parameters&, Decomposition_pass<CGAL::Epick>&, Stage_timings&); \
+  } } }
+/// \endcond
+#endif
+
+namespace CGAL {
+namespace Part_decomposition {
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -565,6 +601,12 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   const auto pipeline_np = internal::pipeline_parameters(tm, np);
   internal::Decomposition_pass<GT> pass;
   Stage_timings timings;
+#ifdef CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY
+  static_assert(std::is_same<TriangleMesh, internal::Compiled_mesh>::value &&
+                  std::is_same<std::decay_t<decltype(pipeline_np)>, internal::Compiled_parameters>::value,
+                "the library CGAL::Part_decomposition holds decompose() for a CGAL::Surface_mesh of Epick points with "
+                "its own vertex point and face index maps: link CGAL::Part_decomposition_headers for other types");
+#endif
   internal::decompose_with_parameters<ConcurrencyTag>(tm, pipeline_np, pass, timings);
   internal::put_face_values(tm, get_parameter(pipeline_np, CGAL::internal_np::face_index), pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
@@ -579,34 +621,6 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
 } // namespace Part_decomposition
 } // namespace CGAL
 
-// The pipeline: compiled once for all in the library CGAL::Part_decomposition for the types
-// below (see the manual), or in the program, for any mesh.
-#if defined(CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY) || defined(CGAL_PART_DECOMPOSITION_BUILDING_LIBRARY)
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
-#include <utility>
-
-/// \cond SKIP_IN_MANUAL
-namespace CGAL {
-namespace Part_decomposition {
-namespace internal {
-
-typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Compiled_mesh;
-typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
-  Compiled_parameters;
-
-} // namespace internal
-} // namespace Part_decomposition
-} // namespace CGAL
-
-#define CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(EXTERN, CONCURRENCY_TAG)                      \
-  namespace CGAL { namespace Part_decomposition { namespace internal {                            \
-  EXTERN template void decompose_with_parameters<CONCURRENCY_TAG, Compiled_mesh, Compiled_parameters>( \
-    const Compiled_mesh&, const Compiled_parameters&, Decomposition_pass<CGAL::Epick>&, Stage_timings&); \
-  } } }
-/// \endcond
-#endif
 
 #ifdef CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY
 CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(extern, CGAL::Sequential_tag)
