@@ -24,11 +24,11 @@
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
 
 #include "decomposition_settings.h"
 #include "parts_tsv.h"
 #include "sdf_peer.h"
+#include "segmentation_metrics.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
