@@ -10,7 +10,6 @@
 
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/polygon_soup.h>
 #include <CGAL/Part_decomposition/internal/read_error.h>
 #include <CGAL/Part_decomposition/internal/read_gltf_soup.h>

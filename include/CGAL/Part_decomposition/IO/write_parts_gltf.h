@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
 #include <CGAL/Part_decomposition/internal/glb_builder.h>
 #include <CGAL/Part_decomposition/internal/gltf_part_primitives.h>
 
