@@ -16,9 +16,10 @@
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/tsdf.h>
+
+#include "segmentation_metrics.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>

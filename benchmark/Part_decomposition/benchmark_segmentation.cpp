@@ -25,11 +25,11 @@
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/part_composition.h>
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
 
 #include "decomposition_settings.h"
 #include "parts_tsv.h"
 #include "sdf_peer.h"
+#include "segmentation_metrics.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>

@@ -7,7 +7,6 @@
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -17,6 +16,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include "segmentation_metrics.h"
 #include "shipped_shapes.h"
 #include "test_shapes.h"
 

@@ -2,8 +2,7 @@
 // sampling.
 #include <catch2/catch.hpp>
 
-#include <CGAL/Part_decomposition/segmentation_metrics.h>
-
+#include "segmentation_metrics.h"
 #include "test_shapes.h"
 
 #include <cmath>

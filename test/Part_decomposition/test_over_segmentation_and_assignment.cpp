@@ -139,11 +139,11 @@ double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b)
 // The nearest claimed leaf of a point u of the cube as specified, by brute force: the leaf of u if
 // it is claimed, else the nearest centre of the claimed leaves with an unclaimed face neighbour
 // (on a uniform grid, the nearest claimed centre).
-PD::internal::Claimed_leaf_search::Result specified_nearest(const PD::Adaptive_grid& grid,
+PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result specified_nearest(const PD::Adaptive_grid& grid,
                                                             const std::vector<std::int32_t>& labels,
                                                             const std::array<double, 3>& u)
 {
-  PD::internal::Claimed_leaf_search::Result r;
+  PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result r;
   const std::size_t own = grid.locate(u[0], u[1], u[2]);
   if(labels[own] >= 0)
   {
@@ -174,7 +174,7 @@ std::vector<std::int32_t> brute_force_votes(const Mesh& m, const std::vector<std
   {
     const Point c = CGAL::centroid(m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
                                    m.point(target(next(halfedge(f, m), m), m)));
-    const PD::internal::Claimed_leaf_search::Result r =
+    const PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result r =
       specified_nearest(claimed.tsdf.grid, claimed.labels, claimed.tsdf.normalization.to_unit(c.x(), c.y(), c.z()));
     votes[patch[f]][r.label] += std::exp(-r.distance / tau);
   }
@@ -422,7 +422,7 @@ TEST_CASE("the nearest claimed leaf of a uniform grid is exact, near and far fro
       for(int i = 2; i < 7; ++i) claimed(i, j, k) = 9;
   const PD::Adaptive_grid grid = PD::Adaptive_grid::uniform(r);
   const std::vector<std::int32_t>& labels = claimed.values();
-  PD::internal::Claimed_leaf_search search;
+  PD::internal::Claimed_leaf_search<PD::Adaptive_grid> search;
   search.build<CGAL::Sequential_tag>(grid, labels);
   REQUIRE(search.any());
   std::size_t claimed_count = 0;
@@ -439,12 +439,12 @@ TEST_CASE("the nearest claimed leaf of a uniform grid is exact, near and far fro
       const double d = distance3(u, grid.center(l));
       if(d < best) best = d, label = labels[l];
     }
-    const PD::internal::Claimed_leaf_search::Result res = search.nearest(u);
+    const PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result res = search.nearest(u);
     CHECK(res.distance == Approx(best).epsilon(1e-12));
     CHECK(res.label == label);
   }
   // nothing claimed
-  PD::internal::Claimed_leaf_search none;
+  PD::internal::Claimed_leaf_search<PD::Adaptive_grid> none;
   none.build<CGAL::Sequential_tag>(grid, std::vector<std::int32_t>(grid.number_of_leaves(), -1));
   CHECK_FALSE(none.any());
 }
@@ -492,7 +492,7 @@ TEST_CASE("the nearest claimed leaf of an adaptive grid: its own leaf, else the 
       if(c[0] > -0.3 && c[0] < 0. && c[1] > -0.3 && c[1] < 0. && c[2] > -0.3 && c[2] < 0.) labels[l] = 9; // a solid block
       else if(rng.get_double() < 0.1) labels[l] = rng.get_int(0, 5);
     }
-    PD::internal::Claimed_leaf_search search;
+    PD::internal::Claimed_leaf_search<PD::Adaptive_grid> search;
     search.build<CGAL::Sequential_tag>(grid, labels);
     REQUIRE(search.any());
     std::size_t inner = 0; // claimed leaves with every neighbour claimed: not in the tree
@@ -510,8 +510,8 @@ TEST_CASE("the nearest claimed leaf of an adaptive grid: its own leaf, else the 
     for(int n = 0; n < 2000; ++n)
     {
       const std::array<double, 3> u = {{rng.get_double(-0.5, 0.5), rng.get_double(-0.5, 0.5), rng.get_double(-0.5, 0.5)}};
-      const PD::internal::Claimed_leaf_search::Result expected = specified_nearest(grid, labels, u);
-      const PD::internal::Claimed_leaf_search::Result res = search.nearest(u);
+      const PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result expected = specified_nearest(grid, labels, u);
+      const PD::internal::Claimed_leaf_search<PD::Adaptive_grid>::Result res = search.nearest(u);
       own += labels[grid.locate(u[0], u[1], u[2])] >= 0;
       CHECK(res.distance == Approx(expected.distance).epsilon(1e-12));
       CHECK(res.label == expected.label);

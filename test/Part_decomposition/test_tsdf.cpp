@@ -559,7 +559,7 @@ TEST_CASE("Leaf distances on a uniform grid equal a brute force over voxel centr
           g.for_each_neighbor(l, [&](std::size_t m) { next_to_outside = next_to_outside || !feature[m]; });
           boundary += next_to_outside ? 1 : 0;
         }
-        PDI::Leaf_feature_search search;
+        PDI::Leaf_feature_search<Grid> search;
         search.build<CGAL::Sequential_tag>(g, is_feature, border);
         CHECK(search.size() == boundary);
         CHECK(search.empty() == (boundary == 0 && !border));
@@ -568,7 +568,7 @@ TEST_CASE("Leaf distances on a uniform grid equal a brute force over voxel centr
           if(feature[l]) continue;
           const std::pair<std::size_t, double> nn = search.nearest(g.center(l));
           CHECK(nn.second == expected[l]);
-          if(nn.first == PDI::Leaf_feature_search::no_leaf) CHECK((border || features.empty()));
+          if(nn.first == PDI::Leaf_feature_search<Grid>::no_leaf) CHECK((border || features.empty()));
           else
           {
             REQUIRE(nn.first < feature.size());
@@ -637,7 +637,7 @@ TEST_CASE("Leaf distances on an adaptive grid: to the nearest boundary feature, 
     std::vector<std::size_t> listed;
     for(std::size_t l = 0; l < g.number_of_leaves(); ++l)
       if(rng.get_double() < 0.1) listed.push_back(l);
-    PDI::Leaf_feature_search search;
+    PDI::Leaf_feature_search<Grid> search;
     search.build_on<CGAL::Sequential_tag>(g, listed);
     CHECK(search.size() == listed.size());
     for(int s = 0; s < 100; ++s)
@@ -685,7 +685,7 @@ TEST_CASE("Leaf distances on a hand-made adaptive grid: an inner feature nearer 
     if(feature[l]) features.push_back(l);
   CHECK(brute_force_squared_distance(g, g.center(p), features, false) == 3. / 16.);
   // listed, the inner leaf is found
-  PDI::Leaf_feature_search all;
+  PDI::Leaf_feature_search<Grid> all;
   all.build_on<CGAL::Sequential_tag>(g, features);
   CHECK(all.nearest(g.center(p)) == std::make_pair(g.leaf_of_voxel(1, 1, 1), 3. / 16.));
 }
@@ -709,7 +709,7 @@ TEST_CASE("Leaf distances: features added later by a search on the list give the
       added.push_back(l);
       feature[l] = 1;
     }
-    PDI::Leaf_feature_search search;
+    PDI::Leaf_feature_search<Grid> search;
     search.build_on<CGAL::Sequential_tag>(g, added);
     std::vector<double> updated(before);
     for(std::size_t l = 0; l < updated.size(); ++l) updated[l] = std::min(updated[l], search.squared_distance(l));

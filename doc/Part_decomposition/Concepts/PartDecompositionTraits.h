@@ -36,7 +36,8 @@ public:
   /// cross product of `u` and `v`
   typedef unspecified_type Construct_cross_product_vector_3;
   /// a function object `FT operator()(const Point_3& p, const Point_3& q, const Point_3& r)` returning
-  /// the squared area of the triangle `pqr` (used by `CGAL::Part_decomposition::sample_faces_by_area()`)
+  /// the squared area of the triangle `pqr` (used by the area-weighted sampling of the benchmark's
+  /// evaluation metrics)
   typedef unspecified_type Compute_squared_area_3;
   /// @}
 

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -363,6 +364,29 @@ public:
 private:
   internal::Superquadric_data m_data;
 };
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The box-like superquadric of a box on its axes (`Box`: Part_box of internal/part_merging.h),
+// `origin` (an Eigen vector) added back to its centre.
+template <typename GeomTraits, typename Box, typename Vector>
+Superquadric<GeomTraits> box_superquadric(const Box& b, const Vector& origin)
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  // flat or degenerate parts still need positive semi-axes
+  const double floor_axis = (std::max)(1e-6 * b.half.maxCoeff(), std::numeric_limits<double>::min());
+  std::array<double, 3> scales;
+  for(int i = 0; i < 3; ++i) scales[i] = (std::max)(b.half[i], floor_axis);
+  typename Superquadric<GeomTraits>::Rotation R;
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j) R[3 * i + j] = b.axes(i, j);
+  const double c[3] = {origin[0] + b.center[0], origin[1] + b.center[1], origin[2] + b.center[2]};
+  return Superquadric<GeomTraits>(scales, 0.1, 0.1, R, Point_3(c[0], c[1], c[2]));
+}
+
+} // namespace internal
+/// \endcond
 
 } // namespace Part_decomposition
 } // namespace CGAL

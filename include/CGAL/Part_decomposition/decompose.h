@@ -9,10 +9,10 @@
 #define CGAL_PART_DECOMPOSITION_DECOMPOSE_H
 
 #include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -165,8 +165,7 @@ void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np
 // The library CGAL::Part_decomposition holds the pipeline for these types (see the manual);
 // programs that do not link it compile the pipeline themselves, for any mesh.
 #if defined(CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY) || defined(CGAL_PART_DECOMPOSITION_BUILDING_LIBRARY)
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/Part_decomposition/compiled_types.h>
 
 #include <utility>
 
@@ -175,7 +174,6 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Compiled_mesh;
 typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
   Compiled_parameters;
 

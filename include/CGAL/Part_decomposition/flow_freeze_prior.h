@@ -18,7 +18,6 @@
 #include <CGAL/Part_decomposition/internal/unit_cube_octree.h>
 #include <CGAL/Part_decomposition/internal/mean_curvature.h>
 #include <CGAL/Part_decomposition/internal/normal_deviation.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 

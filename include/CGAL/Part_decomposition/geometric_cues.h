@@ -12,17 +12,21 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/mean_curvature.h>
 #include <CGAL/Part_decomposition/internal/normal_deviation.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +35,41 @@ namespace Part_decomposition {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// The mesh as Triangle_arrays. Throws Invalid_input(NOT_TRIANGLE_MESH) on a face that is not a triangle.
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
+Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const VertexPointMap& vpm,
+                                     const VertexIndexMap& vim, const FaceIndexMap& fim)
+{
+  Triangle_arrays arrays;
+  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+  CGAL_precondition(nv < std::size_t((std::numeric_limits<std::uint32_t>::max)()));
+  arrays.points.assign(nv, Vec3{{0., 0., 0.}});
+  arrays.faces.resize(nf);
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = std::size_t(get(vim, v));
+    CGAL_precondition(i < nv);
+    arrays.points[i] = vec3_of(get(vpm, v));
+  }
+  for(auto f : faces(tm))
+  {
+    const std::size_t fi = std::size_t(get(fim, f));
+    CGAL_precondition(fi < nf);
+    auto h = halfedge(f, tm);
+    std::array<std::uint32_t, 3> corners;
+    for(int c = 0; c < 3; ++c)
+    {
+      corners[c] = std::uint32_t(get(vim, target(h, tm)));
+      h = next(h, tm);
+    }
+    if(h != halfedge(f, tm))
+      throw Invalid_input(Input_error::NOT_TRIANGLE_MESH, "the mesh has a face that is not a triangle");
+    arrays.faces[fi] = corners;
+  }
+  return arrays;
+}
+
+// The same with the maps of the named parameters.
 template <typename TriangleMesh, typename NamedParameters>
 Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const NamedParameters& np)
 {

@@ -10,7 +10,6 @@
 
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/input_validation.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>

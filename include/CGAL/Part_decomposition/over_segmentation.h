@@ -11,7 +11,6 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 

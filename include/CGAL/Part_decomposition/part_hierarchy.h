@@ -8,10 +8,10 @@
 #ifndef CGAL_PART_DECOMPOSITION_PART_HIERARCHY_H
 #define CGAL_PART_DECOMPOSITION_PART_HIERARCHY_H
 
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/part_merging.h>
 #include <CGAL/Part_decomposition/internal/piece_grouping.h>
 #include <CGAL/Part_decomposition/internal/piece_regions.h>
@@ -139,31 +139,11 @@ void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, co
     }
 }
 
-// The hierarchy of the leaves of a mesh given by its face graph `adj` and the corners of its faces
-// (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
-// whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face;
-// merges from `maximum_merge_cost` on are ordered by size first.
-template <typename GeomTraits, typename Corner>
-Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const Corner& corner,
-                                               const std::vector<std::size_t>& leaf, std::size_t number_of_leaves,
-                                               const std::vector<std::size_t>& subgroup,
-                                               const std::vector<std::size_t>& group,
-                                               const std::vector<Superquadric<GeomTraits> >& group_primitive,
-                                               const std::vector<std::size_t>& piece,
-                                               const std::vector<int>& orientation, double maximum_merge_cost)
+// The merge parameters at the scale of a mesh whose bounding box has corners `lo` and `hi`;
+// `total_volume` becomes the volume of that box, each side at least twice the thickness.
+inline Merge_parameters hierarchy_merge_parameters(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                                                   double maximum_merge_cost, double& total_volume)
 {
-  typedef Part_hierarchy_node<GeomTraits> Node;
-  const std::size_t none = Node::no_node, nf = adj.number_of_faces;
-  Part_hierarchy<GeomTraits> h;
-  h.leaf = leaf;
-  h.default_number_of_parts = group_primitive.size();
-  if(nf == 0 || number_of_leaves == 0) return h;
-
-  // the scale: the bounding box of the corners
-  const Eigen::Vector3d origin = corner(0, 0);
-  Eigen::Vector3d lo = origin, hi = origin;
-  for(std::size_t i = 0; i < nf; ++i)
-    for(int k = 0; k < 3; ++k) { lo = lo.cwiseMin(corner(i, k)); hi = hi.cwiseMax(corner(i, k)); }
   const double diagonal = (std::max)((hi - lo).norm(), std::numeric_limits<double>::min());
   Merge_parameters p;
   p.contact_distance = contact_fraction * diagonal;
@@ -172,27 +152,20 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
   p.attachment_from = maximum_merge_cost;
   p.attachment_weight = merge_attachment_weight;
   p.within_piece_limit = merge_within_piece_limit;
-  double total_volume = 1.;
+  total_volume = 1.;
   for(int d = 0; d < 3; ++d) total_volume *= (std::max)(hi[d] - lo[d], 2. * p.thickness);
+  return p;
+}
 
-  const std::vector<std::size_t> leaf_group = group.empty() ? std::vector<std::size_t>(number_of_leaves, none)
-                                                            : label_of_leaves(group, leaf, number_of_leaves, none);
-  const std::vector<std::size_t> leaf_subgroup = subgroup.empty() ? std::vector<std::size_t>(number_of_leaves, none)
-                                                                  : label_of_leaves(subgroup, leaf, number_of_leaves, none);
-  const std::vector<std::size_t> leaf_piece = label_of_leaves(piece, leaf, number_of_leaves, none);
-  std::vector<std::pair<std::size_t, std::size_t> > touching;
-  if(std::any_of(leaf_piece.begin(), leaf_piece.end(), [&](std::size_t q) { return q != leaf_piece[0]; }))
-    touching = touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance);
-  std::vector<std::size_t> host_piece = leaf_piece;
-  std::vector<std::uint8_t> attached(number_of_leaves, 0);
-  group_attached_leaves(nf, corner, piece, touching, origin, host_piece, attached);
-  Part_agglomeration agglomeration(leaf_boxes(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
-                                   host_piece, attached, p, total_volume);
-
-  // links: leaves sharing an edge (with the length and concavity of their boundary), and leaves
-  // of different pieces whose surfaces touch
+// Links the leaves that share an edge, once per pair, with the length of their common boundary and
+// that length weighted by its concavity.
+template <typename Corner>
+void link_leaves_sharing_edges(const Face_adjacency& adj, const Corner& corner, const std::vector<std::size_t>& leaf,
+                               const std::vector<std::size_t>& piece, const std::vector<int>& orientation,
+                               Part_agglomeration& agglomeration)
+{
   std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::array<double, 2> > > shared;
-  for(std::size_t i = 0; i < nf; ++i)
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
@@ -201,6 +174,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
       const double weight = edge_concavity(adj, i, k, orientation[piece[i]]);
       shared.push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
     }
+  // sorted, the edges of a pair of leaves follow each other and are summed in a fixed order
   std::sort(shared.begin(), shared.end());
   for(std::size_t e = 0; e < shared.size();)
   {
@@ -214,28 +188,46 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     agglomeration.link(shared[e].first.first, shared[e].first.second, false, sum[0], sum[1]);
     e = f;
   }
-  // a grouped piece touches its group alone: screws do not glue a leg to the panel they hold
-  for(const auto& e : touching)
-    if(host_piece[e.first] == host_piece[e.second] || !(attached[e.first] || attached[e.second]))
-      agglomeration.link(e.first, e.second, true);
-  const std::size_t number_of_nodes = agglomeration.run();
+}
 
-  // the nodes
-  h.nodes.resize(number_of_nodes);
-  std::vector<std::size_t> group_faces;
-  for(std::size_t i = 0; i < nf; ++i)
+// The leaf nodes of `h`: their faces, first face and area.
+template <typename GeomTraits>
+void fill_leaf_nodes(const Face_adjacency& adj, const std::vector<std::size_t>& leaf, Part_hierarchy<GeomTraits>& h)
+{
+  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
   {
-    Node& n = h.nodes[leaf[i]];
+    Part_hierarchy_node<GeomTraits>& n = h.nodes[leaf[i]];
     if(n.number_of_faces == 0) n.first_face = i;
     ++n.number_of_faces;
     n.area += adj.area[i];
-    if(!group.empty())
-    {
-      if(group[i] >= group_faces.size()) group_faces.resize(group[i] + 1, 0);
-      ++group_faces[group[i]];
-    }
   }
-  for(std::size_t m = 0; m < number_of_nodes; ++m)
+}
+
+// The number of faces of each group among the faces `0` to `number_of_faces - 1` (none if `group`
+// is empty).
+inline std::vector<std::size_t> faces_of_groups(const std::vector<std::size_t>& group, std::size_t number_of_faces)
+{
+  std::vector<std::size_t> group_faces;
+  if(group.empty()) return group_faces;
+  for(std::size_t i = 0; i < number_of_faces; ++i)
+  {
+    if(group[i] >= group_faces.size()) group_faces.resize(group[i] + 1, 0);
+    ++group_faces[group[i]];
+  }
+  return group_faces;
+}
+
+// Every node of `h` from the merges of `agglomeration`, whose leaves `fill_leaf_nodes()` filled. A
+// node with all the faces of its group (`group_faces`: per group) keeps the group's primitive, the
+// others get their box.
+template <typename GeomTraits>
+void fill_merged_nodes(const Part_agglomeration& agglomeration, const std::vector<std::size_t>& group_faces,
+                       const std::vector<Superquadric<GeomTraits> >& group_primitive, const Eigen::Vector3d& origin,
+                       Part_hierarchy<GeomTraits>& h)
+{
+  typedef Part_hierarchy_node<GeomTraits> Node;
+  const std::size_t none = Node::no_node;
+  for(std::size_t m = 0; m < h.nodes.size(); ++m)
   {
     Node& n = h.nodes[m];
     n.children = agglomeration.children()[m];
@@ -255,6 +247,58 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     else
       n.primitive = box_superquadric<GeomTraits>(agglomeration.boxes()[m], origin);
   }
+}
+
+// The hierarchy of the leaves of a mesh given by its face graph `adj` and the corners of its faces
+// (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
+// whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face;
+// merges from `maximum_merge_cost` on are ordered by size first.
+template <typename GeomTraits, typename Corner>
+Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const Corner& corner,
+                                               const std::vector<std::size_t>& leaf, std::size_t number_of_leaves,
+                                               const std::vector<std::size_t>& subgroup,
+                                               const std::vector<std::size_t>& group,
+                                               const std::vector<Superquadric<GeomTraits> >& group_primitive,
+                                               const std::vector<std::size_t>& piece,
+                                               const std::vector<int>& orientation, double maximum_merge_cost)
+{
+  const std::size_t none = Part_hierarchy_node<GeomTraits>::no_node, nf = adj.number_of_faces;
+  Part_hierarchy<GeomTraits> h;
+  h.leaf = leaf;
+  h.default_number_of_parts = group_primitive.size();
+  if(nf == 0 || number_of_leaves == 0) return h;
+
+  // the scale: the bounding box of the corners
+  const Eigen::Vector3d origin = corner(0, 0);
+  Eigen::Vector3d lo = origin, hi = origin;
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < 3; ++k) { lo = lo.cwiseMin(corner(i, k)); hi = hi.cwiseMax(corner(i, k)); }
+  double total_volume = 1.;
+  const Merge_parameters p = hierarchy_merge_parameters(lo, hi, maximum_merge_cost, total_volume);
+
+  const std::vector<std::size_t> leaf_group = group.empty() ? std::vector<std::size_t>(number_of_leaves, none)
+                                                            : label_of_leaves(group, leaf, number_of_leaves, none);
+  const std::vector<std::size_t> leaf_subgroup = subgroup.empty() ? std::vector<std::size_t>(number_of_leaves, none)
+                                                                  : label_of_leaves(subgroup, leaf, number_of_leaves, none);
+  const std::vector<std::size_t> leaf_piece = label_of_leaves(piece, leaf, number_of_leaves, none);
+  std::vector<std::pair<std::size_t, std::size_t> > touching;
+  if(std::any_of(leaf_piece.begin(), leaf_piece.end(), [&](std::size_t q) { return q != leaf_piece[0]; }))
+    touching = touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance);
+  std::vector<std::size_t> host_piece = leaf_piece;
+  std::vector<std::uint8_t> attached(number_of_leaves, 0);
+  group_attached_leaves(nf, corner, piece, touching, origin, host_piece, attached);
+  Part_agglomeration agglomeration(leaf_boxes(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
+                                   host_piece, attached, p, total_volume);
+
+  // links: leaves sharing an edge, and leaves of different pieces whose surfaces touch
+  link_leaves_sharing_edges(adj, corner, leaf, piece, orientation, agglomeration);
+  // a grouped piece touches its group alone: screws do not glue a leg to the panel they hold
+  for(const auto& e : touching)
+    if(host_piece[e.first] == host_piece[e.second] || !(attached[e.first] || attached[e.second]))
+      agglomeration.link(e.first, e.second, true);
+  h.nodes.resize(agglomeration.run());
+  fill_leaf_nodes(adj, leaf, h);
+  fill_merged_nodes(agglomeration, faces_of_groups(group, nf), group_primitive, origin, h);
   return h;
 }
 

@@ -24,7 +24,6 @@
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/patch_operations.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 

@@ -16,7 +16,6 @@
 #include <CGAL/Part_decomposition/internal/boundary_graph_cut.h>
 #include <CGAL/Part_decomposition/internal/claimed_leaf_search.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -44,7 +43,7 @@ namespace internal {
 // Per face index: the nearest claimed voxel of the face centroid (label, normalized distance).
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
-                            const Claimed_leaf_search& search, const Normalization& normalization,
+                            const Claimed_leaf_search<Adaptive_grid>& search, const Normalization& normalization,
                             std::vector<std::int32_t>& face_label, std::vector<double>& face_distance)
 {
   const std::size_t nf = num_faces(tm);
@@ -65,7 +64,7 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
         ++n;
       }
       const std::array<double, 3> u = normalization.to_unit(c[0] / n, c[1] / n, c[2] / n);
-      const Claimed_leaf_search::Result r = search.nearest(u);
+      const Claimed_leaf_search<Adaptive_grid>::Result r = search.nearest(u);
       face_label[i] = r.label;
       face_distance[i] = r.distance;
     }
@@ -79,7 +78,7 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
 // face is an area in voxels of side h; a label that is not a candidate costs at least the margin:
 // `excluded`.
 template <typename ConcurrencyTag>
-Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_search& search,
+Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_search<Adaptive_grid>& search,
                                 const Normalization& normalization, double h, double tau, double margin)
 {
   const std::size_t nf = corners.vertex.size() / 3;
@@ -98,7 +97,7 @@ Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_
       const Eigen::Vector3d c = (u[0] + u[1] + u[2]) / 3.;
       const std::array<double, 3> ca = {{c.x(), c.y(), c.z()}};
       const double area = 0.5 * (u[1] - u[0]).cross(u[2] - u[0]).norm() / (h * h);
-      const Claimed_leaf_search::Result nearest = search.nearest(ca);
+      const Claimed_leaf_search<Adaptive_grid>::Result nearest = search.nearest(ca);
       near.assign(1, std::make_pair(nearest.distance, nearest.label));
       out.excluded[i] = area * margin / tau;
       const std::size_t own = search.leaf_of(ca);
@@ -245,7 +244,7 @@ constexpr double cluster_cell = 0.5;
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                const VertexPointMap& vpm, const Face_adjacency& adj,
-                                               const Claimed_leaf_search& search, double h,
+                                               const Claimed_leaf_search<Adaptive_grid>& search, double h,
                                                const Normalization& normalization,
                                                const Assignment_parameters& p)
 {
@@ -272,7 +271,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
                                                       const Assignment_parameters& p, const Face_adjacency& adj,
                                                       std::vector<std::size_t>& part)
 {
-  Claimed_leaf_search search;
+  Claimed_leaf_search<Adaptive_grid> search;
   search.build<ConcurrencyTag>(grid, claimed_labels, p.boundary_smoothness > 0. ? candidate_window * h : 0.);
   if(!search.any())
   {

@@ -15,6 +15,7 @@
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/internal/merge_kind.h>
 
 #include <CGAL/assertions.h>
 
@@ -235,6 +236,9 @@ struct Piece_segmentation
 };
 
 
+#ifdef DOXYGEN_RUNNING
+// The enum is declared in internal/merge_kind.h, for the merge tree of internal/part_merging.h;
+// it is documented here, where users find it: keep the two lists equal.
 /*!
 \ingroup PkgPartDecompositionRef
 How two parts of a `Part_hierarchy` are related when they are merged; the merges are made in this
@@ -250,18 +254,8 @@ enum class Merge_kind
   CONTACT,      ///< two parts of different pieces whose surfaces touch
   NO_CONTACT    ///< two parts that do not touch (the parts of a mesh in separate places)
 };
+#endif
 
-namespace internal {
-
-// Whether a merge goes beyond the default parts: it costs at least `maximum_cost` or joins parts
-// that do not touch. The hierarchy's cut and its merge order share this rule.
-inline bool merge_beyond_default_parts(Merge_kind kind, double cost, double maximum_cost)
-{
-  if(kind == Merge_kind::ATTACHED) return false; // grouped pieces are one default part
-  return cost >= maximum_cost || kind == Merge_kind::NO_CONTACT;
-}
-
-} // namespace internal
 
 /*!
 \ingroup PkgPartDecompositionRef

@@ -13,7 +13,7 @@
 #include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
+#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/internal/primitive_merging.h>
 #include <CGAL/Part_decomposition/internal/superquadric_fitter.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
@@ -33,7 +33,36 @@
 namespace CGAL {
 namespace Part_decomposition {
 
+/// \cond SKIP_IN_MANUAL
 namespace internal {
+
+// The named parameters of fit_superquadrics() (see its documentation), as read by
+// read_fitting_parameters().
+struct Fitting_parameters
+{
+  double flow_zone_tolerance = defaults::flow_zone_tolerance;
+  std::vector<double> trust_region_scales = defaults::trust_region_scales();
+  double body_seed_threshold = defaults::body_seed_threshold;
+  double minimum_body_volume = defaults::minimum_body_volume;
+  double minimum_surface_volume = defaults::minimum_surface_volume;
+  double exterior_penalty = defaults::exterior_penalty;
+  double coverage_target = defaults::coverage_target;
+  double roi_radius = defaults::roi_radius;
+  Interior_weight_mode interior_weight_mode = defaults::interior_weight_mode;
+  std::size_t maximum_number_of_primitives = defaults::maximum_number_of_primitives;
+  bool use_freeze_zone = defaults::use_freeze_zone;
+  bool use_tsdf_guidance = defaults::use_tsdf_guidance;
+  bool use_body_seeds = defaults::use_body_seeds;
+  int fitting_resolution_cap = defaults::fitting_resolution_cap;
+  bool use_exterior_band_samples = defaults::use_exterior_band_samples;
+  bool use_reachable_regions = defaults::use_reachable_regions;
+  bool use_seed_exclusion = defaults::use_seed_exclusion;
+  int maximum_solver_evaluations = defaults::maximum_solver_evaluations;
+  std::size_t maximum_rejections_in_a_row = defaults::maximum_rejections_in_a_row;
+  bool merge_primitives = defaults::merge_primitives;
+  double minimum_merge_iou = defaults::minimum_merge_iou;
+  bool verbose = false;
+};
 
 // The one reader of the named parameters of fit_superquadrics().
 template <typename NamedParameters>
@@ -90,6 +119,22 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   check_parameter(p.minimum_merge_iou > 0. && p.minimum_merge_iou <= 1., "minimum_merge_iou");
   return p;
 }
+
+// The types of the stage, for Superquadric_fitter.
+template <typename GeomTraits>
+struct Fitting_types
+{
+  typedef Superquadric_fitting_result<GeomTraits> Result;
+  typedef Hierarchical_prior Prior;
+  typedef Truncated_signed_distance_field Field;
+  typedef Fitting_zones Zones;
+  typedef Fitting_parameters Parameters;
+};
+
+// Fit_sdf_settings (internal/fit_sdf.h) defaults to the package's defaults.
+static_assert(Fit_sdf_settings().exterior_penalty == defaults::exterior_penalty &&
+                Fit_sdf_settings().maximum_evaluations == defaults::maximum_solver_evaluations,
+              "Fit_sdf_settings and parameters.h disagree");
 
 // The fraction of Freeze voxels along the common surface of two primitives from which they are
 // never merged: a joint the prior marked (tuned with minimum_merge_iou, see the manual).
@@ -206,7 +251,7 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
   }
   else
     check_fitting_zones(*zones, tsdf, fit_res);
-  Superquadric_fitter<ConcurrencyTag, GeomTraits> fitter(prior, tsdf, *zones, fit_res, parameters);
+  Superquadric_fitter<ConcurrencyTag, Fitting_types<GeomTraits> > fitter(prior, tsdf, *zones, fit_res, parameters);
   Superquadric_fitting_result<GeomTraits> result = fitter.run();
   if(result.primitives.empty())
   {
@@ -221,6 +266,7 @@ Superquadric_fitting_result<GeomTraits> fit_with_given_or_computed_zones(const H
 }
 
 } // namespace internal
+/// \endcond
 
 /*!
 \ingroup PkgPartDecompositionRef

@@ -10,10 +10,10 @@
 
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
+#include <CGAL/Part_decomposition/geometric_cues.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/sample_accumulation.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>

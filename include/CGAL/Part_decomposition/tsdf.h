@@ -17,7 +17,6 @@
 #include <CGAL/Part_decomposition/internal/adaptive_grid_builder.h>
 #include <CGAL/Part_decomposition/internal/leaf_signs.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
-#include <CGAL/Part_decomposition/internal/parameter_checks.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
 

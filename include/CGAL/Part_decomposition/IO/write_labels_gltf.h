@@ -8,7 +8,7 @@
 #ifndef CGAL_PART_DECOMPOSITION_IO_WRITE_LABELS_GLTF_H
 #define CGAL_PART_DECOMPOSITION_IO_WRITE_LABELS_GLTF_H
 
-#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/read_mesh_impl.h>
 #include <CGAL/Part_decomposition/internal/glb_builder.h>
 #include <CGAL/Part_decomposition/internal/gltf_feature_ids.h>
 #include <CGAL/Part_decomposition/internal/gltf_source.h>
@@ -30,6 +30,26 @@ namespace Part_decomposition {
 namespace internal {
 
 #ifdef CGAL_PART_DECOMPOSITION_HAS_GLTF
+// The glTF file in memory with its triangle primitives, for the writers that copy it; a broken
+// file throws UNREADABLE_FILE with the reason, as when it is read as a mesh.
+inline std::unique_ptr<Gltf_source> read_gltf_source(const std::string& filename)
+{
+  File_contents contents;
+  read_file_contents(filename, contents);
+  const std::size_t slash = filename.find_last_of('/');
+  std::unique_ptr<Gltf_source> source;
+  with_gltf_errors(filename, [&] {
+    source = std::make_unique<Gltf_source>(std::string(contents.begin(), contents.end()),
+                                           slash == std::string::npos ? std::string() : filename.substr(0, slash + 1));
+  });
+  for(const Gltf_source::Primitive_instance& p : source->instances)
+    for(const std::array<std::uint64_t, 3>& t : p.triangles)
+      for(std::uint64_t v : t)
+        if(v >= p.positions.count)
+          throw Invalid_input(Input_error::INVALID_FACE, "'" + filename + "' has a face with an out-of-range vertex index");
+  return source;
+}
+
 // The document of write_labels_glb() for a file of another format: its polygons, triangulated as
 // read_triangle_mesh() does (equal points merged, faces without three distinct points left out),
 // as one primitive whose feature ID is the label of the polygon of each triangle.

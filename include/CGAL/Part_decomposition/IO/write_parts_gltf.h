@@ -9,7 +9,8 @@
 #define CGAL_PART_DECOMPOSITION_IO_WRITE_PARTS_GLTF_H
 
 #include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/IO/read_mesh.h>
+#include <CGAL/Part_decomposition/IO/read_mesh_impl.h>
+#include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
 #include <CGAL/Part_decomposition/internal/glb_builder.h>
 #include <CGAL/Part_decomposition/internal/gltf_part_primitives.h>
 

@@ -68,13 +68,11 @@ public:
   Report solve(Problem& problem, Vector& x, const Vector& lb, const Vector& ub, const Options& options)
   {
     Report report;
-    for(int i = 0; i < N; ++i) x[i] = (std::min)(ub[i], (std::max)(lb[i], x[i]));
+    clamp_to_box(x, lb, ub);
 
     Matrix A, A_trial;
     Vector g, g_trial;
-    double F = problem.cost_and_normal_equations(x, A, g);
-    ++report.evaluations;
-    ++report.jacobian_evaluations;
+    double F = evaluate(problem, x, true, A, g, report);
     report.initial_cost = report.final_cost = F;
     if(!std::isfinite(F))
     {
@@ -91,13 +89,11 @@ public:
       Vector step;
       if(!damped_step(A, g, frozen, mu, options, step))
       {
-        mu *= nu;
-        nu *= 2.;
-        if(mu > 1e20) break;
+        if(!raise_damping(mu, nu)) break;
         continue;
       }
       Vector x_trial = x + step;
-      for(int i = 0; i < N; ++i) x_trial[i] = (std::min)(ub[i], (std::max)(lb[i], x_trial[i]));
+      clamp_to_box(x_trial, lb, ub);
       const Vector s = x_trial - x;
       if(s.squaredNorm() == 0.) break;
       const double predicted = -(g.dot(s) + 0.5 * s.dot(A * s));
@@ -105,50 +101,63 @@ public:
       // After an accepted step the next one is likely accepted too: evaluate the Jacobian with
       // the trial (it is the Jacobian of the new point). After a rejection, residuals only.
       const bool with_jacobian = last_accepted;
-      const double F_trial = with_jacobian ? problem.cost_and_normal_equations(x_trial, A_trial, g_trial)
-                                           : problem.cost(x_trial);
-      ++report.evaluations;
-      if(with_jacobian) ++report.jacobian_evaluations;
+      const double F_trial = evaluate(problem, x_trial, with_jacobian, A_trial, g_trial, report);
       const double actual = F - F_trial;
-      if(std::isfinite(F_trial) && predicted > 0. && actual > 0.)
+      last_accepted = std::isfinite(F_trial) && predicted > 0. && actual > 0.;
+      if(!last_accepted)
       {
-        const double gain = actual / predicted;
-        x = x_trial;
-        problem.accept(x);
-        ++report.accepted_steps;
-        const bool small_decrease = actual < options.ftol * F;
-        const bool small_step = s.norm() < options.xtol * (options.xtol + x.norm());
-        mu *= (std::max)(1. / 3., 1. - std::pow(2. * gain - 1., 3));
-        nu = 2.;
-        F = F_trial;
-        report.final_cost = F;
-        last_accepted = true;
-        if(small_decrease || small_step || report.evaluations >= options.maximum_evaluations) break;
-        if(with_jacobian)
-        {
-          A = A_trial;
-          g = g_trial;
-        }
-        else
-        {
-          F = problem.cost_and_normal_equations(x, A, g);
-          ++report.evaluations;
-          ++report.jacobian_evaluations;
-          report.final_cost = F;
-        }
+        if(!raise_damping(mu, nu)) break;
+        continue;
+      }
+      const double gain = actual / predicted;
+      x = x_trial;
+      problem.accept(x);
+      ++report.accepted_steps;
+      const bool small_decrease = actual < options.ftol * F;
+      const bool small_step = s.norm() < options.xtol * (options.xtol + x.norm());
+      mu *= (std::max)(1. / 3., 1. - std::pow(2. * gain - 1., 3));
+      nu = 2.;
+      F = F_trial;
+      report.final_cost = F;
+      if(small_decrease || small_step || report.evaluations >= options.maximum_evaluations) break;
+      if(with_jacobian)
+      {
+        A = A_trial;
+        g = g_trial;
       }
       else
       {
-        last_accepted = false;
-        mu *= nu;
-        nu *= 2.;
-        if(mu > 1e20) break;
+        F = evaluate(problem, x, true, A, g, report);
+        report.final_cost = F;
       }
     }
     return report;
   }
 
 private:
+  static void clamp_to_box(Vector& x, const Vector& lb, const Vector& ub)
+  {
+    for(int i = 0; i < N; ++i) x[i] = (std::min)(ub[i], (std::max)(lb[i], x[i]));
+  }
+
+  // The cost at `x`, with the normal equations `A` and `g` if `with_jacobian`; counts the evaluation.
+  template <typename Problem>
+  static double evaluate(Problem& problem, const Vector& x, bool with_jacobian, Matrix& A, Vector& g, Report& report)
+  {
+    const double F = with_jacobian ? problem.cost_and_normal_equations(x, A, g) : problem.cost(x);
+    ++report.evaluations;
+    if(with_jacobian) ++report.jacobian_evaluations;
+    return F;
+  }
+
+  // Nielsen's rule after a rejected step; false once the damping is so large that steps vanish.
+  static bool raise_damping(double& mu, double& nu)
+  {
+    mu *= nu;
+    nu *= 2.;
+    return !(mu > 1e20);
+  }
+
   // Freezes the variables at a bound that the gradient pushes outward; returns the largest
   // gradient component of the free ones.
   static double free_gradient_norm(const Vector& x, const Vector& g, const Vector& lb, const Vector& ub, bool frozen[N])

@@ -15,7 +15,6 @@
 // fraction of its area whose faces have the field's inside at `depth` on one side and its outside
 // at `depth` on the other, and on which side the outside mostly is.
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
 
@@ -31,7 +30,8 @@ namespace internal {
 // The value of a field on the leaves of `grid` at p: the trilinear interpolation of the values at
 // the centres of the eight leaves around p when they are as large as the leaf of p (beyond the
 // outermost centres the nearest ones hold), else the value of the leaf of p.
-inline double interpolate_field(const Adaptive_grid& grid, const std::vector<double>& field, const Vec3& p)
+template <typename Grid>
+double interpolate_field(const Grid& grid, const std::vector<double>& field, const Vec3& p)
 {
   const std::size_t own = grid.locate(p[0], p[1], p[2]);
   const int r = grid.resolution(own);
@@ -70,10 +70,10 @@ struct Bounding_fractions
   std::vector<double> bounding, outward;
 };
 
-inline Bounding_fractions bounding_area_fractions(const std::vector<Triangle_points>& triangles,
-                                                  const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
-                                                  const Adaptive_grid& grid, const std::vector<double>& field,
-                                                  double depth)
+template <typename Grid>
+Bounding_fractions bounding_area_fractions(const std::vector<Triangle_points>& triangles,
+                                           const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
+                                           const Grid& grid, const std::vector<double>& field, double depth)
 {
   std::vector<double> area(number_of_pieces, 0.);
   Bounding_fractions out;

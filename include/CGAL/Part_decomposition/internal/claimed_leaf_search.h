@@ -13,7 +13,6 @@
 //
 // Inputs: the grid and one label per leaf (-1: not claimed). Queries: points of the cube.
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/leaf_distance.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
@@ -32,6 +31,8 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
+// `Grid`: Adaptive_grid.
+template <typename Grid>
 class Claimed_leaf_search
 {
 public:
@@ -48,7 +49,7 @@ public:
   // the nearest label is asked for); the labels within it are found by fronts propagated along
   // the leaves.
   template <typename ConcurrencyTag>
-  void build(const Adaptive_grid& grid, const std::vector<std::int32_t>& labels, double window = 0.)
+  void build(const Grid& grid, const std::vector<std::int32_t>& labels, double window = 0.)
   {
     m_grid = &grid;
     m_labels = &labels;
@@ -56,7 +57,7 @@ public:
     for(std::int32_t k : labels) m_any = m_any || k >= 0;
     // a claimed leaf whose neighbours are all claimed is never the nearest from a point outside
     // it on a uniform grid
-    m_boundary.build<ConcurrencyTag>(grid, [&](std::size_t l) { return labels[l] >= 0; });
+    m_boundary.template build<ConcurrencyTag>(grid, [&](std::size_t l) { return labels[l] >= 0; });
     if(window <= 0.) return;
     m_window = std::int64_t(std::ceil(window * double(grid.finest_resolution()) - 1e-9));
     mark_label_boundaries();
@@ -65,8 +66,8 @@ public:
     std::vector<std::vector<std::size_t> > boundary_of(static_cast<std::size_t>(K));
     for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
       if(labels[l] >= 0 && m_label_boundary[l]) boundary_of[std::size_t(labels[l])].push_back(l);
-    m_label_search = std::vector<Leaf_feature_search>(std::size_t(K));
-    for(std::size_t k = 0; k < std::size_t(K); ++k) m_label_search[k].build_on<ConcurrencyTag>(grid, boundary_of[k]);
+    m_label_search = std::vector<Leaf_feature_search<Grid> >(std::size_t(K));
+    for(std::size_t k = 0; k < std::size_t(K); ++k) m_label_search[k].template build_on<ConcurrencyTag>(grid, boundary_of[k]);
     find_near_labels(window);
   }
 
@@ -77,7 +78,7 @@ public:
   Result nearest(const std::array<double, 3>& u) const
   {
     Result out;
-    const Adaptive_grid& g = *m_grid;
+    const Grid& g = *m_grid;
     const std::vector<std::int32_t>& labels = *m_labels;
     if(u[0] >= -0.5 && u[0] <= 0.5 && u[1] >= -0.5 && u[1] <= 0.5 && u[2] >= -0.5 && u[2] <= 0.5)
     {
@@ -108,10 +109,10 @@ public:
   // `own` (a box of `window` beyond it on each side). \pre the search was built with a window
   double squared_distance_to_label(std::int32_t k, const std::array<double, 3>& u, std::size_t own) const
   {
-    const Adaptive_grid& g = *m_grid;
+    const Grid& g = *m_grid;
     const std::pair<std::size_t, double> nn = m_label_search[std::size_t(k)].nearest(u);
-    if(nn.first == Leaf_feature_search::no_leaf) return nn.second;
-    const Adaptive_grid::Voxel &a = g.corner(own), &b = g.corner(nn.first);
+    if(nn.first == Leaf_feature_search<Grid>::no_leaf) return nn.second;
+    const typename Grid::Voxel &a = g.corner(own), &b = g.corner(nn.first);
     for(int x = 0; x < 3; ++x)
       if(std::int64_t(b[x]) + g.width(nn.first) <= std::int64_t(a[x]) - m_window ||
          std::int64_t(b[x]) >= std::int64_t(a[x]) + g.width(own) + m_window)
@@ -127,14 +128,14 @@ private:
   // others are never the nearest of their label from a point outside it on a uniform grid.
   void mark_label_boundaries()
   {
-    const Adaptive_grid& g = *m_grid;
+    const Grid& g = *m_grid;
     const std::vector<std::int32_t>& labels = *m_labels;
     const std::uint32_t R = std::uint32_t(g.finest_resolution());
     m_label_boundary.assign(g.number_of_leaves(), 0);
     for(std::size_t l = 0; l < g.number_of_leaves(); ++l)
     {
       if(labels[l] < 0) continue;
-      const Adaptive_grid::Voxel& c = g.corner(l);
+      const typename Grid::Voxel& c = g.corner(l);
       const std::uint32_t w = g.width(l);
       bool boundary = c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] + w == R || c[1] + w == R || c[2] + w == R;
       g.for_each_neighbor(l, [&](std::size_t m) { boundary = boundary || labels[m] != labels[l]; });
@@ -150,7 +151,7 @@ private:
   static constexpr double path_slack = 1.5;
   void find_near_labels(double window)
   {
-    const Adaptive_grid& g = *m_grid;
+    const Grid& g = *m_grid;
     const std::vector<std::int32_t>& labels = *m_labels;
     const std::size_t n = g.number_of_leaves();
     Labels none;
@@ -195,12 +196,12 @@ private:
     }
   }
 
-  const Adaptive_grid* m_grid = nullptr;
+  const Grid* m_grid = nullptr;
   const std::vector<std::int32_t>* m_labels = nullptr;
   bool m_any = false;
-  Leaf_feature_search m_boundary;
+  Leaf_feature_search<Grid> m_boundary;
   std::vector<std::uint8_t> m_label_boundary;
-  std::vector<Leaf_feature_search> m_label_search;
+  std::vector<Leaf_feature_search<Grid> > m_label_search;
   std::vector<Labels> m_near;
   std::int64_t m_window = 0; // in finest voxels
 };

@@ -8,7 +8,6 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_FIT_SDF_H
 
-#include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
@@ -52,13 +51,15 @@ struct Fit_samples
 struct Fit_sdf_settings
 {
   double truncation = 0.125;          // tau
-  double exterior_penalty = defaults::exterior_penalty; // mu_ext
+  // mu_ext and the evaluations per solve (one per outer pass): defaults::exterior_penalty and
+  // defaults::maximum_solver_evaluations (checked in superquadric_fitting.h)
+  double exterior_penalty = 5.;
   double near_surface_fraction = 0.3; // near-surface band and clip: 0.3 tau
   double active_multiplier = 3.;      // active set |d~(theta0)| < 3 tau
   double outlier_probability = 0.99;  // w_o of the MPS Gaussian inlier weight
   bool reestimate_variance = true;    // MPS rule: sigma^2 = sum w r^2 / sum w after each outer pass
   int maximum_outer_iterations = 4;   // outer passes of the MPS rule
-  int maximum_evaluations = defaults::maximum_solver_evaluations; // per solve (one per outer pass)
+  int maximum_evaluations = 40;
   double function_tolerance = 1e-8;   // stop a solve when an accepted step gains less (relative)
   double relative_cost_tolerance = 1e-3; // stop the outer passes when the cost changes less
   double semi_axis_scale = 1.;        // eta: x_scale of the semi-axes
@@ -257,6 +258,41 @@ inline void select_active_samples(const Fit_samples& P, const Superquadric_data&
   }
 }
 
+// The residual of active sample i at d~ = dt, clipped to its band.
+inline double clipped_residual(const Fit_sdf_workspace& ws, std::size_t i, double dt)
+{
+  const double r = dt - ws.d[i];
+  return (std::max)(-ws.clip[i], (std::min)(ws.clip[i], r));
+}
+
+// The interior weights of the active samples at their d~ (`ws.dt`) for the variance s2.
+inline void set_interior_weights(const Fit_sdf_settings& settings, double s2, Fit_sdf_workspace& ws)
+{
+  const double tau = settings.truncation, wo = settings.outlier_probability;
+  const double C = wo * std::sqrt(2. * CGAL_PI * s2) / ((1. - wo) * tau);
+  for(std::size_t i = 0; i < ws.d.size(); ++i)
+    if(ws.interior[i])
+    {
+      const double e = clipped_residual(ws, i, ws.dt[i]);
+      const double p = std::exp(-e * e / (2. * s2));
+      ws.sqrt_w[i] = std::sqrt(ws.volume[i] * p / (C + p));
+    }
+}
+
+// The cost sum w r^2 / |P_a| of the active samples at theta.
+inline double weighted_cost(const Fit_sdf_workspace& ws, const Superquadric_data& theta)
+{
+  const std::size_t m = ws.d.size();
+  double cost = 0.;
+  for(std::size_t i = 0; i < m; ++i)
+  {
+    const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
+    const double r = clipped_residual(ws, i, superquadric_radial_distance(theta, p));
+    cost += ws.sqrt_w[i] * ws.sqrt_w[i] * r * r;
+  }
+  return cost / double(m);
+}
+
 // FitSDF (paper Alg. A.3): active set at theta0, the three weight regimes, two-stage residual
 // clipping, bounded least squares with x_scale(a) = eta.
 //
@@ -279,32 +315,15 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
   result.active = m;
   if(m < std::size_t(superquadric_number_of_parameters)) return result;
 
-  auto clipped_residual = [&](std::size_t i, double dt) {
-    const double r = dt - ws.d[i];
-    return (std::max)(-ws.clip[i], (std::min)(ws.clip[i], r));
-  };
-
   // sigma^2 at theta0: mean squared clipped residual, floored at a tiny fraction of tau^2.
   double sigma2 = 0.;
   for(std::size_t i = 0; i < m; ++i)
   {
-    const double r = clipped_residual(i, ws.dt[i]);
+    const double r = clipped_residual(ws, i, ws.dt[i]);
     sigma2 += r * r;
   }
   sigma2 = (std::max)(sigma2 / double(m), 1e-6 * tau * tau);
-
-  const double wo = settings.outlier_probability;
-  auto set_interior_weights = [&](const std::vector<double>& dt, double s2) {
-    const double C = wo * std::sqrt(2. * CGAL_PI * s2) / ((1. - wo) * tau);
-    for(std::size_t i = 0; i < m; ++i)
-      if(ws.interior[i])
-      {
-        const double e = clipped_residual(i, dt[i]);
-        const double p = std::exp(-e * e / (2. * s2));
-        ws.sqrt_w[i] = std::sqrt(ws.volume[i] * p / (C + p));
-      }
-  };
-  set_interior_weights(ws.dt, sigma2);
+  set_interior_weights(settings, sigma2, ws);
 
   Fit_sdf_problem<ConcurrencyTag> problem(ws.px, ws.py, ws.pz, ws.d, ws.sqrt_w, ws.clip, ws.block_sums,
                                           theta0.R);
@@ -330,7 +349,7 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
     {
       const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
       ws.dt[i] = superquadric_radial_distance(q, p);
-      const double r = clipped_residual(i, ws.dt[i]);
+      const double r = clipped_residual(ws, i, ws.dt[i]);
       const double w = ws.sqrt_w[i] * ws.sqrt_w[i];
       swr += w * r * r;
       sw += w;
@@ -339,18 +358,11 @@ Fit_sdf_result fit_sdf(const Fit_samples& P, const Superquadric_data& theta0,
     if(previous_cost >= 0. && std::abs(previous_cost - cost) <= settings.relative_cost_tolerance * cost) break;
     previous_cost = cost;
     sigma2 = (std::max)(swr / (std::max)(sw, 1e-300), 1e-6 * tau * tau);
-    set_interior_weights(ws.dt, sigma2);
+    set_interior_weights(settings, sigma2, ws);
   }
 
   result.theta = problem.shape(x);
-  double cost = 0.;
-  for(std::size_t i = 0; i < m; ++i)
-  {
-    const double p[3] = {ws.px[i], ws.py[i], ws.pz[i]};
-    const double r = clipped_residual(i, superquadric_radial_distance(result.theta, p));
-    cost += ws.sqrt_w[i] * ws.sqrt_w[i] * r * r;
-  }
-  result.cost = cost / double(m);
+  result.cost = weighted_cost(ws, result.theta);
   result.valid = std::isfinite(result.cost);
   return result;
 }

@@ -17,7 +17,6 @@
 // strictly nearer, so the answer is exact; on an adaptive grid it is the nearest of the boundary
 // features.
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/point_kd_tree.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
@@ -37,6 +36,8 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
+// `Grid`: Adaptive_grid.
+template <typename Grid>
 class Leaf_feature_search
 {
   typedef Point_kd_tree::Point Point;
@@ -48,7 +49,7 @@ public:
   // `is_feature(l)`: whether leaf l is a feature. With `border_is_feature`, the finest voxels just
   // outside the cube are features too, as the dense transform's virtual border layer.
   template <typename ConcurrencyTag, typename IsFeature>
-  void build(const Adaptive_grid& grid, const IsFeature& is_feature, bool border_is_feature = false)
+  void build(const Grid& grid, const IsFeature& is_feature, bool border_is_feature = false)
   {
     m_grid = &grid;
     m_border = border_is_feature;
@@ -59,7 +60,7 @@ public:
     {
       if(!is_feature(l)) continue;
       // a feature on the cube's border may be the nearest from a point outside the cube
-      const Adaptive_grid::Voxel& o = grid.corner(l);
+      const typename Grid::Voxel& o = grid.corner(l);
       const std::uint32_t w = grid.width(l);
       bool boundary = o[0] == 0 || o[1] == 0 || o[2] == 0 || o[0] + w == R || o[1] + w == R || o[2] + w == R;
       grid.for_each_neighbor(l, [&](std::size_t m) { boundary = boundary || !is_feature(m); });
@@ -73,7 +74,7 @@ public:
 
   // The same on the listed feature leaves, all kept.
   template <typename ConcurrencyTag>
-  void build_on(const Adaptive_grid& grid, const std::vector<std::size_t>& features)
+  void build_on(const Grid& grid, const std::vector<std::size_t>& features)
   {
     m_grid = &grid;
     m_border = false;
@@ -127,7 +128,7 @@ private:
     m_tree->template build<ConcurrencyTag>();
   }
 
-  const Adaptive_grid* m_grid = nullptr;
+  const Grid* m_grid = nullptr;
   bool m_border = false;
   std::vector<Point> m_points;
   std::vector<std::size_t> m_leaves, m_keys;
@@ -136,12 +137,12 @@ private:
 
 // Per leaf, the squared distance from its centre to the nearest feature centre for the leaves
 // `wanted(l)` asks for, +infinity for the others and where there is no feature.
-template <typename ConcurrencyTag, typename IsFeature, typename Wanted>
-std::vector<double> leaf_squared_distances(const Adaptive_grid& grid, const IsFeature& is_feature, const Wanted& wanted,
+template <typename ConcurrencyTag, typename Grid, typename IsFeature, typename Wanted>
+std::vector<double> leaf_squared_distances(const Grid& grid, const IsFeature& is_feature, const Wanted& wanted,
                                            bool border_is_feature = false)
 {
-  Leaf_feature_search search;
-  search.build<ConcurrencyTag>(grid, is_feature, border_is_feature);
+  Leaf_feature_search<Grid> search;
+  search.template build<ConcurrencyTag>(grid, is_feature, border_is_feature);
   std::vector<double> d2(grid.number_of_leaves(), std::numeric_limits<double>::infinity());
   for_each_range<ConcurrencyTag>(grid.number_of_leaves(), [&](std::size_t b, std::size_t e) {
     for(std::size_t l = b; l < e; ++l)
@@ -163,8 +164,8 @@ struct Leaf_components
   std::size_t size() const { return volumes.size(); }
 };
 
-template <typename In>
-Leaf_components leaf_components(const Adaptive_grid& grid, const In& in, const std::vector<std::size_t>* seeds = nullptr)
+template <typename Grid, typename In>
+Leaf_components leaf_components(const Grid& grid, const In& in, const std::vector<std::size_t>* seeds = nullptr)
 {
   Leaf_components out;
   out.labels.assign(grid.number_of_leaves(), -1);

@@ -19,7 +19,6 @@
 // that every leaf lies on a row of the finest grid. A leaf the surface does not cross has one side
 // everywhere; one it crosses is within a finest voxel of the surface at its centre.
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/winding_number.h>
@@ -38,16 +37,18 @@ namespace Part_decomposition {
 namespace internal {
 
 // The finest voxel at the middle of leaf l.
-inline Adaptive_grid::Voxel sign_voxel(const Adaptive_grid& grid, std::size_t l)
+template <typename Grid>
+typename Grid::Voxel sign_voxel(const Grid& grid, std::size_t l)
 {
-  const Adaptive_grid::Voxel& c = grid.corner(l);
+  const typename Grid::Voxel& c = grid.corner(l);
   const std::uint32_t h = grid.width(l) / 2;
   return {{c[0] + h, c[1] + h, c[2] + h}};
 }
 
-inline Vec3 sign_point(const Adaptive_grid& grid, std::size_t l)
+template <typename Grid>
+Vec3 sign_point(const Grid& grid, std::size_t l)
 {
-  const Adaptive_grid::Voxel v = sign_voxel(grid, l);
+  const typename Grid::Voxel v = sign_voxel(grid, l);
   const double h = 1. / double(grid.finest_resolution());
   return {{-0.5 + (v[0] + 0.5) * h, -0.5 + (v[1] + 0.5) * h, -0.5 + (v[2] + 0.5) * h}};
 }
@@ -60,8 +61,8 @@ struct Axis_crossings
   std::vector<int> beyond, count, total;
 };
 
-template <typename ConcurrencyTag>
-Axis_crossings crossings_along_axis(const std::vector<Triangle_points>& tris, const Adaptive_grid& grid, int axis)
+template <typename ConcurrencyTag, typename Grid>
+Axis_crossings crossings_along_axis(const std::vector<Triangle_points>& tris, const Grid& grid, int axis)
 {
   const int r = grid.finest_resolution();
   // coordinate (axis, axis + 1, axis + 2) of a point becomes (x, y, z)
@@ -80,7 +81,7 @@ Axis_crossings crossings_along_axis(const std::vector<Triangle_points>& tris, co
   for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
     for(std::size_t l = b; l < e; ++l)
     {
-      const Adaptive_grid::Voxel v = sign_voxel(grid, l);
+      const typename Grid::Voxel v = sign_voxel(grid, l);
       const std::size_t row = std::size_t(v[(axis + 1) % 3]) + R * std::size_t(v[(axis + 2) % 3]);
       const double x = -0.5 + (double(v[std::size_t(axis)]) + 0.5) * h;
       const std::size_t first = rc.offsets[row], last = rc.offsets[row + 1];
@@ -103,8 +104,8 @@ Axis_crossings crossings_along_axis(const std::vector<Triangle_points>& tris, co
 
 // Inside flags from the rows along x: winding number beyond the sign point non-zero, or (with
 // `parity`) an odd number of crossings beyond it.
-template <typename ConcurrencyTag>
-std::vector<std::uint8_t> leaf_inside_from_rows(const std::vector<Triangle_points>& tris, const Adaptive_grid& grid,
+template <typename ConcurrencyTag, typename Grid>
+std::vector<std::uint8_t> leaf_inside_from_rows(const std::vector<Triangle_points>& tris, const Grid& grid,
                                                 bool parity)
 {
   const Axis_crossings x = crossings_along_axis<ConcurrencyTag>(tris, grid, 0);
@@ -116,8 +117,8 @@ std::vector<std::uint8_t> leaf_inside_from_rows(const std::vector<Triangle_point
 
 // Inside flags by the generalized winding number at the sign point of each leaf of `leaves`
 // (all leaves if empty), |w| > 1/2.
-template <typename ConcurrencyTag>
-void leaf_inside_by_winding_number(const std::vector<Triangle_points>& tris, const Adaptive_grid& grid,
+template <typename ConcurrencyTag, typename Grid>
+void leaf_inside_by_winding_number(const std::vector<Triangle_points>& tris, const Grid& grid,
                                    const std::vector<std::size_t>& leaves, std::vector<std::uint8_t>& inside)
 {
   if(tris.empty()) return;
@@ -135,8 +136,8 @@ void leaf_inside_by_winding_number(const std::vector<Triangle_points>& tris, con
 // Inside flags by ray votes: inside if the six axis rays from the sign point see a non-zero
 // winding number, outside if at most three do; in between (rays that leave through a hole) the
 // generalized winding number decides.
-template <typename ConcurrencyTag>
-std::vector<std::uint8_t> leaf_inside_by_ray_votes(const std::vector<Triangle_points>& tris, const Adaptive_grid& grid)
+template <typename ConcurrencyTag, typename Grid>
+std::vector<std::uint8_t> leaf_inside_by_ray_votes(const std::vector<Triangle_points>& tris, const Grid& grid)
 {
   const std::size_t n = grid.number_of_leaves();
   std::vector<std::uint8_t> votes(n, 0);
@@ -162,7 +163,8 @@ std::vector<std::uint8_t> leaf_inside_by_ray_votes(const std::vector<Triangle_po
 // otherwise. A leaf the surface may meet takes its flag in `crossed_inside` if given (the exact
 // winding number of a closed mesh), else it is outside if one of its face neighbours is such an
 // outside leaf, inside otherwise (an open sheet bounds nothing).
-inline std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Adaptive_grid& grid, const std::vector<std::uint8_t>& crossed,
+template <typename Grid>
+std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Grid& grid, const std::vector<std::uint8_t>& crossed,
                                                            const std::vector<std::uint8_t>* crossed_inside = nullptr)
 {
   const std::size_t n = grid.number_of_leaves();
@@ -171,7 +173,7 @@ inline std::vector<std::uint8_t> leaf_inside_by_flood_fill(const Adaptive_grid& 
   std::vector<std::size_t> queue;
   for(std::size_t l = 0; l < n; ++l)
   {
-    const Adaptive_grid::Voxel& c = grid.corner(l);
+    const typename Grid::Voxel& c = grid.corner(l);
     const std::uint32_t w = grid.width(l);
     const bool border = c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] + w == R || c[1] + w == R || c[2] + w == R;
     if(border && !crossed[l])

@@ -8,9 +8,9 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_MESH_VOXELIZATION_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_MESH_VOXELIZATION_H
 
-#include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -33,7 +33,8 @@ namespace internal {
 // The triangles of `tm` in normalized coordinates, in the iteration order of `faces(tm)`. Every
 // vertex is mapped once per incident face with the same arithmetic, so shared vertices keep equal
 // coordinates (the crossing counts below rely on it).
-template <typename TriangleMesh, typename VertexPointMap>
+// `Normalization`: Part_decomposition::Normalization.
+template <typename TriangleMesh, typename VertexPointMap, typename Normalization>
 std::vector<Triangle_points> normalized_triangles(const TriangleMesh& tm, const VertexPointMap& vpm,
                                                   const Normalization& normalization)
 {
@@ -89,66 +90,59 @@ inline int perturbed_orientation(const Epick::Point_2& u, const Epick::Point_2& 
   return 0;
 }
 
-template <typename ConcurrencyTag>
-Row_crossings row_crossings(const std::vector<Triangle_points>& tris, int r)
+// A crossing of row `row` (index j + r*k) at abscissa `x`, `sign` as in Row_crossings.
+struct Row_hit
+{
+  std::uint32_t row;
+  double x;
+  signed char sign;
+};
+
+// Appends to `hits` the crossings of triangle T with the rows of the grid of resolution r.
+inline void triangle_row_hits(const Triangle_points& T, int r, std::vector<Row_hit>& hits)
 {
   const double h = 1. / double(r);
-  const std::size_t n = tris.size();
-  struct Hit
+  // Rows whose centre may lie in the projection; the exact test decides.
+  int lo[2], hi[2];
+  for(int a = 0; a < 2; ++a)
   {
-    std::uint32_t row;
-    double x;
-    signed char sign;
-  };
-  const std::size_t nchunks = (std::min<std::size_t>)(64, (n + 255) / 256 + 1);
-  std::vector<std::vector<Hit> > hits(nchunks);
-  for_each_range<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
-    for(std::size_t chunk = cb; chunk < ce; ++chunk)
+    const double mn = (std::min)({T[0][a + 1], T[1][a + 1], T[2][a + 1]});
+    const double mx = (std::max)({T[0][a + 1], T[1][a + 1], T[2][a + 1]});
+    lo[a] = (std::max)(0, int(std::ceil((mn + 0.5) * r - 0.5 - 1e-6)));
+    hi[a] = (std::min)(r - 1, int(std::floor((mx + 0.5) * r - 0.5 + 1e-6)));
+  }
+  if(lo[0] > hi[0] || lo[1] > hi[1]) return;
+  const Epick::Point_2 a2(T[0][1], T[0][2]), b2(T[1][1], T[1][2]), c2(T[2][1], T[2][2]);
+  for(int k = lo[1]; k <= hi[1]; ++k)
+    for(int j = lo[0]; j <= hi[0]; ++j)
     {
-      const std::size_t tb = n * chunk / nchunks, te = n * (chunk + 1) / nchunks;
-      for(std::size_t t = tb; t < te; ++t)
-      {
-        const Triangle_points& T = tris[t];
-        // Rows whose centre may lie in the projection; the exact test decides.
-        int lo[2], hi[2];
-        bool empty = false;
-        for(int a = 0; a < 2; ++a)
-        {
-          const double mn = (std::min)({T[0][a + 1], T[1][a + 1], T[2][a + 1]});
-          const double mx = (std::max)({T[0][a + 1], T[1][a + 1], T[2][a + 1]});
-          lo[a] = (std::max)(0, int(std::ceil((mn + 0.5) * r - 0.5 - 1e-6)));
-          hi[a] = (std::min)(r - 1, int(std::floor((mx + 0.5) * r - 0.5 + 1e-6)));
-          if(lo[a] > hi[a]) empty = true;
-        }
-        if(empty) continue;
-        const Epick::Point_2 a2(T[0][1], T[0][2]), b2(T[1][1], T[1][2]), c2(T[2][1], T[2][2]);
-        for(int k = lo[1]; k <= hi[1]; ++k)
-          for(int j = lo[0]; j <= hi[0]; ++j)
-          {
-            const double y = -0.5 + (j + 0.5) * h, z = -0.5 + (k + 0.5) * h;
-            const Epick::Point_2 q(y, z);
-            const int s0 = perturbed_orientation(a2, b2, q);
-            if(s0 == 0) continue;
-            const int s1 = perturbed_orientation(b2, c2, q);
-            if(s1 != s0) continue;
-            const int s2 = perturbed_orientation(c2, a2, q);
-            if(s2 != s0) continue;
-            // Barycentric abscissa, from the (approximate) sub-areas.
-            auto area = [&](const Vec3& u, const Vec3& v) {
-              return (v[1] - u[1]) * (z - u[2]) - (v[2] - u[2]) * (y - u[1]);
-            };
-            const double wa = std::abs(area(T[1], T[2])), wb = std::abs(area(T[2], T[0])),
-                         wc = std::abs(area(T[0], T[1]));
-            const double sum = wa + wb + wc;
-            double x = sum > 0. ? (wa * T[0][0] + wb * T[1][0] + wc * T[2][0]) / sum
-                                : (T[0][0] + T[1][0] + T[2][0]) / 3.;
-            x = (std::min)((std::max)(x, (std::min)({T[0][0], T[1][0], T[2][0]})),
-                           (std::max)({T[0][0], T[1][0], T[2][0]}));
-            hits[chunk].push_back(Hit{std::uint32_t(j + r * k), x, static_cast<signed char>(s0)});
-          }
-      }
+      const double y = -0.5 + (j + 0.5) * h, z = -0.5 + (k + 0.5) * h;
+      const Epick::Point_2 q(y, z);
+      const int s0 = perturbed_orientation(a2, b2, q);
+      if(s0 == 0) continue;
+      const int s1 = perturbed_orientation(b2, c2, q);
+      if(s1 != s0) continue;
+      const int s2 = perturbed_orientation(c2, a2, q);
+      if(s2 != s0) continue;
+      // Barycentric abscissa, from the (approximate) sub-areas.
+      auto area = [&](const Vec3& u, const Vec3& v) {
+        return (v[1] - u[1]) * (z - u[2]) - (v[2] - u[2]) * (y - u[1]);
+      };
+      const double wa = std::abs(area(T[1], T[2])), wb = std::abs(area(T[2], T[0])),
+                   wc = std::abs(area(T[0], T[1]));
+      const double sum = wa + wb + wc;
+      double x = sum > 0. ? (wa * T[0][0] + wb * T[1][0] + wc * T[2][0]) / sum
+                          : (T[0][0] + T[1][0] + T[2][0]) / 3.;
+      x = (std::min)((std::max)(x, (std::min)({T[0][0], T[1][0], T[2][0]})),
+                     (std::max)({T[0][0], T[1][0], T[2][0]}));
+      hits.push_back(Row_hit{std::uint32_t(j + r * k), x, static_cast<signed char>(s0)});
     }
-  });
+}
+
+// The crossings of the rows of the grid of resolution r, gathered from chunks of hits: per row,
+// sorted by abscissa.
+inline Row_crossings sorted_row_crossings(const std::vector<std::vector<Row_hit> >& hits, int r)
+{
   Row_crossings rc;
   const std::size_t rows = std::size_t(r) * std::size_t(r);
   rc.offsets.assign(rows + 1, 0);
@@ -156,13 +150,13 @@ Row_crossings row_crossings(const std::vector<Triangle_points>& tris, int r)
   for(const auto& chunk : hits)
   {
     total += chunk.size();
-    for(const Hit& hit : chunk) ++rc.offsets[hit.row + 1];
+    for(const Row_hit& hit : chunk) ++rc.offsets[hit.row + 1];
   }
   for(std::size_t i = 0; i < rows; ++i) rc.offsets[i + 1] += rc.offsets[i];
   std::vector<std::pair<double, signed char> > sorted(total);
   std::vector<std::size_t> fill(rc.offsets.begin(), rc.offsets.end() - 1);
   for(const auto& chunk : hits)
-    for(const Hit& hit : chunk) sorted[fill[hit.row]++] = std::make_pair(hit.x, hit.sign);
+    for(const Row_hit& hit : chunk) sorted[fill[hit.row]++] = std::make_pair(hit.x, hit.sign);
   for(std::size_t i = 0; i < rows; ++i)
     std::sort(sorted.begin() + rc.offsets[i], sorted.begin() + rc.offsets[i + 1]);
   rc.x.resize(total);
@@ -173,6 +167,22 @@ Row_crossings row_crossings(const std::vector<Triangle_points>& tris, int r)
     rc.sign[i] = sorted[i].second;
   }
   return rc;
+}
+
+template <typename ConcurrencyTag>
+Row_crossings row_crossings(const std::vector<Triangle_points>& tris, int r)
+{
+  const std::size_t n = tris.size();
+  const std::size_t nchunks = (std::min<std::size_t>)(64, (n + 255) / 256 + 1);
+  std::vector<std::vector<Row_hit> > hits(nchunks);
+  for_each_range<ConcurrencyTag>(nchunks, [&](std::size_t cb, std::size_t ce) {
+    for(std::size_t chunk = cb; chunk < ce; ++chunk)
+    {
+      const std::size_t tb = n * chunk / nchunks, te = n * (chunk + 1) / nchunks;
+      for(std::size_t t = tb; t < te; ++t) triangle_row_hits(tris[t], r, hits[chunk]);
+    }
+  });
+  return sorted_row_crossings(hits, r);
 }
 
 } // namespace internal

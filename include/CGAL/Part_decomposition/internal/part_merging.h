@@ -11,9 +11,8 @@
 // The agglomerative merge tree of `build_part_hierarchy()`: boxes on principal axes, the contacts
 // between parts, and the greedy merges.
 
-#include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/internal/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/merge_kind.h>
 
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/Simple_cartesian.h>
@@ -157,22 +156,6 @@ inline double box_volume(const Part_box& b, double floor)
   double v = 1.;
   for(int i = 0; i < 3; ++i) v *= 2. * (std::max)(b.half[i], floor);
   return v;
-}
-
-// The box-like superquadric of a box (`origin` added back to its centre).
-template <typename GeomTraits>
-Superquadric<GeomTraits> box_superquadric(const Part_box& b, const Eigen::Vector3d& origin)
-{
-  typedef typename GeomTraits::Point_3 Point_3;
-  // flat or degenerate parts still need positive semi-axes
-  const double floor_axis = (std::max)(1e-6 * b.half.maxCoeff(), std::numeric_limits<double>::min());
-  std::array<double, 3> scales;
-  for(int i = 0; i < 3; ++i) scales[i] = (std::max)(b.half[i], floor_axis);
-  typename Superquadric<GeomTraits>::Rotation R;
-  for(int i = 0; i < 3; ++i)
-    for(int j = 0; j < 3; ++j) R[3 * i + j] = b.axes(i, j);
-  const Eigen::Vector3d c = origin + b.center;
-  return Superquadric<GeomTraits>(scales, 0.1, 0.1, R, Point_3(c[0], c[1], c[2]));
 }
 
 // The parameters of the merge order.

@@ -18,12 +18,12 @@
 //          minimum_iou, maximum_freeze  see merge_explained_primitives()
 // Output:  fit, with the merged primitives replaced by one superquadric each, the others kept,
 //          numbered by smallest former index; labels and claimed voxels renumbered.
+//
+// Types: `Sq` a Superquadric, `Grid` the Adaptive_grid, `Field` the Truncated_signed_distance_field
+// on it, `Class` Voxel_class, `FitResult` the Superquadric_fitting_result.
 
-#include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/Voxel_grid.h>
-#include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/internal/part_merging.h>
-#include <CGAL/Part_decomposition/internal/superquadric_leaves.h>
+#include <CGAL/Part_decomposition/internal/superquadric_distance.h>
 
 #include <Eigen/Dense>
 
@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -41,8 +42,8 @@ namespace Part_decomposition {
 namespace internal {
 
 // The volume of the leaves of `leaves` whose centre lies in the superquadric.
-template <typename GeomTraits>
-double volume_within(const Superquadric<GeomTraits>& sq, const Adaptive_grid& grid, const std::vector<std::size_t>& leaves)
+template <typename Sq, typename Grid>
+double volume_within(const Sq& sq, const Grid& grid, const std::vector<std::size_t>& leaves)
 {
   double e[3];
   superquadric_half_extents(sq.data(), e);
@@ -65,8 +66,8 @@ double volume_within(const Superquadric<GeomTraits>& sq, const Adaptive_grid& gr
 // shape (Freeze and gaps between claims, `neutral`) count on neither side. A leaf is inside the
 // superquadric if its centre is; the rest of the superquadric's volume is wrong: the exterior and
 // the claims of other primitives it covers.
-template <typename GeomTraits>
-double leaf_iou(const Superquadric<GeomTraits>& sq, const Adaptive_grid& grid, const std::vector<std::size_t>& group,
+template <typename Sq, typename Grid>
+double leaf_iou(const Sq& sq, const Grid& grid, const std::vector<std::size_t>& group,
                 double group_volume, const std::vector<std::size_t>& neutral)
 {
   const double inside = volume_within(sq, grid, group);
@@ -78,8 +79,8 @@ double leaf_iou(const Superquadric<GeomTraits>& sq, const Adaptive_grid& grid, c
 // The extents of `box` on its axes from the solid part of the leaves: the ball of each leaf whose
 // centre is inside, as deep as the centre (all of it inside the shape) and no wider than the leaf.
 // A coarse leaf the surface crosses has its centre up to half its width outside the shape.
-inline void solid_extents(const std::vector<std::size_t>& leaves, const Truncated_signed_distance_field& tsdf,
-                          Part_box& box)
+template <typename Field>
+void solid_extents(const std::vector<std::size_t>& leaves, const Field& tsdf, Part_box& box)
 {
   const double finest_half = 0.5 / double(tsdf.grid.finest_resolution());
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -107,14 +108,14 @@ inline void solid_extents(const std::vector<std::size_t>& leaves, const Truncate
 // merge decides on the box of the leaf centres widened by `half_voxel` (the rule its threshold was
 // chosen with); `solid` gives the superquadric of a merged group its solid extents and a finer
 // choice of exponents.
-template <typename GeomTraits>
-double best_union_superquadric(const std::vector<std::size_t>& leaves, const Truncated_signed_distance_field& tsdf,
+template <typename Sq, typename Field>
+double best_union_superquadric(const std::vector<std::size_t>& leaves, const Field& tsdf,
                                const std::vector<Eigen::Matrix3d>& axes, const std::vector<std::size_t>& neutral,
                                double neutral_volume, double minimum_iou, double half_voxel, bool solid,
-                               Superquadric<GeomTraits>& best)
+                               Sq& best)
 {
-  const Adaptive_grid& grid = tsdf.grid;
-  typedef typename GeomTraits::Point_3 Point_3;
+  const auto& grid = tsdf.grid;
+  typedef typename Sq::Point_3 Point_3;
   Part_box box;
   std::vector<Eigen::Vector3d> points;
   points.reserve(leaves.size());
@@ -131,7 +132,7 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const Tru
   fit_box_to_points(box, points, axes);
   if(solid) solid_extents(leaves, tsdf, box);
   else box.half += Eigen::Vector3d::Constant(half_voxel);
-  typename Superquadric<GeomTraits>::Rotation R;
+  typename Sq::Rotation R;
   for(int i = 0; i < 3; ++i)
     for(int j = 0; j < 3; ++j) R[std::size_t(3 * i + j)] = box.axes(i, j);
   const double union_volume = box.area;
@@ -142,7 +143,7 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const Tru
     std::array<double, 3> scales;
     // a rounder solid reaches the corners of the box less
     for(int i = 0; i < 3; ++i) scales[std::size_t(i)] = box.half[i] * (e > 0.5 ? 1.15 : 1.);
-    const Superquadric<GeomTraits> sq(scales, e, e, R, Point_3(box.center[0], box.center[1], box.center[2]));
+    const Sq sq(scales, e, e, R, Point_3(box.center[0], box.center[1], box.center[2]));
     // the volume it covers beyond the union and every neutral leaf are wrong: a bound on its IoU
     const double bound = union_volume / (union_volume + (std::max)(0., sq.volume() - union_volume - neutral_volume));
     if(bound < minimum_iou) continue;
@@ -153,8 +154,8 @@ double best_union_superquadric(const std::vector<std::size_t>& leaves, const Tru
 }
 
 // The rotation of a superquadric as a matrix.
-template <typename GeomTraits>
-Eigen::Matrix3d rotation_matrix(const Superquadric<GeomTraits>& sq)
+template <typename Sq>
+Eigen::Matrix3d rotation_matrix(const Sq& sq)
 {
   const auto R = sq.rotation();
   Eigen::Matrix3d m;
@@ -166,21 +167,21 @@ Eigen::Matrix3d rotation_matrix(const Superquadric<GeomTraits>& sq)
 // Per pair of primitives whose claimed leaves both meet the box of a surface leaf (Flow or Freeze)
 // widened by a finest voxel (its 26-neighbourhood on a uniform grid): the area of such surface
 // leaves and of the Freeze ones, in finest voxels squared.
-inline std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2> >
-primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<Voxel_class>& classes,
-                     const Adaptive_grid& grid)
+template <typename Class, typename Grid>
+std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2> >
+primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<Class>& classes, const Grid& grid)
 {
   std::map<std::pair<std::int32_t, std::int32_t>, std::array<double, 2> > out;
   std::vector<std::int32_t> near;
   for(std::size_t l = 0; l < grid.number_of_leaves(); ++l)
   {
-    const Voxel_class c = classes[l];
-    if(c == Voxel_class::EMPTY) continue;
+    const Class c = classes[l];
+    if(c == Class::EMPTY) continue;
     near.clear();
-    const Adaptive_grid::Voxel& o = grid.corner(l);
+    const typename Grid::Voxel& o = grid.corner(l);
     const std::uint32_t w = grid.width(l);
-    const Adaptive_grid::Voxel lo = {{o[0] == 0 ? 0 : o[0] - 1, o[1] == 0 ? 0 : o[1] - 1, o[2] == 0 ? 0 : o[2] - 1}};
-    const Adaptive_grid::Voxel hi = {{o[0] + w, o[1] + w, o[2] + w}};
+    const typename Grid::Voxel lo = {{o[0] == 0 ? 0 : o[0] - 1, o[1] == 0 ? 0 : o[1] - 1, o[2] == 0 ? 0 : o[2] - 1}};
+    const typename Grid::Voxel hi = {{o[0] + w, o[1] + w, o[2] + w}};
     grid.for_each_leaf_in_voxel_box(lo, hi, [&](std::size_t m) {
       if(labels[m] >= 0) near.push_back(labels[m]);
     });
@@ -192,15 +193,15 @@ primitive_interfaces(const std::vector<std::int32_t>& labels, const std::vector<
       {
         std::array<double, 2>& n = out[std::make_pair(near[a], near[b])];
         n[0] += area;
-        if(c == Voxel_class::FREEZE) n[1] += area;
+        if(c == Class::FREEZE) n[1] += area;
       }
   }
   return out;
 }
 
 // The unclaimed leaves inside the shape (Freeze and gaps between claims) and their volume.
-inline std::vector<std::size_t> neutral_leaves(const std::vector<std::int32_t>& labels,
-                                               const Truncated_signed_distance_field& tsdf, double& volume)
+template <typename Field>
+std::vector<std::size_t> neutral_leaves(const std::vector<std::int32_t>& labels, const Field& tsdf, double& volume)
 {
   std::vector<std::size_t> neutral;
   volume = 0.;
@@ -217,12 +218,10 @@ inline std::vector<std::size_t> neutral_leaves(const std::vector<std::int32_t>& 
 // explains best (IoU of leaf volumes; `delta`: the voxel of the finest prior resolution) are merged while that IoU is at least `minimum_iou`; groups
 // whose common surface is more than `maximum_freeze` Freeze never merge (a boundary the prior
 // saw). Returns the group (smallest member) of each primitive and the superquadric of each group.
-template <typename GeomTraits>
-std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_result<GeomTraits>& fit,
-                                                const std::vector<Voxel_class>& classes,
-                                                const Truncated_signed_distance_field& tsdf, double delta,
-                                                double minimum_iou, double maximum_freeze,
-                                                std::vector<Superquadric<GeomTraits> >& sq)
+template <typename FitResult, typename Class, typename Field, typename Sq>
+std::vector<std::size_t> agglomerate_primitives(const FitResult& fit, const std::vector<Class>& classes,
+                                                const Field& tsdf, double delta, double minimum_iou,
+                                                double maximum_freeze, std::vector<Sq>& sq)
 {
   typedef std::pair<std::size_t, std::size_t> Pair;
   const std::size_t K = fit.primitives.size();
@@ -244,7 +243,7 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
       if(claimed_volume[m] > claimed_volume[largest]) largest = m;
     return rotation_matrix(fit.primitives[largest]);
   };
-  std::map<Pair, std::pair<double, Superquadric<GeomTraits> > > score; // cached per pair of groups
+  std::map<Pair, std::pair<double, Sq> > score; // cached per pair of groups
   for(;;)
   {
     Pair best_pair(K, K);
@@ -259,7 +258,7 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
         std::vector<std::size_t> u(leaves[a]);
         u.insert(u.end(), leaves[b].begin(), leaves[b].end());
         const std::vector<Eigen::Matrix3d> axes = {largest_axes(a), largest_axes(b)};
-        Superquadric<GeomTraits> s = sq[a];
+        Sq s = sq[a];
         const double iou =
           best_union_superquadric(u, tsdf, axes, neutral, neutral_volume, minimum_iou, 0.5 * delta, false, s);
         it = score.emplace(l.first, std::make_pair(iou, s)).first;
@@ -296,14 +295,14 @@ std::vector<std::size_t> agglomerate_primitives(const Superquadric_fitting_resul
 }
 
 // Replaces each group of primitives of `agglomerate_primitives()` by its superquadric in `fit`.
-template <typename GeomTraits>
-void merge_explained_primitives(Superquadric_fitting_result<GeomTraits>& fit, const std::vector<Voxel_class>& classes,
-                                const Truncated_signed_distance_field& tsdf, double delta, double minimum_iou,
-                                double maximum_freeze)
+template <typename FitResult, typename Class, typename Field>
+void merge_explained_primitives(FitResult& fit, const std::vector<Class>& classes, const Field& tsdf, double delta,
+                                double minimum_iou, double maximum_freeze)
 {
+  typedef typename decltype(FitResult::primitives)::value_type Sq;
   const std::size_t K = fit.primitives.size();
   if(K < 2) return;
-  std::vector<Superquadric<GeomTraits> > sq;
+  std::vector<Sq> sq;
   const std::vector<std::size_t> group_of = agglomerate_primitives(fit, classes, tsdf, delta, minimum_iou, maximum_freeze, sq);
   std::vector<double> claimed_volume(K, 0.);
   for(std::size_t k = 0; k < K; ++k)
@@ -318,8 +317,8 @@ void merge_explained_primitives(Superquadric_fitting_result<GeomTraits>& fit, co
       representative[g] = k;
   }
   if(n == K) return;
-  Superquadric_fitting_result<GeomTraits> out(fit);
-  out.primitives.assign(n, Superquadric<GeomTraits>());
+  FitResult out(fit);
+  out.primitives.assign(n, Sq());
   out.claimed_leaves.assign(n, std::vector<std::size_t>());
   for(std::size_t k = 0; k < K; ++k)
   {

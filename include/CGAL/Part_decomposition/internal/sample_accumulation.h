@@ -8,7 +8,6 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_SAMPLE_ACCUMULATION_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_SAMPLE_ACCUMULATION_H
 
-#include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 #include <CGAL/Part_decomposition/internal/triangle_arrays.h>
 
@@ -260,13 +259,14 @@ inline void add_counts_to_sums(const std::vector<std::vector<Face_voxel_count> >
 // its (face, voxel, count) entries, and the blocks are merged in face order, so the sums have the
 // same bits for any number of threads. A coarser voxel index is the finest one shifted: with
 // r = rf / 2^s, floor((p+0.5) r) = floor((p+0.5) rf) >> s exactly (scaling by a power of two is
-// exact), including the clamp of p = +0.5 to the last voxel.
-template <typename ConcurrencyTag>
+// exact), including the clamp of p = +0.5 to the last voxel. `sampled` (a Voxel_grid<std::uint8_t>),
+// if not null, receives the voxels of resolution `rf` that hold a sample.
+template <typename ConcurrencyTag, typename SampledGrid>
 void accumulate_samples(const std::vector<Vec3>& unit_points,
                         const std::vector<std::array<std::uint32_t, 3> >& faces,
                         const std::vector<double>& c, const std::vector<double>& phi,
                         const std::vector<std::array<double, 3> >& barycentric, int rf,
-                        std::vector<Voxel_sums>& sums, Voxel_grid<std::uint8_t>* sampled = nullptr)
+                        std::vector<Voxel_sums>& sums, SampledGrid* sampled)
 {
   const std::size_t nf = faces.size();
   const std::size_t block_size = 1024;
@@ -276,7 +276,7 @@ void accumulate_samples(const std::vector<Vec3>& unit_points,
   });
   add_counts_to_sums(blocks, c, phi, rf, sums);
   if(sampled == nullptr) return;
-  *sampled = Voxel_grid<std::uint8_t>(rf, 0);
+  *sampled = SampledGrid(rf, 0);
   for(const std::vector<Face_voxel_count>& block : blocks)
     for(const Face_voxel_count& e : block) (*sampled)[e.voxel] = 1;
 }

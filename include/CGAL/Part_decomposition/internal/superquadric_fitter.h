@@ -14,10 +14,6 @@
 // between leaf centres; lengths are in normalized units, Delta being the side of the finest
 // leaves.
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
-#include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/Superquadric.h>
-#include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/fit_sdf.h>
 #include <CGAL/Part_decomposition/internal/leaf_distance.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
@@ -38,34 +34,6 @@
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
-
-// The named parameters of fit_superquadrics() (see its documentation), as read by
-// read_fitting_parameters().
-struct Fitting_parameters
-{
-  double flow_zone_tolerance = defaults::flow_zone_tolerance;
-  std::vector<double> trust_region_scales = defaults::trust_region_scales();
-  double body_seed_threshold = defaults::body_seed_threshold;
-  double minimum_body_volume = defaults::minimum_body_volume;
-  double minimum_surface_volume = defaults::minimum_surface_volume;
-  double exterior_penalty = defaults::exterior_penalty;
-  double coverage_target = defaults::coverage_target;
-  double roi_radius = defaults::roi_radius;
-  Interior_weight_mode interior_weight_mode = defaults::interior_weight_mode;
-  std::size_t maximum_number_of_primitives = defaults::maximum_number_of_primitives;
-  bool use_freeze_zone = defaults::use_freeze_zone;
-  bool use_tsdf_guidance = defaults::use_tsdf_guidance;
-  bool use_body_seeds = defaults::use_body_seeds;
-  int fitting_resolution_cap = defaults::fitting_resolution_cap;
-  bool use_exterior_band_samples = defaults::use_exterior_band_samples;
-  bool use_reachable_regions = defaults::use_reachable_regions;
-  bool use_seed_exclusion = defaults::use_seed_exclusion;
-  int maximum_solver_evaluations = defaults::maximum_solver_evaluations;
-  std::size_t maximum_rejections_in_a_row = defaults::maximum_rejections_in_a_row;
-  bool merge_primitives = defaults::merge_primitives;
-  double minimum_merge_iou = defaults::minimum_merge_iou;
-  bool verbose = false;
-};
 
 // Stamped marks: O(1) clearing between seeds.
 struct Stamp_set
@@ -108,16 +76,24 @@ private:
   std::array<double, NUMBER_OF_STEPS> m_seconds{};
 };
 
-template <typename ConcurrencyTag, typename GeomTraits>
+// `Types` names the types of the stage (see Fitting_types in superquadric_fitting.h): `Result`
+// (Superquadric_fitting_result), `Prior` (Hierarchical_prior), `Field`
+// (Truncated_signed_distance_field), `Zones` (Fitting_zones) and `Parameters` (Fitting_parameters).
+template <typename ConcurrencyTag, typename Types>
 class Superquadric_fitter
 {
 public:
-  typedef Superquadric_fitting_result<GeomTraits> Result;
+  typedef typename Types::Result Result;
+  typedef typename Types::Prior Prior;
+  typedef typename Types::Field Field;
+  typedef typename Types::Zones Zones;
+  typedef typename Types::Parameters Parameters;
+  typedef typename decltype(Result::primitives)::value_type Primitive; // a Superquadric
+  typedef decltype(Field::grid) Grid;                                  // the Adaptive_grid
 
   // `fitting_resolutions`: r_fit of each stage of `prior.resolutions`; `zones` holds each of them.
-  Superquadric_fitter(const Hierarchical_prior& prior, const Truncated_signed_distance_field& tsdf,
-                      const Fitting_zones& zones, const std::vector<int>& fitting_resolutions,
-                      const Fitting_parameters& parameters)
+  Superquadric_fitter(const Prior& prior, const Field& tsdf, const Zones& zones,
+                      const std::vector<int>& fitting_resolutions, const Parameters& parameters)
     : m_prior(prior), m_tsdf(tsdf), m_grid(tsdf.grid), m_zones(zones), m_stage_resolutions(prior.resolutions),
       m_fitting_resolutions(fitting_resolutions), m_parameters(parameters), m_N(tsdf.grid.number_of_leaves()),
       m_delta(1. / double(tsdf.grid.finest_resolution())),
@@ -225,7 +201,8 @@ private:
     m_body.assign(m_N, 0);
     m_settings.truncation = tau;
     m_settings.exterior_penalty = m_parameters.exterior_penalty;
-    m_settings.reestimate_variance = m_parameters.interior_weight_mode == Interior_weight_mode::MPS_REESTIMATED;
+    typedef decltype(m_parameters.interior_weight_mode) Weight_mode;
+    m_settings.reestimate_variance = m_parameters.interior_weight_mode == Weight_mode::MPS_REESTIMATED;
     m_settings.maximum_evaluations = m_parameters.maximum_solver_evaluations;
     m_settings.function_tolerance = function_tolerance;
   }
@@ -235,7 +212,7 @@ private:
   void prepare_hull_distances()
   {
     auto coarse = [&](std::size_t l) { return m_zones.exterior[l] && m_grid.size(l) > m_delta * (1. + 1e-9); };
-    m_hull.build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return m_zones.exterior[l] == 0; });
+    m_hull.template build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return m_zones.exterior[l] == 0; });
     m_hull_sqd = leaf_squared_distances<ConcurrencyTag>(
       m_grid, [&](std::size_t l) { return m_zones.exterior[l] == 0; }, coarse);
   }
@@ -244,12 +221,12 @@ private:
   // lies on, -1 for a leaf finer than Delta off the lattice of Delta.
   void set_lattice_levels()
   {
-    const int shift = Adaptive_grid::depth_of(m_grid.finest_resolution()) - Adaptive_grid::depth_of(int(std::lround(1. / m_sample_voxel)));
+    const int shift = Grid::depth_of(m_grid.finest_resolution()) - Grid::depth_of(int(std::lround(1. / m_sample_voxel)));
     const std::uint32_t finer = (std::uint32_t(1) << shift) - 1;
     m_lattice_level.assign(m_N, 0);
     for(std::size_t l = 0; l < m_N; ++l)
     {
-      const Adaptive_grid::Voxel& c = m_grid.corner(l);
+      const typename Grid::Voxel& c = m_grid.corner(l);
       const std::uint32_t fine = (c[0] | c[1] | c[2]) & finer, o = (c[0] | c[1] | c[2]) >> shift;
       m_lattice_level[l] = fine != 0 ? -1 : ((o & 3) == 0 ? 2 : ((o & 1) == 0 ? 1 : 0));
     }
@@ -306,7 +283,7 @@ private:
     // lowered incrementally as claims grow (A.2)
     m_body_sqd = leaf_squared_distances<ConcurrencyTag>(
       m_grid, [&](std::size_t l) { return m_body[l] == 0; }, [&](std::size_t l) { return m_body[l] != 0; });
-    m_flow_outside.build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return (*st.flow)[l] == 0; }, true);
+    m_flow_outside.template build<ConcurrencyTag>(m_grid, [&](std::size_t l) { return (*st.flow)[l] == 0; }, true);
     return st;
   }
 
@@ -590,7 +567,7 @@ private:
     // than the volume within the band of it
     Superquadric_data grown = theta;
     for(int a = 0; a < 3; ++a) grown.a[a] += claim_band * m_delta;
-    return (std::min)(net, Superquadric<GeomTraits>(grown).volume());
+    return (std::min)(net, Primitive(grown).volume());
   }
 
   // A claim never jumps across a Freeze wall: keep its leaves connected to the reachable region.
@@ -669,8 +646,8 @@ private:
       if(d2 < m_body_sqd[l]) m_affected.push_back(l);
     }
     if(m_affected.empty()) return;
-    Leaf_feature_search added;
-    added.build_on<ConcurrencyTag>(m_grid, m_new_body_features);
+    Leaf_feature_search<Grid> added;
+    added.template build_on<ConcurrencyTag>(m_grid, m_new_body_features);
     for_each_range<ConcurrencyTag>(m_affected.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i)
       {
@@ -683,7 +660,7 @@ private:
   void record_primitive(const Stage& st, const Seed& seed, const Fit_outcome& outcome)
   {
     const Superquadric_data& q = outcome.fit.theta;
-    const Superquadric<GeomTraits> sq(q);
+    const Primitive sq(q);
     if(m_parameters.verbose)
       std::cerr << "  SQ " << m_result.primitives.size() << " stage " << st.r << (seed.body ? " body" : " surface")
                 << " seed " << seed.leaf << " a = (" << q.a[0] << ", " << q.a[1] << ", " << q.a[2] << ") eps = ("
@@ -793,13 +770,13 @@ private:
   }
 
   // inputs
-  const Hierarchical_prior& m_prior;
-  const Truncated_signed_distance_field& m_tsdf;
-  const Adaptive_grid& m_grid;
-  const Fitting_zones& m_zones;
+  const Prior& m_prior;
+  const Field& m_tsdf;
+  const Grid& m_grid;
+  const Zones& m_zones;
   const std::vector<int>& m_stage_resolutions;
   const std::vector<int>& m_fitting_resolutions;
-  const Fitting_parameters m_parameters;
+  const Parameters m_parameters;
   const std::size_t m_N;
   const double m_delta; // Delta: the side of the finest leaves, the unit of the bands
   const std::vector<std::uint8_t>& m_freeze; // the Freeze zone, or the exterior without it
@@ -816,8 +793,8 @@ private:
   std::vector<std::uint8_t> m_valid, m_spec, m_body, m_excluded;
   std::vector<std::size_t> m_body_candidates; // Omega_Body leaves not yet excluded (compacted lazily)
   std::vector<double> m_body_sqd;             // squared distance of Omega_Body to its outside
-  Leaf_feature_search m_flow_outside;         // the leaves outside the stage's Flow zone
-  Leaf_feature_search m_hull;                 // the leaves that are not exterior
+  Leaf_feature_search<Grid> m_flow_outside;   // the leaves outside the stage's Flow zone
+  Leaf_feature_search<Grid> m_hull;           // the leaves that are not exterior
   std::vector<double> m_hull_sqd;             // per coarse exterior leaf, its squared distance to them
   std::vector<std::size_t> m_affected;        // candidates whose distance may drop
 

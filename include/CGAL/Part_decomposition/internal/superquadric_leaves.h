@@ -13,7 +13,6 @@
 // Inputs: the superquadric, the grid, a margin (d~ <= margin; 0: the plain inside test).
 // Output: f(l) for each such leaf l, in the order of Adaptive_grid::for_each_leaf_in_box().
 
-#include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/internal/superquadric_distance.h>
 
 #include <array>
@@ -23,8 +22,8 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-template <typename F>
-void for_each_leaf_within(const Superquadric_data& q, const Adaptive_grid& grid, double margin, const F& f)
+template <typename Grid, typename F>
+void for_each_leaf_within(const Superquadric_data& q, const Grid& grid, double margin, const F& f)
 {
   double e[3];
   superquadric_half_extents(q, e);

@@ -8,12 +8,9 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_ARRAYS_H
 
-#include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/internal/toolbox.h>
 
 #include <CGAL/assertions.h>
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -49,40 +46,6 @@ struct Triangle_arrays
   std::vector<Vec3> points;
   std::vector<std::array<std::uint32_t, 3> > faces;
 };
-
-// Throws Invalid_input(NOT_TRIANGLE_MESH) on a face that is not a triangle.
-template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
-Triangle_arrays make_triangle_arrays(const TriangleMesh& tm, const VertexPointMap& vpm,
-                                     const VertexIndexMap& vim, const FaceIndexMap& fim)
-{
-  Triangle_arrays arrays;
-  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
-  CGAL_precondition(nv < std::size_t((std::numeric_limits<std::uint32_t>::max)()));
-  arrays.points.assign(nv, Vec3{{0., 0., 0.}});
-  arrays.faces.resize(nf);
-  for(auto v : vertices(tm))
-  {
-    const std::size_t i = std::size_t(get(vim, v));
-    CGAL_precondition(i < nv);
-    arrays.points[i] = vec3_of(get(vpm, v));
-  }
-  for(auto f : faces(tm))
-  {
-    const std::size_t fi = std::size_t(get(fim, f));
-    CGAL_precondition(fi < nf);
-    auto h = halfedge(f, tm);
-    std::array<std::uint32_t, 3> corners;
-    for(int c = 0; c < 3; ++c)
-    {
-      corners[c] = std::uint32_t(get(vim, target(h, tm)));
-      h = next(h, tm);
-    }
-    if(h != halfedge(f, tm))
-      throw Invalid_input(Input_error::NOT_TRIANGLE_MESH, "the mesh has a face that is not a triangle");
-    arrays.faces[fi] = corners;
-  }
-  return arrays;
-}
 
 } // namespace internal
 } // namespace Part_decomposition

@@ -5,8 +5,11 @@
 //
 // Author(s)     : The Part_decomposition authors
 
-#ifndef CGAL_PART_DECOMPOSITION_SEGMENTATION_METRICS_H
-#define CGAL_PART_DECOMPOSITION_SEGMENTATION_METRICS_H
+#ifndef CGAL_PART_DECOMPOSITION_BENCHMARK_SEGMENTATION_METRICS_H
+#define CGAL_PART_DECOMPOSITION_BENCHMARK_SEGMENTATION_METRICS_H
+
+// The evaluation metrics of the benchmark and of the tests (the paper's protocol, Appendix A): they
+// score a decomposition and are not part of it, so they live here and not in the package.
 
 #include <CGAL/Part_decomposition/parameters.h>
 
@@ -36,7 +39,6 @@ namespace CGAL {
 namespace Part_decomposition {
 
 /*!
-\ingroup PkgPartDecompositionRef
 The agreement between a ground-truth and a predicted partition of the same point samples, as
 defined in the evaluation protocol of the Hi-TOPS paper (Appendix A). Every metric is
 class-agnostic: only which samples share a part matters, not the values of the labels.
@@ -101,7 +103,6 @@ inline double x_log_x(std::size_t n) { return n == 0 ? 0. : double(n) * std::log
 /// \endcond
 
 /*!
-\ingroup PkgPartDecompositionRef
 draws `N` points on the faces of `tm` with probability proportional to the face areas (independent
 draws) and returns, for each of them in drawing order, the index of the face it lies on, counted in
 the iteration order of `faces(tm)`. The draws come from a self-contained splitmix64 generator, so
@@ -206,7 +207,6 @@ sample_faces_by_area(const TriangleMesh& tm,
 }
 
 /*!
-\ingroup PkgPartDecompositionRef
 scores the predicted partition `prediction` of \f$N\f$ samples against the ground-truth partition
 `ground_truth` of the same samples (the \f$k\f$-th label of each range belongs to the \f$k\f$-th
 sample). Labels are compared for equality only, so renaming the parts of either partition changes
@@ -302,7 +302,6 @@ Segmentation_scores compare_segmentations(const GroundTruthRange& ground_truth,
 }
 
 /*!
-\ingroup PkgPartDecompositionRef
 scores the predicted segmentation of the faces of `tm` against a ground-truth segmentation of the
 same faces, following the paper's protocol (Appendix A): `N` points are drawn on the surface with
 `sample_faces_by_area()`, each takes the ground-truth and the predicted label of its face, and the
@@ -527,7 +526,6 @@ double average_radius(const TriangleMesh& tm, const VPM& vpm, double h)
 /// \endcond
 
 /*!
-\ingroup PkgPartDecompositionRef
 computes the Cut Discrepancy of the Princeton segmentation benchmark (Chen, Golovinskiy and
 Funkhouser, "A Benchmark for 3D Mesh Segmentation", SIGGRAPH 2009) between two segmentations of
 the faces of `tm`: 0 when their boundaries coincide, larger as they lie further apart.
@@ -654,4 +652,4 @@ double cut_discrepancy(const TriangleMesh& tm,
 } // namespace Part_decomposition
 } // namespace CGAL
 
-#endif // CGAL_PART_DECOMPOSITION_SEGMENTATION_METRICS_H
+#endif // CGAL_PART_DECOMPOSITION_BENCHMARK_SEGMENTATION_METRICS_H
