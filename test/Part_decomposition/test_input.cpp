@@ -6,7 +6,7 @@
 #include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
 #include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
-#include <CGAL/Part_decomposition/internal/oriented_manifold_soup.h>
+#include <CGAL/Part_decomposition/internal/io/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/helpers.h>

@@ -7,8 +7,8 @@
 #include <CGAL/Part_decomposition/over_segmentation.h>
 #include <CGAL/Part_decomposition/primitive_assignment.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/claimed_leaf_search.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/fitting/claimed_leaf_search.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>

@@ -6,10 +6,10 @@
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/bounded_least_squares.h>
-#include <CGAL/Part_decomposition/internal/fit_sdf.h>
-#include <CGAL/Part_decomposition/internal/superquadric_distance.h>
-#include <CGAL/Part_decomposition/internal/superquadric_leaves.h>
+#include <CGAL/Part_decomposition/internal/fitting/bounded_least_squares.h>
+#include <CGAL/Part_decomposition/internal/fitting/fit_sdf.h>
+#include <CGAL/Part_decomposition/internal/fitting/superquadric_distance.h>
+#include <CGAL/Part_decomposition/internal/fitting/superquadric_leaves.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>

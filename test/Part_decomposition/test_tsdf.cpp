@@ -7,13 +7,13 @@
 #include <CGAL/Part_decomposition/Adaptive_grid.h>
 #include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/flow_freeze_prior.h>
-#include <CGAL/Part_decomposition/internal/adaptive_grid_builder.h>
-#include <CGAL/Part_decomposition/internal/leaf_distance.h>
-#include <CGAL/Part_decomposition/internal/leaf_signs.h>
-#include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
-#include <CGAL/Part_decomposition/internal/triangle_distance.h>
-#include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
-#include <CGAL/Part_decomposition/internal/winding_number.h>
+#include <CGAL/Part_decomposition/internal/grid/adaptive_grid_builder.h>
+#include <CGAL/Part_decomposition/internal/grid/leaf_distance.h>
+#include <CGAL/Part_decomposition/internal/grid/leaf_signs.h>
+#include <CGAL/Part_decomposition/internal/grid/mesh_voxelization.h>
+#include <CGAL/Part_decomposition/internal/grid/triangle_distance.h>
+#include <CGAL/Part_decomposition/internal/grid/triangle_soup_aabb_tree.h>
+#include <CGAL/Part_decomposition/internal/grid/winding_number.h>
 #include <CGAL/Part_decomposition/tsdf.h>
 
 #include <CGAL/Bbox_3.h>

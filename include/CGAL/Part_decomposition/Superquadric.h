@@ -10,7 +10,7 @@
 
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
-#include <CGAL/Part_decomposition/internal/superquadric_distance.h>
+#include <CGAL/Part_decomposition/internal/fitting/superquadric_distance.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/assertions.h>

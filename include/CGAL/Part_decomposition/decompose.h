@@ -13,7 +13,7 @@
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>

@@ -13,8 +13,8 @@
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/input_validation.h>
-#include <CGAL/Part_decomposition/internal/leaf_distance.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/grid/leaf_distance.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>

@@ -10,10 +10,10 @@
 
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/mean_curvature.h>
-#include <CGAL/Part_decomposition/internal/normal_deviation.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
-#include <CGAL/Part_decomposition/internal/triangle_arrays.h>
+#include <CGAL/Part_decomposition/internal/cues/mean_curvature.h>
+#include <CGAL/Part_decomposition/internal/cues/normal_deviation.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+#include <CGAL/Part_decomposition/internal/toolbox/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>

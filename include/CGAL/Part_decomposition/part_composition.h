@@ -17,11 +17,11 @@
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
-#include <CGAL/Part_decomposition/internal/bounded_volume.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/part_merging.h>
-#include <CGAL/Part_decomposition/internal/piece_regions.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/grid/bounded_volume.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parts/part_merging.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>

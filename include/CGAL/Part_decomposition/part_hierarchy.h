@@ -11,10 +11,10 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/part_merging.h>
-#include <CGAL/Part_decomposition/internal/piece_grouping.h>
-#include <CGAL/Part_decomposition/internal/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parts/part_merging.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_grouping.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
 #include <CGAL/Part_decomposition/piece_segmentation.h>
 
 #include <CGAL/boost/graph/helpers.h>

@@ -11,8 +11,8 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
 #include <CGAL/Part_decomposition/input_validation.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>

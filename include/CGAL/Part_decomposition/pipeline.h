@@ -24,8 +24,8 @@
 #include <CGAL/Part_decomposition/superquadric_fitting.h>
 #include <CGAL/Part_decomposition/thin_sheet_merging.h>
 #include <CGAL/Part_decomposition/tsdf.h>
-#include <CGAL/Part_decomposition/internal/patch_operations.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/parts/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/boost/graph/named_params_helper.h>

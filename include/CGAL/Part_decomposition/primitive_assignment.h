@@ -13,10 +13,10 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/boundary_graph_cut.h>
-#include <CGAL/Part_decomposition/internal/claimed_leaf_search.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/parts/boundary_graph_cut.h>
+#include <CGAL/Part_decomposition/internal/fitting/claimed_leaf_search.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -10,10 +10,10 @@
 
 #include <CGAL/Part_decomposition/part_composition.h>
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/patch_operations.h>
-#include <CGAL/Part_decomposition/internal/piece_regions.h>
-#include <CGAL/Part_decomposition/internal/sheet_inflation.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parts/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/parts/sheet_inflation.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>

@@ -15,7 +15,7 @@
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/normalization.h>
-#include <CGAL/Part_decomposition/internal/merge_kind.h>
+#include <CGAL/Part_decomposition/internal/parts/merge_kind.h>
 
 #include <CGAL/assertions.h>
 

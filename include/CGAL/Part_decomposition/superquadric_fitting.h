@@ -14,9 +14,9 @@
 #include <CGAL/Part_decomposition/fitting_zones.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/input_validation.h>
-#include <CGAL/Part_decomposition/internal/primitive_merging.h>
-#include <CGAL/Part_decomposition/internal/superquadric_fitter.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/fitting/primitive_merging.h>
+#include <CGAL/Part_decomposition/internal/fitting/superquadric_fitter.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>

@@ -14,9 +14,9 @@
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/stage_results.h>
-#include <CGAL/Part_decomposition/internal/face_adjacency.h>
-#include <CGAL/Part_decomposition/internal/leaf_distance.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/grid/leaf_distance.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/Union_find.h>
 #include <CGAL/boost/graph/helpers.h>

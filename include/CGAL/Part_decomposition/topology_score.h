@@ -14,9 +14,9 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/sample_accumulation.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
-#include <CGAL/Part_decomposition/internal/triangle_arrays.h>
+#include <CGAL/Part_decomposition/internal/grid/sample_accumulation.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+#include <CGAL/Part_decomposition/internal/toolbox/triangle_arrays.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>

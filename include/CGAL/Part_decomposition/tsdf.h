@@ -14,11 +14,11 @@
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/adaptive_grid_builder.h>
-#include <CGAL/Part_decomposition/internal/leaf_signs.h>
-#include <CGAL/Part_decomposition/internal/mesh_voxelization.h>
-#include <CGAL/Part_decomposition/internal/toolbox.h>
-#include <CGAL/Part_decomposition/internal/triangle_soup_aabb_tree.h>
+#include <CGAL/Part_decomposition/internal/grid/adaptive_grid_builder.h>
+#include <CGAL/Part_decomposition/internal/grid/leaf_signs.h>
+#include <CGAL/Part_decomposition/internal/grid/mesh_voxelization.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+#include <CGAL/Part_decomposition/internal/grid/triangle_soup_aabb_tree.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -10,7 +10,7 @@
 
 #include <CGAL/Part_decomposition/input_validation.h>
 #include <CGAL/Part_decomposition/parameters.h>
-#include <CGAL/Part_decomposition/internal/polygon_soup.h>
+#include <CGAL/Part_decomposition/internal/io/polygon_soup.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>

@@ -9,9 +9,9 @@
 #define CGAL_PART_DECOMPOSITION_IO_WRITE_LABELS_GLTF_H
 
 #include <CGAL/Part_decomposition/IO/read_mesh_impl.h>
-#include <CGAL/Part_decomposition/internal/glb_builder.h>
-#include <CGAL/Part_decomposition/internal/gltf_feature_ids.h>
-#include <CGAL/Part_decomposition/internal/gltf_source.h>
+#include <CGAL/Part_decomposition/internal/io/glb_builder.h>
+#include <CGAL/Part_decomposition/internal/io/gltf_feature_ids.h>
+#include <CGAL/Part_decomposition/internal/io/gltf_source.h>
 
 #include <CGAL/use.h>
 

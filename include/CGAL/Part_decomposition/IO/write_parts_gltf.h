@@ -11,8 +11,8 @@
 #include <CGAL/Part_decomposition/Superquadric.h>
 #include <CGAL/Part_decomposition/IO/read_mesh_impl.h>
 #include <CGAL/Part_decomposition/IO/write_labels_gltf.h>
-#include <CGAL/Part_decomposition/internal/glb_builder.h>
-#include <CGAL/Part_decomposition/internal/gltf_part_primitives.h>
+#include <CGAL/Part_decomposition/internal/io/glb_builder.h>
+#include <CGAL/Part_decomposition/internal/io/gltf_part_primitives.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>

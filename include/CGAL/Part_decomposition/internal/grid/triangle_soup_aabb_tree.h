@@ -1,0 +1,213 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_SOUP_AABB_TREE_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_SOUP_AABB_TREE_H
+
+#include <CGAL/Part_decomposition/internal/grid/triangle_distance.h>
+#include <CGAL/Part_decomposition/internal/grid/winding_number.h>
+
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/version.h>
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/AABB_traits_3.h>
+#include <CGAL/AABB_triangle_primitive_3.h>
+#else
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#endif
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+// Exact closest-triangle queries on a triangle soup with CGAL's AABB tree. The tree is walked
+// through its public `traversal_with_priority()` with our own traversal traits: nearest child
+// first, nodes pruned by the best distance so far (which the caller may seed with an upper bound),
+// and the exact double-precision point-triangle distance at the leaves. CGAL's own
+// `closest_point()` gives the same distances but starts from a kd-tree hint, cannot take a bound
+// and visits the children in a fixed order.
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+typedef CGAL::Simple_cartesian<double> Aabb_kernel;
+typedef std::vector<Aabb_kernel::Triangle_3>::const_iterator Aabb_triangle_iterator;
+// CGAL 6 renamed the 3D primitive and traits classes.
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+typedef CGAL::AABB_triangle_primitive_3<Aabb_kernel, Aabb_triangle_iterator> Aabb_triangle_primitive;
+typedef CGAL::AABB_traits_3<Aabb_kernel, Aabb_triangle_primitive> Aabb_triangle_traits;
+#else
+typedef CGAL::AABB_triangle_primitive<Aabb_kernel, Aabb_triangle_iterator> Aabb_triangle_primitive;
+typedef CGAL::AABB_traits<Aabb_kernel, Aabb_triangle_primitive> Aabb_triangle_traits;
+#endif
+typedef CGAL::AABB_tree<Aabb_triangle_traits> Aabb_triangle_tree;
+
+// Traversal traits of a closest-triangle query (the query is a `Vec3`): the priority of a node is
+// minus its squared distance to the query, a node is entered only if that distance is below the
+// best one so far, and among triangles at the same distance the smallest soup index is kept (the
+// traversal order is fixed, so the answer is deterministic either way).
+class Closest_triangle_traversal
+{
+public:
+  typedef double Priority;
+
+  // `first`: the first stored triangle; `soup_index`: the soup index of each stored triangle.
+  Closest_triangle_traversal(Aabb_triangle_iterator first, const std::uint32_t* soup_index, double bound2,
+                             std::uint32_t bound_triangle)
+    : m_first(first), m_soup_index(soup_index), m_best2(bound2), m_best(bound_triangle)
+  {}
+
+  bool go_further() const { return true; }
+
+  template <typename Primitive>
+  void intersection(const Vec3& p, const Primitive& primitive)
+  {
+    const Aabb_kernel::Triangle_3& t = *primitive.id();
+    const double d = squared_distance_to_triangle(p, vec(t[0]), vec(t[1]), vec(t[2]));
+    if(d < m_best2 || (d == m_best2 && m_soup_index[primitive.id() - m_first] < m_best))
+    {
+      m_best2 = d;
+      m_best = m_soup_index[primitive.id() - m_first];
+    }
+  }
+
+  template <typename Node>
+  bool do_intersect(const Vec3& p, const Node& node) const
+  {
+    return box_distance(p, node.bbox()) < m_best2;
+  }
+
+  template <typename Node>
+  std::pair<bool, Priority> do_intersect_with_priority(const Vec3& p, const Node& node) const
+  {
+    const double d = box_distance(p, node.bbox());
+    return std::make_pair(d < m_best2, -d);
+  }
+
+  double squared_distance() const { return m_best2; }
+  std::uint32_t triangle() const { return m_best; }
+
+private:
+  static Vec3 vec(const Aabb_kernel::Point_3& p) { return {{p.x(), p.y(), p.z()}}; }
+  static double box_distance(const Vec3& p, const CGAL::Bbox_3& b)
+  {
+    double s = 0.;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double e = (std::max)((std::max)(b.min(a) - p[a], p[a] - b.max(a)), 0.);
+      s += e * e;
+    }
+    return s;
+  }
+
+  Aabb_triangle_iterator m_first;
+  const std::uint32_t* m_soup_index;
+  double m_best2;
+  std::uint32_t m_best;
+};
+
+// The triangles of a soup in a CGAL AABB tree, built at construction (not lazily, so that
+// concurrent queries never wait for a build). The tree's primitives refer to a copy of the
+// triangles stored in Morton order of their centroids: a node's triangles then lie close in
+// memory (5 to 10% faster queries on the development meshes than in the file's face order).
+// Triangle indices in and out are those of the soup.
+class Triangle_soup_aabb_tree
+{
+public:
+  explicit Triangle_soup_aabb_tree(const std::vector<Triangle_points>& soup)
+  {
+    const std::size_t n = soup.size();
+    std::vector<Vec3> centroid(n);
+    Vec3 lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for(std::size_t i = 0; i < n; ++i)
+      for(int a = 0; a < 3; ++a)
+      {
+        centroid[i][a] = (soup[i][0][a] + soup[i][1][a] + soup[i][2][a]) / 3.;
+        lo[a] = (std::min)(lo[a], centroid[i][a]);
+        hi[a] = (std::max)(hi[a], centroid[i][a]);
+      }
+    // 21 bits per axis of the centroid's cell, interleaved; ties keep the soup order.
+    const double cells = double(1u << 21);
+    std::vector<std::pair<std::uint64_t, std::uint32_t> > key(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      std::uint32_t q[3];
+      for(int a = 0; a < 3; ++a)
+      {
+        const double t = hi[a] > lo[a] ? (centroid[i][a] - lo[a]) / (hi[a] - lo[a]) * cells : 0.;
+        q[a] = std::uint32_t((std::min)((std::max)(t, 0.), cells - 1.));
+      }
+      std::uint64_t code = 0;
+      for(int b = 20; b >= 0; --b)
+        for(int a = 0; a < 3; ++a) code = (code << 1) | ((q[a] >> b) & 1u);
+      key[i] = std::make_pair(code, std::uint32_t(i));
+    }
+    std::vector<Vec3>().swap(centroid); // freed before the tree's nodes are allocated
+    std::sort(key.begin(), key.end());
+
+    auto point = [](const Vec3& p) { return Aabb_kernel::Point_3(p[0], p[1], p[2]); };
+    m_triangles.reserve(n);
+    m_soup_index.reserve(n);
+    m_position.resize(n);
+    for(const auto& k : key)
+    {
+      const Triangle_points& t = soup[k.second];
+      m_position[k.second] = std::uint32_t(m_triangles.size());
+      m_triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+      m_soup_index.push_back(k.second);
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t> >().swap(key);
+    m_tree.insert(m_triangles.begin(), m_triangles.end());
+    m_tree.build();
+  }
+  // The tree refers to m_triangles.
+  Triangle_soup_aabb_tree(const Triangle_soup_aabb_tree&) = delete;
+  Triangle_soup_aabb_tree& operator=(const Triangle_soup_aabb_tree&) = delete;
+
+  /// the soup index of a triangle closest to `p` and its squared distance.
+  /// `bound2`, `bound_triangle`: a squared distance reached by that triangle (+infinity if none);
+  /// when no triangle is closer than the bound, the bound is returned.
+  std::pair<std::uint32_t, double> closest(const Vec3& p, double bound2 = std::numeric_limits<double>::infinity(),
+                                           std::uint32_t bound_triangle = 0) const
+  {
+    Closest_triangle_traversal traversal(m_triangles.begin(), m_soup_index.data(), bound2, bound_triangle);
+    m_tree.traversal_with_priority(p, traversal);
+    return std::make_pair(traversal.triangle(), traversal.squared_distance());
+  }
+
+  const Aabb_triangle_tree& tree() const { return m_tree; }
+
+  /// the corners of the triangle of soup index `t`, as in the soup: the soup itself can be freed.
+  Triangle_points triangle(std::uint32_t t) const
+  {
+    const Aabb_kernel::Triangle_3& tri = m_triangles[m_position[t]];
+    Triangle_points out;
+    for(int k = 0; k < 3; ++k) out[k] = {{tri[k].x(), tri[k].y(), tri[k].z()}};
+    return out;
+  }
+
+private:
+  std::vector<Aabb_kernel::Triangle_3> m_triangles;
+  std::vector<std::uint32_t> m_soup_index;
+  std::vector<std::uint32_t> m_position; // soup index -> index in m_triangles
+  Aabb_triangle_tree m_tree;
+};
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_TRIANGLE_SOUP_AABB_TREE_H

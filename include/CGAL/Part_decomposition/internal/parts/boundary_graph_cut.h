@@ -1,0 +1,318 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H
+
+// The final labelling of the faces: a Potts energy on the face graph, minimized by alpha
+// expansion on the contested faces only.
+//
+// Inputs:  adj        the face graph with dihedral angles (F faces)
+//          corners    the corners of each face (edge lengths)
+//          candidates per face, its candidate labels and their data costs (see Face_candidates)
+//          orientation per face, +1 or -1: the side of the surface that is outside
+//          edge_scale the cost of cutting one unit of length across a smooth convex edge is
+//                     edge_scale * cut_penalty(0, convex)
+//          cluster_cell  the cell size (mesh units) of the clusters of the two-level labelling
+// Output:  the label of each face, among its candidates, minimizing (approximately)
+//          sum_f cost_f(label_f) + edge_scale * sum_{cut edges e} length_e * cut_penalty(e).
+
+#include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/parts/potts_alpha_expansion.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// Per face, up to `capacity` candidate labels by increasing cost; the first is the cheapest.
+struct Face_candidates
+{
+  static constexpr int capacity = 4;
+  std::vector<std::array<std::int32_t, capacity> > label; // -1 past the last candidate
+  std::vector<std::array<double, capacity> > cost;
+  std::vector<double> excluded; // the least cost of a label that is not a candidate
+
+  void resize(std::size_t n)
+  {
+    std::array<std::int32_t, capacity> none;
+    none.fill(-1);
+    label.assign(n, none);
+    cost.assign(n, std::array<double, capacity>());
+    excluded.assign(n, 0.);
+  }
+  int size(std::size_t i) const
+  {
+    int n = 0;
+    while(n < capacity && label[i][std::size_t(n)] >= 0) ++n;
+    return n;
+  }
+  // the rank of label l among the candidates of face i, or -1
+  int find(std::size_t i, std::int32_t l) const
+  {
+    for(int k = 0; k < capacity && label[i][std::size_t(k)] >= 0; ++k)
+      if(label[i][std::size_t(k)] == l) return k;
+    return -1;
+  }
+};
+
+// The cost factor of cutting across an edge of dihedral angle `degrees`, in the form of the
+// Surface_mesh_segmentation package: -log of the angle as a fraction of pi, scaled down on a
+// convex edge, so that concave creases are cheap and smooth or convex surface is expensive.
+inline double cut_penalty(double degrees, bool concave)
+{
+  constexpr double convex_factor = 0.08, smallest = 1e-3; // smallest: a flat edge costs -log(1e-3)
+  const double t = (std::min)(1., (std::max)(0., degrees / 180.)) * (concave ? 1. : convex_factor);
+  return -std::log((std::max)(t, smallest));
+}
+
+// The cost of cutting the edge of slot (i, k), edge_scale included.
+inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corners,
+                            const std::vector<int>& orientation, std::size_t i, int k, double edge_scale)
+{
+  const bool concave = !adj.degenerate[i] && crease_sign(adj, i, k) * orientation[i] < 0;
+  return edge_scale * slot_length(corners, i, k) * cut_penalty(adj.angle[3 * i + std::size_t(k)], concave);
+}
+
+// The rank of face `j` in the increasing list `faces`, or Label_problem::fixed.
+inline std::size_t rank_in(const std::vector<std::size_t>& faces, std::size_t j)
+{
+  const auto it = std::lower_bound(faces.begin(), faces.end(), j);
+  return it != faces.end() && *it == j ? std::size_t(it - faces.begin()) : Label_problem::fixed;
+}
+
+// The problem on the faces `faces` (increasing), each starting with label_of(i), a candidate; the
+// other faces around them are fixed at label_of(j).
+template <typename LabelOf>
+Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
+                           const std::vector<int>& orientation, double edge_scale,
+                           const std::vector<std::size_t>& faces, const LabelOf& label_of)
+{
+  Label_problem p;
+  for(std::size_t m = 0; m < faces.size(); ++m)
+  {
+    const std::size_t i = faces[m];
+    for(int c = 0; c < candidates.size(i); ++c)
+      p.add_option(candidates.label[i][std::size_t(c)], candidates.cost[i][std::size_t(c)]);
+    p.add_member(label_of(i));
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j == Face_adjacency::no_face || j == i) continue;
+      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+      const std::size_t r = rank_in(faces, j);
+      p.links[m].push_back({r, r == Label_problem::fixed ? label_of(j) : -1, w});
+    }
+  }
+  return p;
+}
+
+// Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
+// a grid of spacing `cell` (a face elsewhere is alone).
+inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
+                                              double cell)
+{
+  const auto same_cell = [&](std::size_t i, std::size_t j) {
+    for(std::size_t a = 0; a < 3; ++a)
+      if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
+    return true;
+  };
+  std::vector<std::size_t> cluster;
+  face_components(adj, [&](std::size_t i, int k) {
+    const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+    return contested[i] && contested[j] && same_cell(i, j);
+  }, cluster);
+  return cluster;
+}
+
+// Sums the links to the same member or fixed label into one.
+inline void merge_parallel_links(std::vector<Label_problem::Link>& links)
+{
+  const auto key = [](const Label_problem::Link& l) { return std::make_pair(l.member, l.fixed_label); };
+  std::sort(links.begin(), links.end(),
+            [&](const Label_problem::Link& a, const Label_problem::Link& b) { return key(a) < key(b); });
+  std::size_t n = 0;
+  for(std::size_t k = 0; k < links.size(); ++k)
+    if(n > 0 && key(links[n - 1]) == key(links[k])) links[n - 1].cost += links[k].cost;
+    else links[n++] = links[k];
+  links.resize(n);
+}
+
+// The cluster of each face of `faces` numbered 0..C-1 in increasing cluster id; returns C.
+inline std::size_t local_clusters(const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
+                                  std::vector<std::size_t>& local)
+{
+  std::vector<std::size_t> ids;
+  for(std::size_t i : faces) ids.push_back(cluster[i]);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  local.resize(faces.size());
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    local[m] = std::size_t(std::lower_bound(ids.begin(), ids.end(), cluster[faces[m]]) - ids.begin());
+  return ids.size();
+}
+
+// The problem on the C clusters of `faces` (increasing), `local` the cluster of each face: a
+// cluster may take any candidate of its faces, at the sum of their costs (a face without that
+// candidate adds its `excluded` cost), and starts with its cheapest; a cut between two clusters
+// costs the cut edges between them.
+template <typename LabelOf>
+Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
+                              const std::vector<int>& orientation, double edge_scale,
+                              const std::vector<std::size_t>& faces, const std::vector<std::size_t>& local,
+                              std::size_t number_of_clusters, const LabelOf& label_of)
+{
+  std::vector<std::vector<std::size_t> > members(number_of_clusters);
+  for(std::size_t m = 0; m < faces.size(); ++m) members[local[m]].push_back(faces[m]);
+  Label_problem p;
+  std::vector<std::int32_t> labels;
+  for(const std::vector<std::size_t>& c : members)
+  {
+    labels.clear();
+    for(std::size_t i : c)
+      for(int k = 0; k < candidates.size(i); ++k) labels.push_back(candidates.label[i][std::size_t(k)]);
+    std::sort(labels.begin(), labels.end());
+    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+    std::int32_t cheapest = labels.front();
+    double least = std::numeric_limits<double>::infinity();
+    for(std::int32_t l : labels)
+    {
+      double sum = 0.;
+      for(std::size_t i : c)
+      {
+        const int k = candidates.find(i, l);
+        sum += k < 0 ? candidates.excluded[i] : candidates.cost[i][std::size_t(k)];
+      }
+      p.add_option(l, sum);
+      if(sum < least) { least = sum; cheapest = l; }
+    }
+    p.add_member(cheapest);
+  }
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t i = faces[m], j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j == Face_adjacency::no_face || j == i) continue;
+      const std::size_t r = rank_in(faces, j);
+      if(r != Label_problem::fixed && local[r] == local[m]) continue;
+      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+      p.links[local[m]].push_back(r == Label_problem::fixed ? Label_problem::Link{r, label_of(j), w}
+                                                             : Label_problem::Link{local[r], -1, w});
+    }
+  for(std::vector<Label_problem::Link>& links : p.links) merge_parallel_links(links);
+  return p;
+}
+
+// Labels one edge-connected set of contested faces (increasing), the faces around it fixed at
+// `initial`. A set with far fewer clusters than faces is labelled in two levels, because a max-flow
+// on a fine mesh follows paths across the whole set: its clusters first, then again face by face,
+// the clusters next to a cut only (the cut moves within them), the rest fixed at its cluster's label.
+inline void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
+                                const Face_candidates& candidates, const std::vector<int>& orientation,
+                                double edge_scale, const std::vector<std::size_t>& faces,
+                                const std::vector<std::size_t>& cluster, const std::vector<std::int32_t>& initial,
+                                std::vector<std::int32_t>& face_label)
+{
+  const auto initial_label = [&](std::size_t j) { return initial[j]; };
+  std::vector<std::size_t> local;
+  const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters(faces, cluster, local);
+  if(2 * number_of_clusters > faces.size())
+  {
+    Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, initial_label);
+    minimize_labels(p);
+    for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
+    return;
+  }
+  Label_problem coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, local,
+                                         number_of_clusters, initial_label);
+  minimize_labels(coarse);
+  // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
+  std::vector<std::int32_t> projected(faces.size());
+  std::vector<std::uint8_t> refine(coarse.size(), 0);
+  for(std::size_t m = 0; m < faces.size(); ++m)
+  {
+    const std::size_t i = faces[m];
+    projected[m] = candidates.find(i, coarse.label[local[m]]) < 0 ? candidates.label[i][0] : coarse.label[local[m]];
+  }
+  const auto label_of = [&](std::size_t j) {
+    const std::size_t r = rank_in(faces, j);
+    return r == Label_problem::fixed ? initial[j] : projected[r];
+  };
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t j = adj.neighbor[3 * faces[m] + std::size_t(k)];
+      if(j != Face_adjacency::no_face && label_of(j) != projected[m]) refine[local[m]] = 1;
+    }
+  std::vector<std::size_t> band;
+  for(std::size_t m = 0; m < faces.size(); ++m)
+    if(refine[local[m]]) band.push_back(faces[m]);
+  Label_problem fine = face_problem(adj, corners, candidates, orientation, edge_scale, band, label_of);
+  minimize_labels(fine);
+  for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = projected[m];
+  for(std::size_t b = 0; b < band.size(); ++b) face_label[band[b]] = fine.label[b];
+}
+
+// The final labels: every face starts with its cheapest candidate; the edge-connected sets of
+// faces with two candidates or more are relabelled by alpha expansion, each on its own, in two
+// levels where the faces are much smaller than `cluster_cell` (0: never). The result does not
+// depend on the number of threads.
+template <typename ConcurrencyTag>
+std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_corners& corners,
+                                          const Face_candidates& candidates, const std::vector<int>& orientation,
+                                          double edge_scale, double cluster_cell)
+{
+  const std::size_t nf = adj.number_of_faces;
+  std::vector<std::int32_t> face_label(nf);
+  std::vector<std::uint8_t> contested(nf, 0);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    face_label[i] = candidates.label[i][0];
+    contested[i] = candidates.size(i) > 1;
+  }
+  if(edge_scale <= 0.) return face_label;
+  std::vector<std::size_t> component;
+  const std::size_t nc = face_components(adj, [&](std::size_t i, int k) {
+    return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
+  }, component);
+  // the contested faces of each component, by increasing face index
+  std::vector<std::size_t> start, order;
+  group_indices(nf, nc, [&](std::size_t i) { return component[i]; }, [&](std::size_t i) { return contested[i] != 0; },
+                start, order);
+  std::vector<std::size_t> sets; // the components with contested faces
+  for(std::size_t c = 0; c < nc; ++c)
+    if(start[c] < start[c + 1]) sets.push_back(c);
+  const std::vector<std::size_t> cluster =
+      cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
+  const std::vector<std::int32_t> initial(face_label); // read by all, each set writes its own faces
+  for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
+    std::vector<std::size_t> faces;
+    for(std::size_t s = b; s < e; ++s)
+    {
+      const std::size_t c = sets[s];
+      faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
+      label_contested_set(adj, corners, candidates, orientation, edge_scale, faces, cluster, initial, face_label);
+    }
+  }, 1);
+  return face_label;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_BOUNDARY_GRAPH_CUT_H

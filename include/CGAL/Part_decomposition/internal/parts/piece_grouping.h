@@ -1,0 +1,158 @@
+// Copyright (c) 2026 The Part_decomposition authors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Part_decomposition authors
+
+#ifndef CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_GROUPING_H
+#define CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_GROUPING_H
+
+// Which pieces of an assembly a person names with the piece they sit on: crumbs, and pieces
+// repeated in a pattern (keys, buttons, slats, vents).
+//
+// Inputs: per piece its box (`Part_box`: area, half extents) and number of faces; the pairs of
+// pieces whose surfaces touch (a < b).
+// Output: per piece the piece it is grouped with (itself if none). Every group is a tree of
+// contacts whose root is its largest piece.
+
+#include <CGAL/Part_decomposition/internal/parts/part_merging.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Part_decomposition {
+namespace internal {
+
+// A crumb: at most this fraction of the surface's area, and the piece it touches at least
+// `crumb_host_ratio` times as large.
+constexpr double crumb_area_fraction = 0.0002;
+constexpr double crumb_host_ratio = 10.;
+// A pattern: at least `pattern_count` congruent pieces (same number of faces, areas and box extents
+// within `congruence_tolerance`) that touch one piece at least `pattern_host_ratio` times as large,
+// each at most `pattern_area_fraction` of the surface. The other pieces touching that host that
+// are no larger than `pattern_size_ratio` times its members join the pattern (keys of other widths).
+constexpr std::size_t pattern_count = 20;
+constexpr double congruence_tolerance = 0.05;
+constexpr double pattern_area_fraction = 0.005;
+constexpr double pattern_host_ratio = 10.;
+constexpr double pattern_size_ratio = 2.;
+
+// The classes of congruent pieces: per piece its class, the first piece of the class.
+inline std::vector<std::size_t> congruence_classes(const std::vector<Part_box>& box,
+                                                   const std::vector<std::size_t>& faces)
+{
+  const std::size_t n = box.size();
+  std::vector<std::size_t> order(n), cls(n);
+  for(std::size_t p = 0; p < n; ++p) order[p] = cls[p] = p;
+  std::vector<std::array<double, 3> > extent(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    for(int d = 0; d < 3; ++d) extent[p][d] = box[p].half[d];
+    std::sort(extent[p].begin(), extent[p].end());
+  }
+  // sorted by face count then area: congruent pieces are neighbours in this order
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return faces[a] != faces[b] ? faces[a] < faces[b] : (box[a].area != box[b].area ? box[a].area < box[b].area : a < b);
+  });
+  auto congruent = [&](std::size_t a, std::size_t b) {
+    if(faces[a] != faces[b]) return false;
+    const double scale = (std::max)(extent[a][2], extent[b][2]);
+    if(std::abs(box[a].area - box[b].area) > congruence_tolerance * (std::max)(box[a].area, box[b].area)) return false;
+    for(int d = 0; d < 3; ++d)
+      if(std::abs(extent[a][d] - extent[b][d]) > congruence_tolerance * scale) return false;
+    return true;
+  };
+  for(std::size_t i = 1; i < n; ++i)
+    if(congruent(order[i - 1], order[i])) cls[order[i]] = cls[order[i - 1]];
+  return cls;
+}
+
+// The piece each crumb (`crumb_area_fraction`) joins: the smallest of the touching pieces large
+// enough, the most local one (a key's plate rather than the case holding it). `none` if none.
+inline std::vector<std::size_t> crumb_hosts(const std::vector<Part_box>& box,
+                                            const std::vector<std::pair<std::size_t, std::size_t> >& contacts,
+                                            double total_area)
+{
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  std::vector<std::size_t> host(box.size(), none);
+  for(const std::pair<std::size_t, std::size_t>& c : contacts)
+    for(int side = 0; side < 2; ++side)
+    {
+      const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
+      if(box[p].area > crumb_area_fraction * total_area || box[h].area < crumb_host_ratio * box[p].area) continue;
+      if(host[p] == none || box[h].area < box[host[p]].area) host[p] = h;
+    }
+  return host;
+}
+
+// The piece each member of a pattern, or piece of a pattern's size on its host, joins; `none` if
+// none.
+inline std::vector<std::size_t> pattern_hosts(const std::vector<Part_box>& box, const std::vector<std::size_t>& faces,
+                                              const std::vector<std::pair<std::size_t, std::size_t> >& contacts,
+                                              double total_area)
+{
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)(), n = box.size();
+  const std::vector<std::size_t> cls = congruence_classes(box, faces);
+  // (host, class) -> members touching the host
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > on_host;
+  for(const std::pair<std::size_t, std::size_t>& c : contacts)
+    for(int side = 0; side < 2; ++side)
+    {
+      const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
+      if(box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area)
+        on_host[{h, cls[p]}].push_back(p);
+    }
+  std::vector<std::size_t> host(n, none);
+  std::vector<double> pattern_area(n, 0.); // per host, its largest pattern member
+  for(const auto& e : on_host)
+    if(e.second.size() >= pattern_count)
+      for(std::size_t p : e.second)
+      {
+        host[p] = e.first.first;
+        pattern_area[e.first.first] = (std::max)(pattern_area[e.first.first], box[p].area);
+      }
+  for(const std::pair<std::size_t, std::size_t>& c : contacts)
+    for(int side = 0; side < 2; ++side)
+    {
+      const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
+      if(host[p] == none && pattern_area[p] == 0. && box[p].area <= pattern_size_ratio * pattern_area[h] &&
+         box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area)
+        host[p] = h;
+    }
+  return host;
+}
+
+// Per piece, the root of its group (itself if none): patterns join their host, then crumbs the
+// smallest large enough piece they touch. A host is always larger, so the walk to the root ends.
+inline std::vector<std::size_t> grouped_pieces(const std::vector<Part_box>& box, const std::vector<std::size_t>& faces,
+                                               const std::vector<std::pair<std::size_t, std::size_t> >& contacts)
+{
+  const std::size_t none = (std::numeric_limits<std::size_t>::max)(), n = box.size();
+  double total = 0.;
+  for(const Part_box& b : box) total += b.area;
+  std::vector<std::size_t> host = pattern_hosts(box, faces, contacts, total);
+  const std::vector<std::size_t> crumb = crumb_hosts(box, contacts, total);
+  std::vector<std::size_t> root(n);
+  for(std::size_t p = 0; p < n; ++p)
+    if(host[p] == none) host[p] = crumb[p];
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    std::size_t r = p;
+    while(host[r] != none && box[host[r]].area > box[r].area) r = host[r];
+    root[p] = r;
+  }
+  return root;
+}
+
+} // namespace internal
+} // namespace Part_decomposition
+} // namespace CGAL
+
+#endif // CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_GROUPING_H
