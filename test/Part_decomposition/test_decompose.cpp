@@ -441,6 +441,33 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
   check_same_primitives(pb, pa);
 }
 
+TEST_CASE("decompose() takes values of other types as the pipeline's and refuses what they cannot hold",
+          "[decompose][defaults][data]")
+{
+  Mesh m;
+  test_shapes::read_shipped_shape("dumbbell", m);
+  const auto parts = [&](const auto& np) {
+    std::vector<std::size_t> labels(num_faces(m));
+    PD::decompose(m, CGAL::make_property_map(labels), np);
+    return labels;
+  };
+  const std::vector<std::size_t> reference = parts(PDP::freeze_ratio(PD::defaults::freeze_ratio));
+  // other arithmetic and range types of the same values give the same parts
+  CHECK(parts(PDP::voxel_resolutions(std::array<long, 3>{{16, 32, 64}})) == reference);
+  CHECK(parts(PDP::cue_weights(std::vector<float>{1.f, 1.f, 1.f, 0.f})) == reference);
+  CHECK(parts(PDP::combine(PDP::grid_resolution(128.), PDP::smoothing_iterations(1))) == reference);
+  CHECK(parts(PDP::freeze_ratio(0.15f)) == parts(PDP::freeze_ratio(double(0.15f))));
+  std::vector<std::size_t> two(num_faces(m));
+  CHECK(PD::decompose(m, CGAL::make_property_map(two), PDP::number_of_parts(2)) == 2u);
+  // a value the parameter's type cannot hold is out of its range, not wrapped or truncated
+  CHECK(error_of([&] { parts(PDP::number_of_parts(-1)); }) == PD::Input_error::INVALID_PARAMETER);
+  CHECK(error_of([&] { parts(CGAL::parameters::number_of_points_per_face(36.5)); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+  CHECK(error_of([&] { parts(PDP::voxel_resolutions(std::vector<double>{16., 32.5})); }) ==
+        PD::Input_error::INVALID_PARAMETER);
+  CHECK(error_of([&] { parts(PDP::cue_weights(std::vector<double>{1., 1.})); }) == PD::Input_error::INVALID_PARAMETER);
+}
+
 TEST_CASE("a stage given another normalization than the decomposer's is refused", "[decompose]")
 {
   const Mesh m = test_shapes::make_box(Point(0, 0, 0), Point(1, 2, 3), 2);
