@@ -130,9 +130,8 @@ public:
     m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np));
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
-    m_has_pieces = true;
-    drop_parts();
-    if(m_has_tsdf) volumetric_pieces(np);
+    computed(PIECES);
+    if(has(DISTANCE_FIELD)) volumetric_pieces(np);
     return m_s.pieces;
   }
 
@@ -145,8 +144,8 @@ public:
   bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values())
   {
     if(!internal::read_piece_parameters(np).use_pieces) return true;
-    if(!m_has_pieces) segment_pieces(np);
-    if(m_has_tsdf) return internal::any_of_flags(volumetric_pieces(np));
+    if(!has(PIECES)) segment_pieces(np);
+    if(has(DISTANCE_FIELD)) return internal::any_of_flags(volumetric_pieces(np));
     return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
   }
 
@@ -157,11 +156,9 @@ public:
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
   {
     m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
-    m_has_prior = true;
-    m_has_tsdf = false;
+    computed(PRIOR);
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
-    drop_fitting();
     return m_s.prior;
   }
 
@@ -172,22 +169,21 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Truncated_signed_distance_field& compute_distance_field(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
+    if(!has(PRIOR)) compute_prior<ConcurrencyTag>(np);
     std::vector<std::uint8_t> thin_faces;
     const bool use_pieces = internal::read_piece_parameters(np).use_pieces;
     if(use_pieces)
     {
-      if(!m_has_pieces) segment_pieces<ConcurrencyTag>(np);
+      if(!has(PIECES)) segment_pieces<ConcurrencyTag>(np);
       thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
                                                                 m_tm, m_segmented, with_mesh(np)));
     }
     m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
                                                                       use_pieces ? &thin_faces : nullptr);
-    m_has_tsdf = true;
+    computed(DISTANCE_FIELD);
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
-    drop_fitting();
-    if(m_has_pieces) volumetric_pieces(np);
+    if(has(PIECES)) volumetric_pieces(np);
     return m_s.tsdf;
   }
 
@@ -198,13 +194,12 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Fitting_zones& compute_fitting_zones(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    if(!m_has_prior) compute_prior<ConcurrencyTag>(np);
-    if(!m_has_tsdf) compute_distance_field<ConcurrencyTag>(np);
+    if(!has(PRIOR)) compute_prior<ConcurrencyTag>(np);
+    if(!has(DISTANCE_FIELD)) compute_distance_field<ConcurrencyTag>(np);
     const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
     m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
       m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
-    m_has_zones = true;
-    drop_fitting(false);
+    computed(ZONES);
     return m_s.zones;
   }
 
@@ -217,10 +212,9 @@ public:
   const Superquadric_fitting_result<Geom_traits>& fit_primitives(const NamedParameters& np = CGAL::parameters::default_values())
   {
     check_frame_parameters(np);
-    if(!m_has_zones) compute_fitting_zones<ConcurrencyTag>(np);
+    if(!has(ZONES)) compute_fitting_zones<ConcurrencyTag>(np);
     m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
-    m_has_fitting = true;
-    drop_parts();
+    computed(FITTING);
     return m_s.fitting;
   }
 
@@ -233,8 +227,7 @@ public:
     m_s.volumetric.patches.assign(num_faces(m_tm), 0);
     const std::size_t count = Part_decomposition::over_segment<ConcurrencyTag>(
       m_tm, boost::make_iterator_property_map(m_s.volumetric.patches.begin(), m_fim), with_mesh(np));
-    m_has_patches = true;
-    drop_parts();
+    computed(PATCHES);
     return count;
   }
 
@@ -257,21 +250,20 @@ public:
     m_use_pieces = internal::read_piece_parameters(np).use_pieces;
     bool fitted = needs_volumetric_stages(np);
     // the distance field may show that no piece bounds a volume
-    if(fitted && m_use_pieces && !m_has_tsdf)
+    if(fitted && m_use_pieces && !has(DISTANCE_FIELD))
     {
       compute_distance_field<ConcurrencyTag>(np);
       fitted = needs_volumetric_stages(np);
     }
     if(fitted)
     {
-      if(!m_has_fitting) fit_primitives<ConcurrencyTag>(np);
-      if(!m_has_patches) over_segment<ConcurrencyTag>(np);
+      if(!has(FITTING)) fit_primitives<ConcurrencyTag>(np);
+      if(!has(PATCHES)) over_segment<ConcurrencyTag>(np);
     }
     m_s.volumetric.parts.clear();
     m_s.volumetric.residual_faces.clear();
     internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s);
-    m_has_parts = true;
-    m_has_hierarchy = false;
+    computed(PARTS);
     internal::put_face_values(m_tm, m_fim, m_s.composed.parts, face_part_map);
     return m_s.composed.number_of_parts();
   }
@@ -287,11 +279,11 @@ public:
   const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
   {
     internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
-    if(!m_has_parts) compose_parts(boost::dummy_property_map());
+    if(!has(PARTS)) compose_parts(boost::dummy_property_map());
     m_s.hierarchy = build_part_hierarchy(
       m_tm, m_s.pieces, m_s.composed,
       with_mesh(parameters::combine(parameters::use_pieces(m_use_pieces), parameters::maximum_merge_cost(maximum_merge_cost))));
-    m_has_hierarchy = true;
+    computed(HIERARCHY);
     return m_s.hierarchy;
   }
 
@@ -308,7 +300,7 @@ public:
   std::size_t parts_at_level(std::size_t k, FacePartMap face_part_map, OutputIterator primitives = OutputIterator())
   {
     internal::check_parameter(k >= 1, "number_of_parts");
-    if(!m_has_hierarchy) build_hierarchy();
+    if(!has(HIERARCHY)) build_hierarchy();
     k = (std::min)(k, m_s.hierarchy.number_of_leaves());
     internal::put_face_values(m_tm, m_fim, m_s.hierarchy.labels(k), face_part_map);
     for(const Primitive& q : m_s.hierarchy.primitives(k)) *primitives++ = q;
@@ -388,12 +380,36 @@ private:
     return m_s.volumetric_pieces;
   }
 
-  void drop_parts() { m_has_parts = m_has_hierarchy = false; }
-  void drop_fitting(bool zones = true)
+  // The stage dependencies, written once: the stages each result feeds directly. A stage computed
+  // anew drops the results it feeds, and theirs.
+  enum Stage { PIECES, PRIOR, DISTANCE_FIELD, ZONES, FITTING, PATCHES, PARTS, HIERARCHY, NUMBER_OF_STAGES };
+  static unsigned int feeds(Stage s)
   {
-    if(zones) m_has_zones = false;
-    m_has_fitting = false;
-    drop_parts();
+    constexpr unsigned int direct[NUMBER_OF_STAGES] = {
+      1u << PARTS,                                // pieces
+      (1u << DISTANCE_FIELD) | (1u << ZONES),     // prior: the grid of the distance field and the zones
+      1u << ZONES,                                // distance field
+      1u << FITTING,                              // zones
+      1u << PARTS,                                // fitting
+      1u << PARTS,                                // patches
+      1u << HIERARCHY,                            // parts
+      0u};                                        // hierarchy
+    return direct[s];
+  }
+  bool has(Stage s) const { return (m_computed >> s) & 1u; }
+  void drop_fed_by(Stage s)
+  {
+    for(int t = 0; t < NUMBER_OF_STAGES; ++t)
+      if((feeds(s) >> t) & 1u)
+      {
+        m_computed &= ~(1u << t);
+        drop_fed_by(Stage(t));
+      }
+  }
+  void computed(Stage s)
+  {
+    drop_fed_by(s);
+    m_computed |= 1u << s;
   }
 
   const TriangleMesh& m_tm;
@@ -405,8 +421,7 @@ private:
   internal::Stage_results<Geom_traits> m_s;
   bool m_use_pieces = true; // of the last compose_parts(), for the hierarchy
   // which results are up to date; the stages compute the missing ones
-  bool m_has_pieces = false, m_has_prior = false, m_has_tsdf = false, m_has_zones = false, m_has_fitting = false,
-       m_has_patches = false, m_has_parts = false, m_has_hierarchy = false;
+  unsigned int m_computed = 0; // the stages whose results are current, one bit per Stage
 };
 
 } // namespace Part_decomposition
