@@ -211,8 +211,8 @@ volumetric and the open sheets that `inflate_sheets()` inflates hold at least ha
 and have limbs (a cut-out figure, a relief; see `inflate_sheets()`), the stages up to `compose_parts()` run on that solid instead, each face
 takes the part of its copy, and the hierarchy measures its parts on the solid's side of their
 normals (`Part_decomposer` does not take this path). Every named
-parameter of these functions is accepted here and passed to the stage that reads it; the table below lists them all, as does
-`parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
+parameter of these functions is accepted here and passed to the stage that reads it; \ref PD_ParameterTable
+lists them all, as does `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
 
@@ -232,8 +232,10 @@ reads what another writes.
 \param tm the mesh: any triangle mesh, open, non-manifold, self-intersecting or made of several
 components
 \param face_part_map receives the part id of each face
-\param np an optional sequence of named parameters among the ones listed below (package parameters
-are chained with `parameters::combine()`)
+\param np an optional sequence of named parameters (package parameters are chained with
+`parameters::combine()`): those listed below, which `decompose()` reads itself, and every parameter
+of the stage functions, passed to the stage that reads it; each is documented once, with its type,
+default, range and meaning, in \ref PD_ParameterTable (and with the stage function that reads it)
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map}
@@ -254,272 +256,10 @@ are chained with `parameters::combine()`)
                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
     \cgalParamDefault{an automatically indexed internal map}
   \cgalParamNEnd
-  \cgalParamNBegin{voxel_resolutions}
-    \cgalParamDescription{\f$R\f$: the resolutions of the prior, coarse to fine, each twice the
-                          previous; the distance field and the fitter use the finest}
-    \cgalParamType{`std::vector<int>`}
-    \cgalParamDefault{`{16, 32, 64}`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_points_per_face}
-    \cgalParamDescription{\f$N_{face}\f$: barycentric samples per face (a perfect square)}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`36`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_neighbors}
-    \cgalParamDescription{the number \f$k\f$ of nearest faces of the normal deviation cue}
-    \cgalParamType{an integer type, at least 1}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-  \cgalParamNBegin{curvature_percentile}
-    \cgalParamDescription{the percentile at which the vertex curvatures are clipped}
-    \cgalParamType{`double`, in `[0, 100]`}
-    \cgalParamDefault{`99.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_concave_curvature}
-    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
-                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{cue_weights}
-    \cgalParamDescription{\f$\lambda\f$: the weights of the curvature mean, curvature deviation,
-                          curvature gradient and normal deviation in the topology score}
-    \cgalParamType{`std::array<double, 4>`}
-    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
-  \cgalParamNEnd
-  \cgalParamNBegin{freeze_ratio}
-    \cgalParamDescription{\f$\alpha\f$: the fraction of active voxels frozen at each resolution}
-    \cgalParamType{`double`, in \f$(0,1)\f$}
-    \cgalParamDefault{`0.15`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_density}
-    \cgalParamDescription{if `false` (ablation), the topology score is not weighted by the density term \f$\sqrt{n_i}\f$}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
   \cgalParamNBegin{normalization}
     \cgalParamDescription{the normalization of the mesh into the unit cube; it must be the one `compute_normalization()` computes from `normalization_margin`}
     \cgalParamType{`Normalization`}
     \cgalParamDefault{computed by `compute_normalization()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization_margin}
-    \cgalParamDescription{the free margin left on each side of the normalized cube (see `compute_normalization()`)}
-    \cgalParamType{`double`, in `[0, 0.25]`}
-    \cgalParamDefault{`2.0/64`}
-  \cgalParamNEnd
-  \cgalParamNBegin{tsdf_truncation}
-    \cgalParamDescription{\f$\tau\f$, in voxels of the finest grid}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-  \cgalParamNBegin{tsdf_sign_method}
-    \cgalParamDescription{how the inside of the shape is decided}
-    \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
-    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC` (ray votes of winding numbers)}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution of the finest leaves of the adaptive grid of the volume
-                          stages, where the shape is thin (see `compute_tsdf()`); raised to the finest
-                          of `voxel_resolutions` if below it}
-    \cgalParamType{`int`, a power of two up to 256}
-    \cgalParamDefault{`128`}
-  \cgalParamNEnd
-  \cgalParamNBegin{adaptive_grid}
-    \cgalParamDescription{`false`: every leaf of the grid is a voxel of the finest of
-                          `voxel_resolutions`, the dense grid of the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{flow_zone_tolerance}
-    \cgalParamDescription{the dilation of the Flow zone, in voxels of the fitting resolution}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`2`}
-  \cgalParamNEnd
-  \cgalParamNBegin{trust_region_scales}
-    \cgalParamDescription{\f$\{\eta\}\f$: the semi-axis trust-region scales of the retries}
-    \cgalParamType{`std::vector<double>`}
-    \cgalParamDefault{`{1, 0.5, 0.25}`}
-  \cgalParamNEnd
-  \cgalParamNBegin{body_seed_threshold}
-    \cgalParamDescription{the EDT depth, in voxels of the fitting resolution, below which seeds switch from body to surface}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`1.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_body_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of body seeds, in voxels of the fitting resolution \f$r_{fit}\f$}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_surface_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of surface seeds, in voxels of the fitting resolution \f$r_{fit}\f$}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`3`}
-  \cgalParamNEnd
-  \cgalParamNBegin{exterior_penalty}
-    \cgalParamDescription{\f$\mu_{ext}\f$: the exterior intrusion penalty}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{coverage_target}
-    \cgalParamDescription{the fraction of the valid volume claimed before a fitting stage ends}
-    \cgalParamType{`double`, in \f$(0,1]\f$}
-    \cgalParamDefault{`0.999`}
-  \cgalParamNEnd
-  \cgalParamNBegin{roi_radius}
-    \cgalParamDescription{the radius of the region of interest of a seed, in voxels of the fitting resolution}
-    \cgalParamType{`double`, positive}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-  \cgalParamNBegin{interior_weight_mode}
-    \cgalParamDescription{how the variance of the interior Gaussian weight of the fit is set}
-    \cgalParamType{`CGAL::Part_decomposition::Interior_weight_mode`}
-    \cgalParamDefault{`Interior_weight_mode::ONE_SHOT`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_number_of_primitives}
-    \cgalParamDescription{a safety cap on the number of fitted superquadrics}
-    \cgalParamType{`std::size_t`, positive}
-    \cgalParamDefault{`256`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_freeze_zone}
-    \cgalParamDescription{if `false` (ablation "w/o Freeze"), Freeze voxels are treated as Flow by the fitter}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_tsdf_guidance}
-    \cgalParamDescription{if `false` (ablation "w/o TSDF"), the fit sees the occupancy only}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_body_seeds}
-    \cgalParamDescription{if `false` (ablation "w/o Body"), only surface seeds are used}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{fitting_resolution_cap}
-    \cgalParamDescription{the cap of the fitting resolution, \f$r_{fit} = \min(r, cap)\f$; 0 stands for the resolution before the finest (see `fitting_resolutions()`)}
-    \cgalParamType{`int`, non-negative}
-    \cgalParamDefault{`0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_exterior_band_samples}
-    \cgalParamDescription{if `false` (ablation), the exterior voxels of the thin outer band are not samples of the fit (\ref PD_Deviations)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_reachable_regions}
-    \cgalParamDescription{if `false` (ablation), regions of interest and claims do not stop at Freeze walls (\ref PD_Deviations)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_seed_exclusion}
-    \cgalParamDescription{if `false` (ablation), a rejected seed does not exclude a ball around it from later seeds of its stage (\ref PD_Deviations)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_solver_evaluations}
-    \cgalParamDescription{the residual evaluations of one least-squares solve}
-    \cgalParamType{`int`, positive}
-    \cgalParamDefault{`40`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_rejections_in_a_row}
-    \cgalParamDescription{the rejected seeds in a row that end a fitting stage (0: never)}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`4`}
-  \cgalParamNEnd
-  \cgalParamNBegin{dihedral_percentile}
-    \cgalParamDescription{\f$q\f$: the percentile of the dihedral angles above which edges are cut}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`90`}
-  \cgalParamNEnd
-  \cgalParamNBegin{smoothing_iterations}
-    \cgalParamDescription{the boundary-smoothing iterations of the over-segmentation}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`1`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_patch_size}
-    \cgalParamDescription{the smallest patch area kept by the over-segmentation, as a fraction of the mesh area}
-    \cgalParamType{`double`, in `[0, 1]`}
-    \cgalParamDefault{`0.001`}
-  \cgalParamNEnd
-  \cgalParamNBegin{patch_split_size}
-    \cgalParamDescription{the largest patch area the over-segmentation builds on smooth regions, as a fraction of the mesh area}
-    \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.0005`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vote_temperature}
-    \cgalParamDescription{\f$\tau_v\f$: the temperature of the patch vote, in voxels of the finest grid}
-    \cgalParamType{`double`, positive}
-    \cgalParamDefault{`1`}
-  \cgalParamNEnd
-  \cgalParamNBegin{boundary_smoothness}
-    \cgalParamDescription{\f$\lambda\f$: the weight of the cost of cutting along the edges against the
-                          primitives' evidence in the final labelling of the faces (see
-                          `assign_parts()`); 0 gives the paper's vote of the patches}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`10`}
-  \cgalParamNEnd
-  \cgalParamNBegin{merge_primitives}
-    \cgalParamDescription{if `true`, adjacent fitted primitives that one superquadric explains are
-                          merged after the fit (see `fit_superquadrics()`). This step is not in the paper.}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_merge_iou}
-    \cgalParamDescription{the voxel intersection over union from which one superquadric explains two
-                          groups of primitives (see `fit_superquadrics()`)}
-    \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.6`}
-  \cgalParamNEnd
-  \cgalParamNBegin{keep_residual_patches}
-    \cgalParamDescription{if `true`, the residual patches of the assignment (paper Sec.\ 3.4) are kept
-                          as parts of their own instead of being forced onto a primitive: the patches
-                          of the over-segmentation of which at least half of the area lies in Freeze
-                          voxels of the prior and whose faces are on average farther than
-                          `residual_tolerance` from the primitive they were assigned to. Each
-                          edge-connected set of them is one part, without fitted primitive, flagged by
-                          `Composed_parts::residual_parts` (`separate_residual_patches()`); like any part, it joins a neighbour if it
-                          is smaller than `minimum_part_area`.}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-  \cgalParamNBegin{residual_tolerance}
-    \cgalParamDescription{the mean distance to its primitive, in voxels of the finest grid, from which a
-                          Freeze-dominant patch is residual}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`2`}
-  \cgalParamNEnd
-  \cgalParamNBegin{merge_thin_sheets}
-    \cgalParamDescription{if `true`, the parts are merged by `merge_thin_sheet_parts()`: adjacent
-                          parts whose primitives are flat and thin are merged when less than half
-                          of the length of their common boundary runs over sharp edges, so that a
-                          thin curved shell, such as the wall of a cup or the skin of a wing, tiled
-                          by several flat primitives, is one part. This step is not in the paper.}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_pieces}
-    \cgalParamDescription{if `true`, the parts follow the pieces of the mesh and their concave
-                          creases (`segment_pieces()`): the volumetric stages decompose only the
-                          non-convex pieces that bound a volume, closed or not, whose parts are cut by the regions of
-                          `segment_pieces()`; every other piece is decomposed into its regions (see
-                          `volumetric_pieces()`). If `false`, the parts are
-                          those of the volumetric stages alone, as in the paper. This step is not
-                          in the paper.}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{crease_angle}
-    \cgalParamDescription{the dihedral angle, in degrees, from which a concave edge separates two
-                          regions of a piece (`segment_pieces()`)}
-    \cgalParamType{`double`, in `(0, 180]`}
-    \cgalParamDefault{`60`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_part_area}
-    \cgalParamDescription{with `use_pieces`, the area, as a fraction of the mesh area, below which a
-                          part is merged into the neighbour across its weakest shared edge (a
-                          separate piece without neighbour stays a part); a piece smaller than
-                          twice this area is not decomposed by the volumetric stages}
-    \cgalParamType{`double`, in `[0, 1]`}
-    \cgalParamDefault{`0.005`}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}
