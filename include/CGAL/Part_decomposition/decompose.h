@@ -26,7 +26,6 @@
 #include <type_traits>
 #include <vector>
 
-
 namespace CGAL {
 namespace Part_decomposition {
 
@@ -68,9 +67,7 @@ struct Decomposition_pass
 template <typename T, typename U>
 T pipeline_value(const U& value, const char* name)
 {
-  if constexpr(std::is_same_v<T, bool> || std::is_enum_v<T> || !std::is_arithmetic_v<U>)
-    return T(value);
-  else if constexpr(std::is_floating_point_v<T>)
+  if constexpr(std::is_same_v<T, bool> || std::is_enum_v<T> || std::is_floating_point_v<T> || !std::is_arithmetic_v<U>)
     return T(value);
   else
   {
