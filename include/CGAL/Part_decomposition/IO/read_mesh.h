@@ -152,8 +152,21 @@ sizes from the origin) and the smallest gap between distinct border vertices in 
 (\f$4 \cdot 10^{-5}\f$); see the user manual. A mesh stored in float32 far from the origin (more
 than about ten times its size) has a larger round-off and needs a larger tolerance.
 
-The file is read into memory at once and parsed in place by the package's own parsers (see the
-user manual for what each reads). An STL file stores the corners of each triangle apart: its vertices are
+The file is read into memory at once and parsed in place by the package's own parsers; a broken
+or hostile file gives `Invalid_input` (`UNREADABLE_FILE`) with the line (the byte of binary data)
+and what was expected, e.g.\ `cannot parse 'x.obj' as OBJ: line 12: expected a vertex index after
+'f', got 'abc'`. OBJ: vertices and faces (`f`, corners `i`, `i/t`, `i//n`, `i/t/n`, negative
+indices, a trailing backslash continuing the line) are read, every other statement skipped. ASCII
+PLY: an element is one line, and values after the properties its header declares (MeshLab writes
+lists its header does not declare) are ignored and counted
+(`Mesh_file_info::number_of_ignored_values`); a line with fewer values is an error naming it. A
+UTF-8 byte-order mark before an OFF, OBJ or PLY file is skipped. glTF: every triangle primitive
+(`TRIANGLES`, `TRIANGLE_STRIP`, `TRIANGLE_FAN`) of every mesh instanced by a node of the default
+scene, transformed by the node's global transform; the file's faces are the triangles of the nodes
+depth first (a node before its children), the primitives of a node's mesh in their order, the
+triangles of a primitive in the order of its indices. Sparse accessors, compressed geometry
+(Draco, meshopt) and buffers outside the file's folder are refused; without nlohmann/json
+(Debian: `nlohmann-json3-dev`) glTF files are refused. An STL file stores the corners of each triangle apart: its vertices are
 the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts them and
 `Mesh_file_info::number_of_merged_vertices` is 0.
 
