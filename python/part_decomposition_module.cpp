@@ -47,9 +47,7 @@ namespace PDP = CGAL::Part_decomposition::parameters;
 // The keywords, at the library's defaults: decompose()'s named parameters, then the module's own.
 struct Parameters : Part_decomposition_tools::Decomposition_settings
 {
-  std::optional<std::size_t> number_of_parts; // none: the default granularity
   int threads = 0;                            // 0: all cores
-  double weld_tolerance = PD::defaults::weld_tolerance; // of the reader
 };
 
 // A Python value of the type of the field; a TypeError that names the keyword otherwise.
@@ -67,9 +65,10 @@ T cast(const std::string& keyword, py::handle value, const char* expected)
   }
 }
 
-// An enumerator from its lower-case name (or the short name of hitops), as hitops reads it.
+// A value from its text, as hitops reads it: an enumerator from its lower-case name (or the short
+// name of hitops), the switches of the method.
 template <typename E>
-E enumerator(const std::string& keyword, py::handle value)
+E from_text(const std::string& keyword, py::handle value)
 {
   E e{};
   const std::string s = cast<std::string>(keyword, value, "a string");
@@ -99,18 +98,22 @@ Keyword field(T Owner::*member, const char* expected)
           [member](const Parameters& p) { return py::cast(p.*member); }};
 }
 
-// Enumerations as their lower-case names.
+// Enumerations as their lower-case names, the switches of the method as hitops writes them.
+template <typename E>
+constexpr bool has_text_form = std::is_enum<E>::value || std::is_same<E, PD::Method_variant>::value;
+
 template <typename E, typename Owner>
-std::enable_if_t<std::is_enum<E>::value, Keyword> keyword_of(E Owner::*member)
+std::enable_if_t<has_text_form<E>, Keyword> keyword_of(E Owner::*member)
 {
-  return {[member](Parameters& p, const std::string& k, py::handle v) { p.*member = enumerator<E>(k, v); },
+  return {[member](Parameters& p, const std::string& k, py::handle v) { p.*member = from_text<E>(k, v); },
           [member](const Parameters& p) { return py::cast(Part_decomposition_tools::format_value(p.*member)); }};
 }
 
 // The other settings as the Python value of their type.
 template <typename T, typename Owner>
-std::enable_if_t<!std::is_enum<T>::value, Keyword> keyword_of(T Owner::*member)
+std::enable_if_t<!has_text_form<T>, Keyword> keyword_of(T Owner::*member)
 {
+  if(std::is_same<T, std::optional<std::size_t> >::value) return field(member, "None or a positive int");
   if(std::is_same<T, bool>::value) return field(member, "a bool");
   if(std::is_same<T, double>::value) return field(member, "a float");
   if(std::is_unsigned<T>::value) return field(member, "a non-negative int");
@@ -127,9 +130,7 @@ const std::map<std::string, Keyword>& keywords()
   static const std::map<std::string, Keyword> table = [] {
     std::map<std::string, Keyword> t;
     Part_decomposition_tools::for_each_setting([&](const char* name, auto member) { t.emplace(name, keyword_of(member)); });
-    t.emplace("number_of_parts", field(&Parameters::number_of_parts, "None or a positive int"));
     t.emplace("threads", field(&Parameters::threads, "None or a positive int"));
-    t.emplace("weld_tolerance", field(&Parameters::weld_tolerance, "a float"));
     return t;
   }();
   return table;
@@ -157,7 +158,6 @@ py::dict default_parameters()
   const Parameters p;
   py::dict d;
   for(const auto& k : keywords()) d[py::str(k.first)] = k.second.get(p);
-  d["number_of_parts"] = py::none();
   d["threads"] = py::none();
   return d;
 }
@@ -181,15 +181,6 @@ struct Result
   PD::IO::Mesh_file_info info; // mesh faces to input faces
 };
 
-template <typename NamedParameters>
-std::size_t decompose_with(const Mesh& mesh, std::vector<std::size_t>& part, const Parameters& p,
-                           const NamedParameters& np)
-{
-  if(p.number_of_parts)
-    return PD::decompose(mesh, CGAL::make_property_map(part), PDP::combine(np, PDP::number_of_parts(*p.number_of_parts)));
-  return PD::decompose(mesh, CGAL::make_property_map(part), np);
-}
-
 // decompose() with the parameters; labels per mesh face, in the order of faces(mesh).
 std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
 {
@@ -201,9 +192,9 @@ std::vector<std::size_t> run(const Mesh& mesh, const Parameters& p, Result& r)
 #ifdef CGAL_LINKED_WITH_TBB
   // an arena of `threads` threads: the caller's other TBB work and global settings are untouched
   tbb::task_arena arena(p.threads > 0 ? p.threads : tbb::task_arena::automatic);
-  arena.execute([&] { r.number_of_parts = decompose_with(mesh, part, p, np); });
+  arena.execute([&] { r.number_of_parts = PD::decompose(mesh, CGAL::make_property_map(part), np); });
 #else
-  r.number_of_parts = decompose_with(mesh, part, p, np);
+  r.number_of_parts = PD::decompose(mesh, CGAL::make_property_map(part), np);
 #endif
   for(const Superquadric& q : primitives)
   {
@@ -366,7 +357,7 @@ std::string keyword_documentation()
     const std::string name = py::str(item.first);
     doc += "    " + name + "=" + std::string(py::repr(item.second));
     if(const PD::Parameter_description* p = PD::internal::find_parameter(name.c_str()))
-      doc += std::string(": ") + p->meaning + (p->is_ablation ? " (ablation)" : "");
+      doc += std::string(": ") + p->meaning;
     else if(name == "threads")
       doc += ": the number of threads; None: all cores";
     doc += "\n";

@@ -66,9 +66,8 @@ struct Options
 {
   int threads = 0, runs = 3;
   bool verbose = false;
-  PD::Interior_weight_mode mode = PD::defaults::interior_weight_mode;
+  PD::Method_variant switches; // interior_weight_mode, use_exterior_band_samples, use_reachable_regions
   double roi = PD::defaults::roi_radius;
-  bool exterior_band = true, reachable = true;
   int evaluations = PD::defaults::maximum_solver_evaluations;
   std::size_t rejections = PD::defaults::maximum_rejections_in_a_row;
   std::vector<std::string> files;
@@ -83,10 +82,10 @@ Options parse_options(int argc, char** argv)
     if(a == "--threads" && i + 1 < argc) o.threads = std::atoi(argv[++i]);
     else if(a == "--runs" && i + 1 < argc) o.runs = std::max(1, std::atoi(argv[++i]));
     else if(a == "--mode" && i + 1 < argc)
-      o.mode = std::string(argv[++i]) == "mps" ? PD::Interior_weight_mode::MPS_REESTIMATED : PD::Interior_weight_mode::ONE_SHOT;
+      o.switches.interior_weight_mode = std::string(argv[++i]) == "mps" ? PD::Interior_weight_mode::MPS_REESTIMATED : PD::Interior_weight_mode::ONE_SHOT;
     else if(a == "--roi" && i + 1 < argc) o.roi = std::atof(argv[++i]);
-    else if(a == "--no-exterior-band") o.exterior_band = false;
-    else if(a == "--no-connected") o.reachable = false;
+    else if(a == "--no-exterior-band") o.switches.use_exterior_band_samples = false;
+    else if(a == "--no-connected") o.switches.use_reachable_regions = false;
     else if(a == "--max-evals" && i + 1 < argc) o.evaluations = std::atoi(argv[++i]);
     else if(a == "--rejections" && i + 1 < argc) o.rejections = std::size_t(std::atol(argv[++i]));
     else if(a == "--verbose") o.verbose = true;
@@ -109,9 +108,7 @@ PD::Superquadric_fitting_result<K> timed_fit(const PD::Hierarchical_prior& prior
     res = PD::fit_superquadrics<Tag, K>(
       prior, tsdf,
       PD::parameters::combine(CGAL::parameters::verbose(o.verbose && run == 0), PD::parameters::roi_radius(o.roi),
-                              PD::parameters::interior_weight_mode(o.mode),
-                              PD::parameters::use_exterior_band_samples(o.exterior_band),
-                              PD::parameters::use_reachable_regions(o.reachable),
+                              PD::parameters::method_variant(o.switches),
                               PD::parameters::maximum_solver_evaluations(o.evaluations),
                               PD::parameters::maximum_rejections_in_a_row(o.rejections)));
     times.push_back(now_s() - t0);

@@ -287,9 +287,9 @@ constexpr double paper_coverage = 0.95;
 void make_paper_literal(Variant& v)
 {
   v.fitting_resolution_cap = paper_fitting_resolution_cap;
-  v.use_exterior_band_samples = v.use_reachable_regions = v.use_seed_exclusion = v.merge_thin_sheets = false;
-  v.use_concave_curvature = false;
-  v.cue_weights = {{1., 1., 1., 1.}};
+  v.method_variant.use_exterior_band_samples = v.method_variant.use_reachable_regions = v.method_variant.use_seed_exclusion = v.method_variant.merge_thin_sheets = false;
+  v.method_variant.use_concave_curvature = false;
+  v.cue_weights = {1., 1., 1., 1.};
   v.maximum_solver_evaluations = paper_solver_evaluations;
   v.maximum_rejections_in_a_row = 0;
   v.coverage_target = paper_coverage;
@@ -301,15 +301,15 @@ std::vector<Variant> all_variants()
   std::vector<Variant> v;
   auto add = [&](const std::string& id) { v.push_back(Variant()); v.back().id = id; return &v.back(); };
   add("full");
-  add("no_body")->use_body_seeds = false;
-  add("no_freeze")->use_freeze_zone = false;
+  add("no_body")->method_variant.use_body_seeds = false;
+  add("no_freeze")->method_variant.use_freeze_zone = false;
   add("alpha05")->freeze_ratio = 0.05;
   add("alpha25")->freeze_ratio = 0.25;
   add("alpha10")->freeze_ratio = 0.10;
   add("alpha20")->freeze_ratio = 0.20;
-  add("curvature_mean_only")->cue_weights = {{1., 0., 0., 0.}};
-  add("no_curvature_gradient")->cue_weights = {{1., 1., 0., 0.}};
-  add("no_curvature_deviation")->cue_weights = {{1., 0., 1., 0.}};
+  add("curvature_mean_only")->cue_weights = {1., 0., 0., 0.};
+  add("no_curvature_gradient")->cue_weights = {1., 1., 0., 0.};
+  add("no_curvature_deviation")->cue_weights = {1., 0., 1., 0.};
   add("percentile_99")->curvature_percentile = 99.;
   add("percentile_99_9")->curvature_percentile = 99.9;
   add("surface_volume_2")->minimum_surface_volume = 2.;
@@ -317,11 +317,11 @@ std::vector<Variant> all_variants()
   add("flow_tolerance_3")->flow_zone_tolerance = 3.;
   add("body_seed_1")->body_seed_threshold = 1.;
   add("body_seed_2")->body_seed_threshold = 2.;
-  add("no_curvature")->cue_weights = {{0., 0., 0., 1.}};
-  add("paper_normal")->cue_weights = {{1., 1., 1., 1.}}; // the normal deviation, convex edges too
-  add("no_density")->use_density = false;
-  add("paper_curvature")->use_concave_curvature = false; // |H|/2 at every vertex, convex ones too
-  add("no_tsdf")->use_tsdf_guidance = false;
+  add("no_curvature")->cue_weights = {0., 0., 0., 1.};
+  add("paper_normal")->cue_weights = {1., 1., 1., 1.}; // the normal deviation, convex edges too
+  add("no_density")->method_variant.use_density = false;
+  add("paper_curvature")->method_variant.use_concave_curvature = false; // |H|/2 at every vertex, convex ones too
+  add("no_tsdf")->method_variant.use_tsdf_guidance = false;
   // the inside of every volume stage: the paper's exterior flood fill, the hierarchical winding number
   add("sign_flood")->tsdf_sign_method = PD::Tsdf_sign_method::FLOOD_FILL;
   add("sign_winding")->tsdf_sign_method = PD::Tsdf_sign_method::WINDING_NUMBER;
@@ -331,34 +331,34 @@ std::vector<Variant> all_variants()
     add("r" + s)->voxel_resolutions = {r};
     Variant* a = add("r" + s + "_no_freeze");
     a->voxel_resolutions = {r};
-    a->use_freeze_zone = false;
+    a->method_variant.use_freeze_zone = false;
     Variant* b = add("r" + s + "_no_tsdf");
     b->voxel_resolutions = {r};
-    b->use_tsdf_guidance = false;
+    b->method_variant.use_tsdf_guidance = false;
     Variant* c = add("r" + s + "_paper_fit_resolution");
     c->voxel_resolutions = {r};
     c->fitting_resolution_cap = paper_fitting_resolution_cap;
   }
   // one departure from the paper undone at a time, then all of them
   add("paper_fit_resolution")->fitting_resolution_cap = paper_fitting_resolution_cap;
-  add("no_exterior_band")->use_exterior_band_samples = false;
-  add("no_reachable_regions")->use_reachable_regions = false;
-  add("no_seed_exclusion")->use_seed_exclusion = false;
+  add("no_exterior_band")->method_variant.use_exterior_band_samples = false;
+  add("no_reachable_regions")->method_variant.use_reachable_regions = false;
+  add("no_seed_exclusion")->method_variant.use_seed_exclusion = false;
   add("paper_evaluations")->maximum_solver_evaluations = paper_solver_evaluations;
   add("no_rejection_stop")->maximum_rejections_in_a_row = 0;
   add("paper_coverage")->coverage_target = paper_coverage;
   add("no_patch_split")->patch_split_size = 1.;
-  add("no_sheet_merge")->merge_thin_sheets = false;
+  add("no_sheet_merge")->method_variant.merge_thin_sheets = false;
   make_paper_literal(*add("paper_literal"));
   // the evidence of pieces and creases, and its two thresholds
-  add("no_pieces")->use_pieces = false;
+  add("no_pieces")->method_variant.use_pieces = false;
   for(double a : {45., 75.}) add("crease" + std::to_string(int(a)))->crease_angle = a;
   for(double a : {0.002, 0.01}) add("min_part_area_" + std::to_string(int(a * 1000)))->minimum_part_area = a;
   // the residual patches, off by default, at three tolerances
   for(double t : {1., 2., 4.})
   {
     Variant* r = add("residual_" + std::to_string(int(t)));
-    r->keep_residual_patches = true;
+    r->method_variant.keep_residual_patches = true;
     r->residual_tolerance = t;
   }
   // the final labelling: the patch vote (0) and the weight of the boundary cost
@@ -385,7 +385,7 @@ std::vector<Variant> all_variants()
   lengths->boundary_smoothness *= 2.;
   lengths->residual_tolerance *= 2.;
   // the grid: the paper's dense grid of the finest voxel resolution, no leaf finer than it, leaves to 256
-  add("uniform")->adaptive_grid = false;
+  add("uniform")->method_variant.adaptive_grid = false;
   add("grid64")->grid_resolution = 64;
   add("grid256")->grid_resolution = 256;
   for(double t : {4., 6.}) add("trunc" + std::to_string(int(t)))->tsdf_truncation = t;
@@ -394,7 +394,7 @@ std::vector<Variant> all_variants()
   // the threshold of the hierarchy's merges, in thousandths of the bounding box volume
   for(int t : {1, 2, 5, 8, 12}) add("merge_cost_" + std::to_string(t))->maximum_merge_cost = t / 1000.;
   // primitives that one superquadric explains: kept apart, or merged from three IoU levels
-  add("no_primitive_merge")->merge_primitives = false;
+  add("no_primitive_merge")->method_variant.merge_primitives = false;
   for(double t : {0.5, 0.7, 0.8}) add("merge_iou_" + std::to_string(int(t * 100)))->minimum_merge_iou = t;
   for(double t : {0.7, 0.8, 0.9})
   {
@@ -404,10 +404,10 @@ std::vector<Variant> all_variants()
   }
   Variant* r128_apart = add("r128_no_primitive_merge");
   r128_apart->voxel_resolutions = {32, 64, 128};
-  r128_apart->merge_primitives = false;
+  r128_apart->method_variant.merge_primitives = false;
   Variant* before = add("vote_no_primitive_merge"); // the final labelling of issue 16
   before->boundary_smoothness = 0.;
-  before->merge_primitives = false;
+  before->method_variant.merge_primitives = false;
   Variant* vote_no_split = add("smooth_0_no_patch_split");
   vote_no_split->boundary_smoothness = 0.;
   vote_no_split->patch_split_size = 1.;

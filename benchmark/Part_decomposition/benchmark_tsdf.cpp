@@ -163,9 +163,11 @@ static void remove_spread_faces(Mesh& mesh, int count)
 // the field.
 static PD::Truncated_signed_distance_field time_tsdf(const Mesh& mesh, const Options& o, const std::string& shown)
 {
+  PD::Method_variant switches;
+  switches.adaptive_grid = !o.uniform;
   const auto np = PD::parameters::combine(PD::parameters::tsdf_sign_method(o.method),
                                           PD::parameters::grid_resolution(o.grid_resolution),
-                                          PD::parameters::adaptive_grid(!o.uniform));
+                                          PD::parameters::method_variant(switches));
   const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior<Tag>(mesh);
   PD::Truncated_signed_distance_field tsdf;
   double t1 = 0., t2 = 0., cpu = 0.;

@@ -80,7 +80,6 @@ struct Usage_error : std::runtime_error
 struct Options
 {
   std::string input, labels, colored, primitives, primitive_mesh, hierarchy;
-  std::size_t parts = 0; // 0: the default granularity
   std::string batch, out_dir;
   std::string parts_glb, labels_glb;
   bool parts_glb_primitives = false;
@@ -91,8 +90,7 @@ struct Options
   bool quiet = false, report = false;
   std::string thumbnail;
   int thumbnail_width = 320, thumbnail_height = 160;
-  double weld_tolerance = PD::defaults::weld_tolerance; // the named parameter of the reader
-  Part_decomposition_tools::Decomposition_settings decomposition; // the named parameters of decompose()
+  Part_decomposition_tools::Decomposition_settings decomposition; // the named parameters (of the reader too)
 };
 
 const char* const usage_text =
@@ -126,8 +124,8 @@ const char* const usage_text =
   "                           batch prints one line per mesh)\n"
   "  --timings                print the time of each stage on stderr\n"
   "  --threads N              number of threads (default: all cores)\n"
-  "  --list-parameters        the table of the parameters (name, option, default, type, range, stage,\n"
-  "                           ablation, meaning) as tab-separated values\n"
+  "  --list-parameters        the table of the parameters (name, option, default, paper, type, range, stage,\n"
+  "                           kind, meaning) as tab-separated values\n"
   "batch processing:\n"
   "  --batch LIST             a file with one mesh path per line (# starts a comment)\n"
   "  --out DIR                (created if needed) writes DIR/NAME.seg and DIR/NAME.json per mesh and a summary\n"
@@ -149,22 +147,22 @@ struct Alias
   const char* value;
 };
 const Alias aliases[] = {
-  {"--no-pieces", "use_pieces", "false"}, {"--min-part-area", "minimum_part_area", nullptr},
+  {"--no-pieces", "method_variant", "use_pieces=false"}, {"--min-part-area", "minimum_part_area", nullptr},
   {"--resolutions", "voxel_resolutions", nullptr}, {"--samples-per-face", "number_of_points_per_face", nullptr},
-  {"--neighbors", "number_of_neighbors", nullptr}, {"--no-density", "use_density", "false"},
+  {"--neighbors", "number_of_neighbors", nullptr}, {"--no-density", "method_variant", "use_density=false"},
   {"--margin", "normalization_margin", nullptr},
   {"--truncation", "tsdf_truncation", nullptr}, {"--sign-method", "tsdf_sign_method", nullptr},
   {"--flow-tolerance", "flow_zone_tolerance", nullptr}, {"--min-body-volume", "minimum_body_volume", nullptr},
   {"--min-surface-volume", "minimum_surface_volume", nullptr}, {"--coverage", "coverage_target", nullptr},
-  {"--interior-weight", "interior_weight_mode", nullptr}, {"--max-primitives", "maximum_number_of_primitives", nullptr},
-  {"--no-freeze", "use_freeze_zone", "false"}, {"--no-tsdf", "use_tsdf_guidance", "false"},
-  {"--no-body-seeds", "use_body_seeds", "false"}, {"--no-exterior-band", "use_exterior_band_samples", "false"},
-  {"--no-reachable-regions", "use_reachable_regions", "false"}, {"--no-seed-exclusion", "use_seed_exclusion", "false"},
+  {"--max-primitives", "maximum_number_of_primitives", nullptr},
+  {"--no-freeze", "method_variant", "use_freeze_zone=false"}, {"--no-tsdf", "method_variant", "use_tsdf_guidance=false"},
+  {"--no-body-seeds", "method_variant", "use_body_seeds=false"}, {"--no-exterior-band", "method_variant", "use_exterior_band_samples=false"},
+  {"--no-reachable-regions", "method_variant", "use_reachable_regions=false"}, {"--no-seed-exclusion", "method_variant", "use_seed_exclusion=false"},
   {"--max-solver-evaluations", "maximum_solver_evaluations", nullptr},
   {"--max-rejections-in-a-row", "maximum_rejections_in_a_row", nullptr},
-  {"--no-primitive-merge", "merge_primitives", "false"}, {"--min-merge-iou", "minimum_merge_iou", nullptr},
+  {"--no-primitive-merge", "method_variant", "merge_primitives=false"}, {"--min-merge-iou", "minimum_merge_iou", nullptr},
   {"--dihedral-quantile", "dihedral_percentile", nullptr}, {"--min-patch-size", "minimum_patch_size", nullptr},
-  {"--max-patch-size", "patch_split_size", nullptr}, {"--no-sheet-merge", "merge_thin_sheets", "false"},
+  {"--max-patch-size", "patch_split_size", nullptr}, {"--no-sheet-merge", "method_variant", "merge_thin_sheets=false"},
   {"--max-merge-cost", "maximum_merge_cost", nullptr}, {"--parts", "number_of_parts", nullptr}};
 
 // The option of a parameter of PD::parameter_table: its name with '-' for '_'.
@@ -198,21 +196,9 @@ const std::map<std::string, Parameter_option>& parameter_options()
     std::map<std::string, Parameter_option> t;
     Part_decomposition_tools::for_each_setting(
       [&](const char* name, auto member) { t.emplace(option_of(name), member_option(name, member)); });
-    t.emplace("--weld-tolerance",
-              Parameter_option{PD::internal::find_parameter("weld_tolerance"),
-                               [](Options& o, const std::string& text) { Part_decomposition_tools::parse_value(text, o.weld_tolerance); },
-                               [](const Options& o) { return Part_decomposition_tools::format_value(o.weld_tolerance); }});
-    t.emplace("--number-of-parts",
-              Parameter_option{PD::internal::find_parameter("number_of_parts"),
-                               [](Options& o, const std::string& text) {
-                                 if(text == "none") { o.parts = 0; return; }
-                                 Part_decomposition_tools::parse_value(text, o.parts);
-                                 if(o.parts < 1) throw std::invalid_argument("at least 1, or none");
-                               },
-                               [](const Options& o) { return o.parts == 0 ? std::string("none") : std::to_string(o.parts); }});
     // a parameter of the table without option, or an option of no parameter, is a bug of this list
     for(const PD::Parameter_description& p : PD::parameter_table)
-      if(p.is_value && !t.count(option_of(p.name))) throw std::logic_error(std::string("no option for ") + p.name);
+      if(p.kind == PD::Parameter_kind::VALUE && !t.count(option_of(p.name))) throw std::logic_error(std::string("no option for ") + p.name);
     for(const auto& o : t)
       if(o.second.parameter == nullptr) throw std::logic_error("no parameter for " + o.first);
     return t;
@@ -238,17 +224,9 @@ const char* stage_title(PD::Parameter_stage stage)
 }
 
 // One line per parameter: option, default, meaning, range, former spellings.
-void print_parameter(std::ostream& out, const PD::Parameter_description& p, const Options& defaults)
+// At most 110 columns: the text goes on under the meaning.
+void print_wrapped(std::ostream& out, std::string line)
 {
-  const std::string option = option_of(p.name);
-  std::string line = "  " + option + " " + parameter_options().at(option).get(defaults);
-  line += std::string(line.size() < 38 ? 38 - line.size() : 2, ' ') + p.meaning;
-  if(*p.range) line += std::string("; ") + p.range;
-  std::string also;
-  for(const Alias& a : aliases)
-    if(p.name == std::string(a.parameter)) also += std::string(also.empty() ? "" : ", ") + a.option + (a.value ? std::string(" for ") + a.value : "");
-  if(!also.empty()) line += " [also " + also + "]";
-  // at most 110 columns: the text goes on under the meaning
   const std::size_t width = 110, indent = 38;
   while(line.size() > width)
   {
@@ -260,7 +238,31 @@ void print_parameter(std::ostream& out, const PD::Parameter_description& p, cons
   out << line << '\n';
 }
 
-// The usage text, then every parameter with an option, grouped by stage, the ablations last.
+void print_parameter(std::ostream& out, const PD::Parameter_description& p, const Options& defaults)
+{
+  const std::string option = option_of(p.name);
+  std::string line = "  " + option + " " + parameter_options().at(option).get(defaults);
+  line += std::string(line.size() < 38 ? 38 - line.size() : 2, ' ') + p.meaning;
+  if(*p.range) line += std::string("; ") + p.range;
+  std::string also;
+  for(const Alias& a : aliases)
+    if(p.name == std::string(a.parameter)) also += std::string(also.empty() ? "" : ", ") + a.option + (a.value ? std::string(" for ") + a.value : "");
+  if(!also.empty()) line += " [also " + also + "]";
+  print_wrapped(out, line);
+}
+
+// One line per switch of the method: SWITCH=DEFAULT, the paper's value, meaning.
+void print_switch(std::ostream& out, const PD::Parameter_description& p)
+{
+  using Part_decomposition_tools::format_switch;
+  std::string line = "  " + std::string(p.name) + "=" + format_switch(PD::Method_variant(), p.name);
+  line += std::string(line.size() < 38 ? 38 - line.size() : 2, ' ') + "paper: " +
+          format_switch(PD::Method_variant::paper_literal(), p.name) + "; " + p.meaning;
+  print_wrapped(out, line);
+}
+
+
+// The usage text, then every parameter with an option, grouped by stage, the switches of the method last.
 void print_help(std::ostream& out)
 {
   const Options defaults;
@@ -273,29 +275,36 @@ void print_help(std::ostream& out)
     bool title = false;
     for(const PD::Parameter_description& p : PD::parameter_table)
     {
-      if(int(p.stage) != s || !p.is_value || p.is_ablation || !parameter_options().count(option_of(p.name))) continue;
+      if(int(p.stage) != s || p.kind != PD::Parameter_kind::VALUE) continue;
       if(!title) out << " " << stage_title(p.stage) << ":\n";
       title = true;
       print_parameter(out, p, defaults);
     }
   }
-  out << " ablations (each undoes a documented choice of the package, or reproduces the paper literally):\n";
+  out << " the switches of --method-variant (each undoes a documented choice of the package, or reproduces the\n"
+         " paper literally): SWITCH=VALUE, the package's default first, then the paper's:\n";
   for(const PD::Parameter_description& p : PD::parameter_table)
-    if(p.is_value && p.is_ablation) print_parameter(out, p, defaults);
+    if(p.kind == PD::Parameter_kind::METHOD_SWITCH) print_switch(out, p);
 }
 
-// The table as tab-separated values, for the manual's generator: name, option, default, type,
-// range, stage, read by, ablation, meaning; the default is the value hitops passes.
+// The table as tab-separated values, for the manual's generator: name, option, default, paper
+// (a switch's value in the paper), type, range, stage, kind, meaning; the default of an option is
+// the value hitops passes.
 void print_parameter_table(std::ostream& out)
 {
   const Options defaults;
-  out << "name\toption\tdefault\ttable_default\ttype\trange\tstage\tread_by\tablation\tmeaning\n";
+  static const char* const kinds[] = {"value", "object", "switch"};
+  out << "name\toption\tdefault\tpaper\ttype\trange\tstage\tkind\tmeaning\n";
   for(const PD::Parameter_description& p : PD::parameter_table)
   {
-    const std::string option = p.is_value ? option_of(p.name) : "";
-    out << p.name << '\t' << option << '\t' << (p.is_value ? parameter_options().at(option).get(defaults) : p.default_value)
-        << '\t' << p.default_value << '\t' << p.type << '\t' << p.range << '\t' << stage_title(p.stage) << '\t'
-        << p.read_by << '\t' << (p.is_ablation ? "yes" : "no") << '\t' << p.meaning << '\n';
+    const bool value = p.kind == PD::Parameter_kind::VALUE, method_switch = p.kind == PD::Parameter_kind::METHOD_SWITCH;
+    const std::string option = value ? option_of(p.name) : "";
+    using Part_decomposition_tools::format_switch;
+    out << p.name << '\t' << option << '\t'
+        << (value ? parameter_options().at(option).get(defaults)
+                  : method_switch ? format_switch(PD::Method_variant(), p.name) : std::string(p.default_value))
+        << '\t' << (method_switch ? format_switch(PD::Method_variant::paper_literal(), p.name) : "") << '\t' << p.type << '\t' << p.range << '\t' << stage_title(p.stage) << '\t'
+        << kinds[int(p.kind)] << '\t' << p.meaning << '\n';
   }
 }
 
@@ -474,11 +483,9 @@ Result run(const Mesh& mesh, const Options& o)
   auto part_map = CGAL::make_property_map(part); // Surface_mesh face indices are 0..F-1 here
   const auto np = PDP::combine(Part_decomposition_tools::named_parameters(o.decomposition),
                                PDP::primitive_output_iterator(std::back_inserter(r.primitives)),
-                               PDP::part_hierarchy(o.parts > 0 || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
+                               PDP::part_hierarchy(o.decomposition.number_of_parts || !o.hierarchy.empty() ? &r.hierarchy : nullptr),
                                PDP::stage_timings(&r.timings));
-  // told the count, decompose() may look finer for more parts than its default granularity has
-  r.parts = o.parts > 0 ? PD::decompose(mesh, part_map, PDP::combine(np, PDP::number_of_parts(o.parts)))
-                        : PD::decompose(mesh, part_map, np);
+  r.parts = PD::decompose(mesh, part_map, np);
   r.face_part.assign(part.begin(), part.end());
   return r;
 }
@@ -647,7 +654,7 @@ int single(const Options& o)
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
   const PD::IO::Mesh_file_info info =
-    PD::IO::read_triangle_mesh(o.input, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+    PD::IO::read_triangle_mesh(o.input, mesh, PD::parameters::weld_tolerance(o.decomposition.weld_tolerance));
   if(o.decomposition.verbose) print_reading(info);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.stage("decomposing");
@@ -739,7 +746,7 @@ Mesh_outcome decompose_one(const Options& o, const std::string& path, const Mesh
     stage("reading");
     Mesh mesh;
     const PD::IO::Mesh_file_info info =
-      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.decomposition.weld_tolerance));
     if(o.decomposition.verbose) print_reading(info);
     stage("decomposing");
     const Result r = run(mesh, o);
@@ -882,7 +889,7 @@ bool thumbnail_of_outputs(const Options& o, const std::string& path, const std::
   {
     Mesh mesh;
     const PD::IO::Mesh_file_info info =
-      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.weld_tolerance));
+      PD::IO::read_triangle_mesh(path, mesh, PD::parameters::weld_tolerance(o.decomposition.weld_tolerance));
     if(labels.size() != info.number_of_input_faces) return false;
     std::vector<std::size_t> face_part;
     for(std::size_t input_face : info.face_to_input) face_part.push_back(labels[input_face]);

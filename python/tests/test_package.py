@@ -94,7 +94,7 @@ def test_labels_at_is_decompose_with_that_number_of_parts(dumbbell):
 def test_the_grid_keywords_reach_the_library(dumbbell):
     vertices, faces = dumbbell
     # the paper's dense grid, and an adaptive grid whose finest leaves are coarser: parts and hierarchy
-    for keywords in ({"adaptive_grid": False}, {"grid_resolution": 64}):
+    for keywords in ({"method_variant": "adaptive_grid=false"}, {"grid_resolution": 64}):
         r = pd.decompose(vertices, faces, **keywords, **FAST)
         assert r.labels.shape == (len(faces),) and r.number_of_parts in r.levels
         assert np.array_equal(r.labels_at(r.number_of_parts), r.labels)
@@ -104,8 +104,10 @@ def test_the_grid_keywords_reach_the_library(dumbbell):
     for bad in (0, 96, 512):
         with pytest.raises(pd.InvalidInput, match="grid_resolution"):
             pd.decompose(vertices, faces, grid_resolution=bad, **FAST)
-    with pytest.raises(TypeError, match="adaptive_grid"):
-        pd.decompose(vertices, faces, adaptive_grid="no", **FAST)
+    with pytest.raises(ValueError, match="method_variant"):
+        pd.decompose(vertices, faces, method_variant="adaptive_grid=no", **FAST)
+    with pytest.raises(TypeError, match="grid_resolution"):
+        pd.decompose(vertices, faces, grid_resolution="no", **FAST)
 
 
 class TrackedArray(np.ndarray):

@@ -53,7 +53,7 @@ def python_value(row, text):
         return None
     if row["type"] == "bool":
         return {"true": True, "false": False}[text]
-    if row["type"] in ("Tsdf_sign_method", "Interior_weight_mode"):
+    if row["type"] in ("Tsdf_sign_method", "Method_variant"):
         return text
     if row["type"].startswith("std::vector") or row["type"].startswith("std::array"):
         return [float(x) for x in text.split(",")]
@@ -66,10 +66,8 @@ def test_every_parameter_has_an_option_named_as_it_with_its_default(table, help_
         assert row["option"] == "--" + row["name"].replace("_", "-")
         assert row["option"] in help_options, "hitops --help does not list " + row["option"]
         assert help_options[row["option"]] == row["default"], row["name"]
-        # the library's table states the default that the programs use
-        assert row["table_default"] == row["default"], row["name"]
-    # the objects (outputs, a normalization) are the only parameters without an option
-    assert {row["name"] for row in table if not row["option"]} == {
+    # the objects (outputs, a normalization) and the switches of the method have no option of their own
+    assert {row["name"] for row in table if not row["option"] and row["kind"] != "switch"} == {
         "normalization", "part_hierarchy", "primitive_output_iterator", "stage_timings"}
 
 
@@ -129,12 +127,17 @@ def test_the_range_checks_state_the_ranges_of_the_table(table):
     assert checked >= 20
 
 
-def test_the_defaults_are_made_from_the_table():
-    script = os.path.join(ROOT, "doc", "Part_decomposition", "tools", "parameter_table.py")
-    subprocess.run([sys.executable, script, HITOPS, "--check"], check=True)
-    with open(os.path.join(ROOT, "include", "CGAL", "Part_decomposition", "parameters.h"), encoding="utf-8") as f:
-        header = f.read()
-    assert "constexpr double freeze_ratio = 0.15;" in header
+def test_the_switches_of_the_method_are_one_named_parameter(table, help_options):
+    """Each switch is a field of Method_variant: no option or keyword of its own, a value in the paper."""
+    switches = [row for row in table if row["kind"] == "switch"]
+    assert len(switches) >= 10
+    for row in switches:
+        assert not row["option"] and "--" + row["name"].replace("_", "-") not in help_options, row["name"]
+        assert row["name"] not in pd.DEFAULTS, row["name"]
+        assert row["default"] and row["paper"], row["name"]
+    assert help_options["--method-variant"] == "default" and pd.DEFAULTS["method_variant"] == "default"
+    # the paper differs from the package's method in at least one switch, and says what it is
+    assert any(row["default"] != row["paper"] for row in switches)
 
 
 def test_the_reference_page_has_the_generated_table(table):
@@ -152,7 +155,7 @@ def test_former_spellings_give_the_same_labels():
     with tempfile.TemporaryDirectory() as d:
         for k, options in enumerate([
                 ["--no-pieces", "--max-merge-cost", "0.01", "--resolutions", "16,32", "--sign-method", "flood"],
-                ["--use-pieces", "false", "--maximum-merge-cost", "0.01", "--voxel-resolutions", "16,32",
+                ["--method-variant", "use_pieces=false", "--maximum-merge-cost", "0.01", "--voxel-resolutions", "16,32",
                  "--tsdf-sign-method", "flood_fill"]]):
             seg = os.path.join(d, "%d.seg" % k)
             run(path, "--labels", seg, "--threads", "2", *options)
@@ -161,9 +164,10 @@ def test_former_spellings_give_the_same_labels():
 
 
 def test_bad_option_values_name_the_option():
-    for options, message in [(["--use-pieces", "no"], "--use-pieces expects true or false"),
+    for options, message in [(["--method-variant", "use_pieces=no"], "--method-variant expects true or false"),
+                             (["--method-variant", "use_piece=false"], "--method-variant expects default, paper_literal"),
                              (["--tsdf-sign-method", "ray"], "--tsdf-sign-method expects one of automatic"),
-                             (["--cue-weights", "1,1"], "--cue-weights expects 4 comma-separated values"),
+                             (["--cue-weights", "1,1"], "cue_weights must be 4 finite numbers"),
                              (["--parts", "0"], "--parts expects at least 1")]:
         r = subprocess.run([HITOPS, os.path.join(DATA, "dumbbell.off")] + options, stdout=subprocess.PIPE,
                            stderr=subprocess.PIPE, universal_newlines=True)

@@ -18,6 +18,7 @@
 
 #include "segmentation_metrics.h"
 #include "shipped_shapes.h"
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #include <algorithm>
@@ -341,7 +342,7 @@ TEST_CASE("the stage functions in their documented order give the parts of decom
   Mesh animal;
   test_shapes::read_shipped_shape("animal", animal);
   check_stages_give_decompose(animal, false, true,
-                              PDP::combine(PDP::use_pieces(false), PDP::keep_residual_patches(true)));
+                              switches(&Variant::use_pieces, false, &Variant::keep_residual_patches, true));
   // generated: a bracket the volumetric stages decompose, a sheet that bounds no volume
   check_stages_give_decompose(test_shapes::make_l_bracket(1., 0.7, 0.1, 0.4, 0.02), true, false,
                               CGAL::parameters::default_values());
@@ -349,7 +350,7 @@ TEST_CASE("the stage functions in their documented order give the parts of decom
   // the dense grid of the paper
   Mesh dumbbell;
   test_shapes::read_shipped_shape("dumbbell", dumbbell);
-  check_stages_give_decompose(dumbbell, true, false, PDP::adaptive_grid(false));
+  check_stages_give_decompose(dumbbell, true, false, switches(&Variant::adaptive_grid, false));
 }
 
 TEST_CASE("the thin-sheet merge is a step of Part_decomposer::compose_parts()", "[decompose][sheet_merge][data]")
@@ -360,11 +361,11 @@ TEST_CASE("the thin-sheet merge is a step of Part_decomposer::compose_parts()", 
   std::vector<std::size_t> merged(num_faces(m)), unmerged(num_faces(m));
   // the parts of the assignment: without the hierarchy's merges
   const std::size_t K_merged =
-    PD::decompose(m, CGAL::make_property_map(merged), PDP::combine(PDP::use_pieces(false), PDP::maximum_merge_cost(0.)));
+    PD::decompose(m, CGAL::make_property_map(merged), PDP::combine(switches(&Variant::use_pieces, false), PDP::maximum_merge_cost(0.)));
 
   PD::Part_decomposer<Mesh> pd(m);
   const std::size_t K_unmerged = pd.compose_parts(CGAL::make_property_map(unmerged),
-                                                   PDP::combine(PDP::merge_thin_sheets(false), PDP::use_pieces(false)));
+                                                   switches(&Variant::merge_thin_sheets, false, &Variant::use_pieces, false));
   CHECK(pd.parts() == unmerged);
   CHECK(K_unmerged >= K_merged);
   // the free function on the volumetric parts before the merge
@@ -386,7 +387,7 @@ TEST_CASE("the thin-sheet merge is a step of Part_decomposer::compose_parts()", 
   CHECK(same_parts);
   CHECK(std::set<std::size_t>(composed_id.begin(), composed_id.end()).size() == K_merged);
   // the step, on the cached stages
-  CHECK(pd.compose_parts(boost::dummy_property_map(), PDP::use_pieces(false)) == K_merged);
+  CHECK(pd.compose_parts(boost::dummy_property_map(), switches(&Variant::use_pieces, false)) == K_merged);
   CHECK(pd.parts() == merged);
   CHECK(pd.part_primitives().size() == K_merged);
   REQUIRE(pd.part_to_primitive().size() == K_merged);
@@ -411,29 +412,24 @@ TEST_CASE("decompose() with every default given explicitly gives the default par
               .number_of_points_per_face(D::number_of_points_per_face)
               .verbose(false),
           PDP::primitive_output_iterator(std::back_inserter(pb)),
-          PDP::voxel_resolutions(D::voxel_resolutions()), PDP::number_of_neighbors(D::number_of_neighbors),
+          PDP::voxel_resolutions(D::voxel_resolutions), PDP::number_of_neighbors(D::number_of_neighbors),
           PDP::curvature_percentile(D::curvature_percentile), PDP::cue_weights(D::cue_weights),
-          PDP::freeze_ratio(D::freeze_ratio), PDP::use_density(D::use_density),
-          PDP::normalization_margin(D::normalization_margin), PDP::grid_resolution(D::grid_resolution),
-          PDP::adaptive_grid(D::adaptive_grid), PDP::tsdf_truncation(D::tsdf_truncation),
+          PDP::freeze_ratio(D::freeze_ratio), PDP::normalization_margin(D::normalization_margin), PDP::grid_resolution(D::grid_resolution),
+          PDP::tsdf_truncation(D::tsdf_truncation),
           PDP::tsdf_sign_method(PD::Tsdf_sign_method::AUTOMATIC), PDP::flow_zone_tolerance(D::flow_zone_tolerance),
-          PDP::trust_region_scales(D::trust_region_scales()), PDP::body_seed_threshold(D::body_seed_threshold),
+          PDP::trust_region_scales(D::trust_region_scales), PDP::body_seed_threshold(D::body_seed_threshold),
           PDP::minimum_body_volume(D::minimum_body_volume), PDP::minimum_surface_volume(D::minimum_surface_volume),
           PDP::exterior_penalty(D::exterior_penalty), PDP::coverage_target(D::coverage_target),
-          PDP::roi_radius(D::roi_radius), PDP::interior_weight_mode(PD::Interior_weight_mode::ONE_SHOT),
+          PDP::roi_radius(D::roi_radius), PDP::method_variant(PD::Method_variant()),
           PDP::maximum_number_of_primitives(D::maximum_number_of_primitives),
-          PDP::use_freeze_zone(D::use_freeze_zone), PDP::use_tsdf_guidance(D::use_tsdf_guidance),
-          PDP::use_body_seeds(D::use_body_seeds), PDP::fitting_resolution_cap(D::fitting_resolution_cap),
-          PDP::use_exterior_band_samples(D::use_exterior_band_samples),
-          PDP::use_reachable_regions(D::use_reachable_regions), PDP::use_seed_exclusion(D::use_seed_exclusion),
+          PDP::fitting_resolution_cap(D::fitting_resolution_cap),
           PDP::maximum_solver_evaluations(D::maximum_solver_evaluations),
           PDP::maximum_rejections_in_a_row(D::maximum_rejections_in_a_row),
           PDP::dihedral_percentile(D::dihedral_percentile), PDP::smoothing_iterations(D::smoothing_iterations),
           PDP::minimum_patch_size(D::minimum_patch_size), PDP::patch_split_size(D::patch_split_size),
-          PDP::vote_temperature(D::vote_temperature), PDP::merge_thin_sheets(D::merge_thin_sheets),
-          PDP::use_pieces(D::use_pieces), PDP::crease_angle(D::crease_angle),
+          PDP::vote_temperature(D::vote_temperature), PDP::crease_angle(D::crease_angle),
           PDP::minimum_part_area(D::minimum_part_area), PDP::boundary_smoothness(D::boundary_smoothness),
-          PDP::merge_primitives(D::merge_primitives), PDP::minimum_merge_iou(D::minimum_merge_iou),
+          PDP::minimum_merge_iou(D::minimum_merge_iou),
           PDP::maximum_merge_cost(D::maximum_merge_cost)));
   CHECK(na == 3u); // two balls and a bar
   CHECK(nb == na);
@@ -769,7 +765,7 @@ TEST_CASE("an assembly of convex pieces is decomposed into its pieces, each with
   CHECK(plate[2] == Approx(5.));
   // without the evidence of pieces the volumetric stages run
   std::vector<std::size_t> volumetric(num_faces(m));
-  PD::decompose(m, CGAL::make_property_map(volumetric), PDP::combine(PDP::use_pieces(false), PDP::stage_timings(&timings)));
+  PD::decompose(m, CGAL::make_property_map(volumetric), PDP::combine(switches(&Variant::use_pieces, false), PDP::stage_timings(&timings)));
   CHECK(timings.prior > 0.);
   CHECK(error_of([&] { PD::decompose(m, CGAL::make_property_map(part), PDP::minimum_part_area(2.)); }) ==
         PD::Input_error::INVALID_PARAMETER);
@@ -1041,7 +1037,7 @@ TEST_CASE("residual patches are parts of their own, without a fitted primitive",
   test_shapes::read_shipped_shape("animal", m);
   PD::Part_decomposer<Mesh> d(m);
   std::vector<std::size_t> part(num_faces(m));
-  const auto np = PDP::combine(PDP::keep_residual_patches(true), PDP::residual_tolerance(0.));
+  const auto np = PDP::combine(switches(&Variant::keep_residual_patches, true), PDP::residual_tolerance(0.));
   d.segment_pieces(np);
   d.compute_prior(np);
   d.compute_distance_field(np);

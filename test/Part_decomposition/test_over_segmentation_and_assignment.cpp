@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "shipped_shapes.h"
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #include <cmath>
@@ -848,7 +849,7 @@ TEST_CASE("exact primitive supports give back the true parts of the dumbbell", "
   for(bool adaptive : {false, true})
   {
     CAPTURE(adaptive);
-    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m, prior, PDP::adaptive_grid(adaptive));
+    const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m, prior, switches(&Variant::adaptive_grid, adaptive));
     const PD::Adaptive_grid& grid = tsdf.grid;
     if(adaptive) CHECK(grid.number_of_leaves() < 64u * 64u * 64u / 4u);
     else CHECK(grid == PD::Adaptive_grid::uniform(64));

@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include "shipped_shapes.h"
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #include <algorithm>
@@ -268,7 +269,7 @@ TEST_CASE("face curvature cue is clipped and normalized to [0,1]", "[cues]")
   Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
   test_shapes::append(m, test_shapes::make_sphere(Point(3, 0, 0), 0.25, 3)); // 4x the curvature
   // the paper's cue: convex spheres have no concave vertex
-  const Face_cues cues = face_cues(m, PD::parameters::use_concave_curvature(false));
+  const Face_cues cues = face_cues(m, switches(&Variant::use_concave_curvature, false));
   double cmax = 0.;
   for(double x : cues.c)
   {
@@ -291,7 +292,7 @@ TEST_CASE("the curvature cue counts the concave vertices only: none on a sphere,
 {
   const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
   for(double x : face_cues(sphere).c) CHECK(x == 0.);
-  for(double x : face_cues(sphere, PD::parameters::use_concave_curvature(false)).c) CHECK(x > 0.5);
+  for(double x : face_cues(sphere, switches(&Variant::use_concave_curvature, false)).c) CHECK(x > 0.5);
   // Taken inside out, every vertex of the sphere is concave.
   Mesh inverted = sphere;
   CGAL::Polygon_mesh_processing::reverse_face_orientations(inverted);
@@ -301,7 +302,7 @@ TEST_CASE("the curvature cue counts the concave vertices only: none on a sphere,
   // cosine of the tube angle t is below -R / 2r = -0.75.
   std::vector<double> tube;
   const Mesh torus = make_torus(1.5, 1., 48, tube);
-  const Face_cues cues = face_cues(torus), paper = face_cues(torus, PD::parameters::use_concave_curvature(false));
+  const Face_cues cues = face_cues(torus), paper = face_cues(torus, switches(&Variant::use_concave_curvature, false));
   std::size_t concave = 0, convex = 0;
   for(std::size_t f = 0; f < tube.size(); ++f)
   {
@@ -813,7 +814,7 @@ TEST_CASE("the prior of a dumbbell freezes its junctions, not its bar", "[prior]
   // With the paper's cues (|H| at every vertex, the normal deviation), the thin bar's convex
   // curvature freezes it end to end, and no primitive would be seeded in it.
   const std::array<double, 3> paper = fractions_frozen(PD::compute_flow_freeze_prior(
-    m, PD::parameters::combine(PD::parameters::use_concave_curvature(false),
+    m, PD::parameters::combine(switches(&Variant::use_concave_curvature, false),
                                  PD::parameters::cue_weights(std::array<double, 4>{{1., 1., 1., 1.}}))));
   CHECK(paper[1] >= 0.8);
 }
@@ -862,11 +863,10 @@ auto explicit_defaults()
 {
   return PD::parameters::combine(
     CGAL::parameters::number_of_points_per_face(PD::defaults::number_of_points_per_face),
-    PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions()),
+    PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions),
     PD::parameters::number_of_neighbors(PD::defaults::number_of_neighbors),
     PD::parameters::curvature_percentile(PD::defaults::curvature_percentile),
     PD::parameters::cue_weights(PD::defaults::cue_weights), PD::parameters::freeze_ratio(PD::defaults::freeze_ratio),
-    PD::parameters::use_density(PD::defaults::use_density),
     PD::parameters::normalization_margin(PD::defaults::normalization_margin));
 }
 
@@ -933,7 +933,7 @@ TEST_CASE("the prior's field at r is compute_topology_score at r with the sample
     for(const std::array<double, 4> weights : {PD::defaults::cue_weights, std::array<double, 4>{{1., 1., 1., 1.}}})
       for(bool density : {true, false})
       {
-        const auto np = PD::parameters::combine(PD::parameters::use_density(density), PD::parameters::cue_weights(weights));
+        const auto np = PD::parameters::combine(switches(&Variant::use_density, density), PD::parameters::cue_weights(weights));
         const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(*m, np);
         REQUIRE(prior.fields.size() == 3);
         const auto pmap = CGAL::make_property_map(weights[3] == 0. ? no_phi : cues.phi);
@@ -963,7 +963,7 @@ TEST_CASE("use_density(false) drops the density factor sqrt(n) of every active v
   {
     const PD::Topology_score_field with = PD::compute_topology_score(m, cmap, pmap, r);
     const PD::Topology_score_field without =
-      PD::compute_topology_score(m, cmap, pmap, r, PD::parameters::use_density(false));
+      PD::compute_topology_score(m, cmap, pmap, r, switches(&Variant::use_density, false));
     REQUIRE(with.sample_count == without.sample_count);
     std::size_t checked = 0, positive = 0, wrong = 0;
     for(std::size_t v = 0; v < with.score.size(); ++v)
@@ -984,7 +984,7 @@ TEST_CASE("use_density(false) drops the density factor sqrt(n) of every active v
     CHECK(positive > 0u);
   }
   // the prior passes it on
-  const PD::Hierarchical_prior p = PD::compute_flow_freeze_prior(m, PD::parameters::use_density(false));
+  const PD::Hierarchical_prior p = PD::compute_flow_freeze_prior(m, switches(&Variant::use_density, false));
   const PD::Hierarchical_prior q = PD::compute_flow_freeze_prior(m);
   const std::size_t v = std::size_t(std::max_element(q.fields[2].sample_count.values().begin(),
                                                      q.fields[2].sample_count.values().end()) -

@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include "sha256.h"
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -620,7 +621,7 @@ TEST_CASE("extreme but valid named parameters give a valid decomposition", "[rob
         PDP::combine(PDP::minimum_patch_size(0.), PDP::patch_split_size(1e-300), PDP::smoothing_iterations(50)));
   valid("tiny vote temperature", PDP::vote_temperature(1e-300));
   valid("huge vote temperature", PDP::vote_temperature(1e300));
-  valid("the dense grid of the paper", PDP::adaptive_grid(false));
+  valid("the dense grid of the paper", switches(&Variant::adaptive_grid, false));
   valid("finest leaves at the finest voxel resolution", PDP::grid_resolution(64));
   valid("finest leaves at 256", PDP::grid_resolution(256));
   valid("coarse voxels, finest leaves at 256",
@@ -634,7 +635,7 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   PD::Part_decomposer<Mesh> pd(m);
   std::vector<std::size_t> part(num_faces(m));
   // a stage computes the stages it needs: no order to follow
-  CHECK(pd.compose_parts(CGAL::make_property_map(part), PDP::use_pieces(false)) >= 1u);
+  CHECK(pd.compose_parts(CGAL::make_property_map(part), switches(&Variant::use_pieces, false)) >= 1u);
   CHECK_FALSE(pd.fitting().primitives.empty());
   // results that do not match are refused: the grid of the field follows the prior
   pd.compute_prior(PDP::voxel_resolutions(std::vector<int>{16, 32}));
@@ -660,7 +661,7 @@ TEST_CASE("stage functions check their inputs at run time", "[robustness][librar
   CHECK(error_of([&] { PD::compute_fitting_zones(prior, tsdf, std::vector<int>{0}); }) == E::INVALID_PARAMETER);
   // a grid coarser than the prior's finest resolution
   const PD::Truncated_signed_distance_field dense32 =
-    PD::compute_tsdf(m, PDP::combine(PDP::voxel_resolutions(std::vector<int>{32}), PDP::adaptive_grid(false)));
+    PD::compute_tsdf(m, PDP::combine(PDP::voxel_resolutions(std::vector<int>{32}), switches(&Variant::adaptive_grid, false)));
   REQUIRE(dense32.grid.finest_resolution() == 32);
   CHECK(error_of([&] { PD::compute_fitting_zones(prior, dense32, std::vector<int>{16}); }) == E::INVALID_PARAMETER);
   CHECK(error_of([&] { PD::fit_superquadrics(prior, dense32); }) == E::INVALID_PARAMETER);

@@ -22,6 +22,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #include <algorithm>
@@ -727,7 +728,7 @@ PD::Truncated_signed_distance_field synthetic_tsdf(const Union_field& field, con
   PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(
     field.mesh(), prior,
     P::combine(P::voxel_resolutions(prior.resolutions), P::normalization(PD::Normalization()),
-               P::tsdf_truncation(field.truncation() * r), P::adaptive_grid(adaptive),
+               P::tsdf_truncation(field.truncation() * r), switches(&Variant::adaptive_grid, adaptive),
                P::grid_resolution(grid_resolution == 0 ? PD::defaults::grid_resolution : grid_resolution)));
   tsdf.values = field.on_leaves(tsdf.grid);
   return tsdf;
@@ -746,7 +747,7 @@ PD::Superquadric_fitting_result<K> run_fitter(const PD::Hierarchical_prior& prio
   const PD::Fitting_zones zones = synthetic_zones(prior, tsdf);
   namespace P = PD::parameters;
   return PD::fit_superquadrics<CGAL::Sequential_tag, K>(
-    prior, tsdf, zones, P::combine(P::coverage_target(0.95), P::interior_weight_mode(mode), CGAL::parameters::verbose(verbose)));
+    prior, tsdf, zones, P::combine(P::coverage_target(0.95), switches(&Variant::interior_weight_mode, mode), CGAL::parameters::verbose(verbose)));
 }
 
 } // namespace
@@ -886,12 +887,12 @@ TEST_CASE("fit_superquadrics: public entry, switches, parameters and determinism
 
   namespace P = PD::parameters;
   // ablations run and keep their guarantees
-  const auto no_body = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_body_seeds(false));
+  const auto no_body = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, switches(&Variant::use_body_seeds, false));
   CHECK(no_body.number_of_body_seeds == 0);
   CHECK(no_body.primitives.size() >= 1);
-  const auto no_tsdf = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_tsdf_guidance(false));
+  const auto no_tsdf = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, switches(&Variant::use_tsdf_guidance, false));
   CHECK(no_tsdf.primitives.size() >= 1);
-  const auto no_freeze = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, P::use_freeze_zone(false));
+  const auto no_freeze = PD::fit_superquadrics<CGAL::Sequential_tag, K>(prior, tsdf, switches(&Variant::use_freeze_zone, false));
   CHECK(no_freeze.primitives.size() >= 1);
   REQUIRE(PD::fitting_resolutions(prior.resolutions) == std::vector<int>{16, 32});
   CHECK(PD::fitting_resolutions({8}) == std::vector<int>{4});
@@ -1005,8 +1006,7 @@ TEST_CASE("fit_superquadrics and compute_fitting_zones: default named parameters
   namespace P = PD::parameters;
   namespace D = PD::defaults;
   const Synthetic_case c = plate_case();
-  const auto explicit_zone_parameters = P::combine(P::flow_zone_tolerance(D::flow_zone_tolerance),
-                                                   P::use_freeze_zone(D::use_freeze_zone));
+  const auto explicit_zone_parameters = P::combine(P::flow_zone_tolerance(D::flow_zone_tolerance));
   const std::vector<int> fit_res = PD::fitting_resolutions(c.prior.resolutions);
   const PD::Fitting_zones z1 = PD::compute_fitting_zones(c.prior, c.tsdf, fit_res);
   const PD::Fitting_zones z2 = PD::compute_fitting_zones(c.prior, c.tsdf, fit_res, explicit_zone_parameters);
@@ -1023,16 +1023,13 @@ TEST_CASE("fit_superquadrics and compute_fitting_zones: default named parameters
   const Fit by_default = PD::fit_superquadrics<CGAL::Sequential_tag, K>(c.prior, c.tsdf);
   const Fit given = PD::fit_superquadrics<CGAL::Sequential_tag, K>(
     c.prior, c.tsdf,
-    P::combine(explicit_zone_parameters, P::trust_region_scales(D::trust_region_scales()),
+    P::combine(explicit_zone_parameters, P::trust_region_scales(D::trust_region_scales),
                P::body_seed_threshold(D::body_seed_threshold), P::minimum_body_volume(D::minimum_body_volume),
                P::minimum_surface_volume(D::minimum_surface_volume), P::exterior_penalty(D::exterior_penalty),
                P::coverage_target(D::coverage_target), P::roi_radius(D::roi_radius),
-               P::interior_weight_mode(PD::Interior_weight_mode::ONE_SHOT),
+               P::method_variant(PD::Method_variant()),
                P::maximum_number_of_primitives(D::maximum_number_of_primitives),
-               P::use_tsdf_guidance(D::use_tsdf_guidance), P::use_body_seeds(D::use_body_seeds),
                P::fitting_resolution_cap(D::fitting_resolution_cap),
-               P::use_exterior_band_samples(D::use_exterior_band_samples),
-               P::use_reachable_regions(D::use_reachable_regions), P::use_seed_exclusion(D::use_seed_exclusion),
                P::maximum_solver_evaluations(D::maximum_solver_evaluations),
                P::maximum_rejections_in_a_row(D::maximum_rejections_in_a_row), CGAL::parameters::verbose(false)));
   REQUIRE(by_default.primitives.size() >= 2);
@@ -1053,7 +1050,7 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
       INFO((adaptive ? "adaptive" : "uniform") << " grid");
       const Synthetic_case c = plate_case(adaptive);
       const Fit reachable = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf);
-      const Fit ball = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, P::use_reachable_regions(false));
+      const Fit ball = PD::fit_superquadrics<Seq, K>(c.prior, c.tsdf, switches(&Variant::use_reachable_regions, false));
       REQUIRE(reachable.primitives.size() >= 2);
       CHECK_FALSE(some_claim_crosses_the_wall(reachable, c.tsdf.grid));
       CHECK(some_claim_crosses_the_wall(ball, c.tsdf.grid));
@@ -1133,7 +1130,7 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
       // deepest leaf's neighbours, some of which are deep enough (the box is more than one voxel
       // deeper than the body-seed threshold).
       const Fit seed_only = PD::fit_superquadrics<Seq, K>(
-        c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0), P::use_seed_exclusion(false)));
+        c.prior, c.tsdf, all_rejected(P::maximum_rejections_in_a_row(0), switches(&Variant::use_seed_exclusion, false)));
       CHECK(seed_only.number_of_seeds > never.number_of_seeds);
       CHECK(seed_only.number_of_body_seeds == seed_only.number_of_seeds);
     }
@@ -1144,7 +1141,7 @@ TEST_CASE("fit_superquadrics: the switches of the paper's literal version", "[sd
     // One seed (the first is the same in both runs), a region of interest that covers the grid.
     auto one_seed = [](bool band) {
       return P::combine(P::maximum_number_of_primitives(1), P::maximum_rejections_in_a_row(1), P::roi_radius(16.),
-                        P::use_exterior_band_samples(band));
+                        switches(&Variant::use_exterior_band_samples, band));
     };
     for(bool adaptive : {true, false})
     {
@@ -1407,7 +1404,7 @@ TEST_CASE("fit_superquadrics on the prior and the distance field of a mesh: know
       Mesh m;
       truth.to_triangle_mesh(m, 48);
       PD::Truncated_signed_distance_field tsdf;
-      const Fit fit = fit_mesh(m, P::adaptive_grid(adaptive), tsdf);
+      const Fit fit = fit_mesh(m, switches(&Variant::adaptive_grid, adaptive), tsdf);
       INFO((adaptive ? "adaptive grid" : "dense grid"));
       INFO("a = " << truth.scales()[0] << " " << truth.scales()[1] << " " << truth.scales()[2] << " eps "
                   << truth.epsilon1() << " " << truth.epsilon2() << ": " << fit.primitives.size() << " primitives");
@@ -1460,7 +1457,7 @@ TEST_CASE("fit_superquadrics on the prior and the distance field of a mesh: know
     for(bool adaptive : {true, false})
     {
       PD::Truncated_signed_distance_field tsdf;
-      const Fit fit = fit_mesh(m, P::adaptive_grid(adaptive), tsdf);
+      const Fit fit = fit_mesh(m, switches(&Variant::adaptive_grid, adaptive), tsdf);
       const PD::Adaptive_grid& grid = tsdf.grid;
       INFO((adaptive ? "adaptive" : "uniform") << " grid of " << grid.number_of_leaves() << " leaves: "
                                                << fit.primitives.size() << " primitives");

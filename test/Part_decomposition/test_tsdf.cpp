@@ -2,6 +2,7 @@
 // the fitter's zones, against analytic shapes, hand-made grids and brute-force references.
 #include <catch2/catch.hpp>
 
+#include "method_switches.h"
 #include "test_shapes.h"
 
 #include <CGAL/Part_decomposition/Adaptive_grid.h>
@@ -1227,7 +1228,7 @@ TEST_CASE("TSDF distances below the truncation equal the distances of CGAL's AAB
     for(int mode = 0; mode < 3; ++mode) // the dense grid, the adaptive grid without and with the prior
     {
       const auto np = PD::parameters::combine(PD::parameters::voxel_resolutions(std::vector<int>{r / 2, r}),
-                                              PD::parameters::adaptive_grid(mode != 0));
+                                              switches(&Variant::adaptive_grid, mode != 0));
       const PD::Truncated_signed_distance_field tsdf =
         mode == 2 ? PD::compute_tsdf<CGAL::Parallel_if_available_tag>(m, PD::compute_flow_freeze_prior(m, np), np)
                   : PD::compute_tsdf<CGAL::Parallel_if_available_tag>(m, np);
@@ -1292,7 +1293,7 @@ TEST_CASE("TSDF of a box equals the exact signed distance", "[tsdf]")
   {
     const PD::Truncated_signed_distance_field tsdf =
       PD::compute_tsdf(box, PD::parameters::combine(PD::parameters::voxel_resolutions(std::vector<int>{32, 64}),
-                                                    PD::parameters::tsdf_truncation(5.), PD::parameters::adaptive_grid(adaptive)));
+                                                    PD::parameters::tsdf_truncation(5.), switches(&Variant::adaptive_grid, adaptive)));
     REQUIRE(tsdf.voxel_size == 1. / 64.);
     CHECK(tsdf.truncation == Approx(5. / 64.));
     const std::array<double, 3> lo = unit(tsdf.normalization, -1, -0.6, -0.4), hi = unit(tsdf.normalization, 1, 0.6, 0.4);
@@ -1456,7 +1457,7 @@ TEST_CASE("TSDF of an open sheet: all outside, distances to the triangles", "[ts
         const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(
           m, PD::parameters::combine(PD::parameters::tsdf_sign_method(method),
                                      PD::parameters::voxel_resolutions(std::vector<int>{r}),
-                                     PD::parameters::adaptive_grid(adaptive)));
+                                     switches(&Variant::adaptive_grid, adaptive)));
         if(!adaptive) CHECK(tsdf.grid == Grid::uniform(r));
         const std::vector<PDI::Triangle_points> tris = PDI::normalized_triangles(m, get(CGAL::vertex_point, m), tsdf.normalization);
         for(std::size_t l = 0; l < tsdf.values.size(); ++l)
@@ -1472,7 +1473,7 @@ TEST_CASE("TSDF with adaptive_grid(false): the dense grid, the exact clipped sig
   const PD::Hierarchical_prior prior = PD::compute_flow_freeze_prior(box);
   for(int variant = 0; variant < 3; ++variant)
   {
-    const auto dense = PD::parameters::adaptive_grid(false);
+    const auto dense = switches(&Variant::adaptive_grid, false);
     const PD::Truncated_signed_distance_field tsdf =
       variant == 0 ? PD::compute_tsdf(box, dense)
                    : variant == 1 ? PD::compute_tsdf(box, prior, dense)
@@ -1494,7 +1495,7 @@ TEST_CASE("TSDF with adaptive_grid(false): the dense grid, the exact clipped sig
   // the dense grid of the finest voxel resolution, whatever the grid resolution
   const PD::Truncated_signed_distance_field coarse = PD::compute_tsdf(
     box, PD::parameters::combine(PD::parameters::voxel_resolutions(std::vector<int>{16, 32}),
-                                 PD::parameters::adaptive_grid(false), PD::parameters::grid_resolution(64)));
+                                 switches(&Variant::adaptive_grid, false), PD::parameters::grid_resolution(64)));
   CHECK(coarse.grid == Grid::uniform(32));
   CHECK(coarse.voxel_size == 1. / 32.);
 }
@@ -1646,13 +1647,12 @@ TEST_CASE("TSDF: the defaults equal every default given explicitly", "[tsdf][par
   const Mesh box = test_shapes::make_box(Point(-1, -0.6, -0.4), Point(1, 0.6, 0.4), 3);
   const PD::Truncated_signed_distance_field a = PD::compute_tsdf(box);
   const PD::Truncated_signed_distance_field b = PD::compute_tsdf(
-    box, PD::parameters::combine(PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions()),
+    box, PD::parameters::combine(PD::parameters::voxel_resolutions(PD::defaults::voxel_resolutions),
                                  PD::parameters::tsdf_truncation(PD::defaults::tsdf_truncation),
                                  PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::AUTOMATIC),
                                  PD::parameters::normalization_margin(PD::defaults::normalization_margin),
-                                 PD::parameters::grid_resolution(PD::defaults::grid_resolution),
-                                 PD::parameters::adaptive_grid(PD::defaults::adaptive_grid)));
-  CHECK(a.voxel_size == 1. / PD::defaults::voxel_resolutions().back());
+                                 PD::parameters::grid_resolution(PD::defaults::grid_resolution)));
+  CHECK(a.voxel_size == 1. / PD::defaults::voxel_resolutions.back());
   CHECK(a.grid.finest_resolution() == PD::defaults::grid_resolution);
   CHECK(a.grid == b.grid);
   CHECK(a.values == b.values);
@@ -1787,7 +1787,7 @@ TEST_CASE("Fitting zones of a hand-made prior on the dense grid", "[tsdf][zones]
     CHECK(z.flow_zone.at(8)[tsdf.grid.leaf_of_voxel(0, 8, 8)] == 1);
     CHECK(z.flow_zone.at(8)[tsdf.grid.leaf_of_voxel(0, 0, 8)] == 0);
 
-    const PD::Fitting_zones no_freeze = PD::compute_fitting_zones(prior, tsdf, std::vector<int>{8}, PD::parameters::use_freeze_zone(false));
+    const PD::Fitting_zones no_freeze = PD::compute_fitting_zones(prior, tsdf, std::vector<int>{8}, switches(&Variant::use_freeze_zone, false));
     CHECK(no_freeze.freeze_zone == no_freeze.exterior);
     const PD::Fitting_zones tight = PD::compute_fitting_zones<CGAL::Parallel_if_available_tag>(
       prior, tsdf, std::vector<int>{8}, PD::parameters::flow_zone_tolerance(0.));
@@ -1918,7 +1918,7 @@ TEST_CASE("an open sheet has no inside, a sphere with a hole of a tenth of its a
   const PD::Truncated_signed_distance_field open_field = PD::compute_tsdf(open, PD::parameters::normalization(frame));
   // the dense grid: on the adaptive one the fill is blocked by large leaves (known failure below)
   const PD::Truncated_signed_distance_field filled = PD::compute_tsdf(
-    open, PD::parameters::combine(PD::parameters::normalization(frame), PD::parameters::adaptive_grid(false),
+    open, PD::parameters::combine(PD::parameters::normalization(frame), switches(&Variant::adaptive_grid, false),
                                   PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::FLOOD_FILL)));
   const double closed_volume = inside_volume(closed_field), open_volume = inside_volume(open_field);
   INFO("inside volume: closed " << closed_volume << ", open " << open_volume << ", open by flood fill " << inside_volume(filled));
@@ -1969,7 +1969,7 @@ TEST_CASE("FLOOD_FILL leaves an open sheet outside", "[tsdf][sign]")
   {
     const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(
       m, PD::parameters::combine(PD::parameters::tsdf_sign_method(PD::Tsdf_sign_method::FLOOD_FILL),
-                                 PD::parameters::voxel_resolutions(std::vector<int>{16}), PD::parameters::adaptive_grid(adaptive)));
+                                 PD::parameters::voxel_resolutions(std::vector<int>{16}), switches(&Variant::adaptive_grid, adaptive)));
     const std::size_t negative = std::size_t(std::count_if(tsdf.values.begin(), tsdf.values.end(), [](double v) { return v < 0.; }));
     INFO((adaptive ? "adaptive" : "dense") << " grid: " << negative << " leaves of " << tsdf.values.size() << " inside");
     CHECK(negative == 0);

@@ -165,7 +165,7 @@ struct Figure_options
 {
   std::string input, dir;
   double alpha = PD::defaults::freeze_ratio;
-  std::vector<int> resolutions = PD::defaults::voxel_resolutions();
+  std::vector<int> resolutions = PD::defaults::voxel_resolutions;
   int axis = 2;
   double slice_fraction = -1.; // < 0: the slice with the most non-exterior voxels
 };

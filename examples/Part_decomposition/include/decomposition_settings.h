@@ -11,7 +11,7 @@
 // The named parameters of Part_decomposition::decompose() as plain values at the package's
 // defaults, for the programs that take them from their users (hitops, the Python module) or vary
 // them (the benchmark), the one named-parameter pack that passes them all, and their text form.
-// The list is made from PD::parameter_table by doc/Part_decomposition/tools/parameter_table.py.
+// The list is the library's, CGAL_PART_DECOMPOSITION_PARAMETERS.
 
 #include <CGAL/Part_decomposition/decompose.h>
 
@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -30,79 +31,31 @@ namespace Part_decomposition_tools {
 
 namespace PD = CGAL::Part_decomposition;
 
-// The package's named parameters that hold a value, in the order of PD::parameter_table: type,
-// name, default. Each is a field of Decomposition_settings, passed by named_parameters().
-// settings: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit
-#define PART_DECOMPOSITION_TOOLS_SETTINGS(X)                                               \
-  X(bool, use_pieces, PD::defaults::use_pieces)                                            \
-  X(double, crease_angle, PD::defaults::crease_angle)                                      \
-  X(double, minimum_part_area, PD::defaults::minimum_part_area)                            \
-  X(std::vector<int>, voxel_resolutions, PD::defaults::voxel_resolutions())                \
-  X(unsigned int, number_of_neighbors, PD::defaults::number_of_neighbors)                  \
-  X(double, curvature_percentile, PD::defaults::curvature_percentile)                      \
-  X(bool, use_concave_curvature, PD::defaults::use_concave_curvature)                      \
-  X(PD_cue_weights, cue_weights, PD::defaults::cue_weights)                                \
-  X(double, freeze_ratio, PD::defaults::freeze_ratio)                                      \
-  X(bool, use_density, PD::defaults::use_density)                                          \
-  X(double, normalization_margin, PD::defaults::normalization_margin)                      \
-  X(double, tsdf_truncation, PD::defaults::tsdf_truncation)                                \
-  X(PD::Tsdf_sign_method, tsdf_sign_method, PD::defaults::tsdf_sign_method)                \
-  X(int, grid_resolution, PD::defaults::grid_resolution)                                   \
-  X(bool, adaptive_grid, PD::defaults::adaptive_grid)                                      \
-  X(double, flow_zone_tolerance, PD::defaults::flow_zone_tolerance)                        \
-  X(std::vector<double>, trust_region_scales, PD::defaults::trust_region_scales())         \
-  X(double, body_seed_threshold, PD::defaults::body_seed_threshold)                        \
-  X(double, minimum_body_volume, PD::defaults::minimum_body_volume)                        \
-  X(double, minimum_surface_volume, PD::defaults::minimum_surface_volume)                  \
-  X(double, exterior_penalty, PD::defaults::exterior_penalty)                              \
-  X(double, coverage_target, PD::defaults::coverage_target)                                \
-  X(double, roi_radius, PD::defaults::roi_radius)                                          \
-  X(PD::Interior_weight_mode, interior_weight_mode, PD::defaults::interior_weight_mode)    \
-  X(std::size_t, maximum_number_of_primitives, PD::defaults::maximum_number_of_primitives) \
-  X(bool, use_freeze_zone, PD::defaults::use_freeze_zone)                                  \
-  X(bool, use_tsdf_guidance, PD::defaults::use_tsdf_guidance)                              \
-  X(bool, use_body_seeds, PD::defaults::use_body_seeds)                                    \
-  X(int, fitting_resolution_cap, PD::defaults::fitting_resolution_cap)                     \
-  X(bool, use_exterior_band_samples, PD::defaults::use_exterior_band_samples)              \
-  X(bool, use_reachable_regions, PD::defaults::use_reachable_regions)                      \
-  X(bool, use_seed_exclusion, PD::defaults::use_seed_exclusion)                            \
-  X(int, maximum_solver_evaluations, PD::defaults::maximum_solver_evaluations)             \
-  X(std::size_t, maximum_rejections_in_a_row, PD::defaults::maximum_rejections_in_a_row)   \
-  X(bool, merge_primitives, PD::defaults::merge_primitives)                                \
-  X(double, minimum_merge_iou, PD::defaults::minimum_merge_iou)                            \
-  X(double, dihedral_percentile, PD::defaults::dihedral_percentile)                        \
-  X(unsigned int, smoothing_iterations, PD::defaults::smoothing_iterations)                \
-  X(double, minimum_patch_size, PD::defaults::minimum_patch_size)                          \
-  X(double, patch_split_size, PD::defaults::patch_split_size)                              \
-  X(double, vote_temperature, PD::defaults::vote_temperature)                              \
-  X(double, boundary_smoothness, PD::defaults::boundary_smoothness)                        \
-  X(bool, keep_residual_patches, PD::defaults::keep_residual_patches)                      \
-  X(double, residual_tolerance, PD::defaults::residual_tolerance)                          \
-  X(bool, merge_thin_sheets, PD::defaults::merge_thin_sheets)                              \
-  X(double, maximum_merge_cost, PD::defaults::maximum_merge_cost)
-// end of the settings
+// A default of PD::defaults as the value of a setting (a list as a std::vector).
+template <typename T, typename D>
+T setting_default(const D& d)
+{
+  if constexpr(std::is_same<T, D>::value) return d;
+  else return T(std::begin(d), std::end(d));
+}
 
-typedef std::array<double, 4> PD_cue_weights; // a macro argument cannot hold the comma
-
+// Every named parameter of PD::parameter_table that holds a value, at its default. Each is a
+// field, passed by named_parameters() (the reader's weld_tolerance is passed too, and ignored).
 struct Decomposition_settings
 {
-#define PART_DECOMPOSITION_TOOLS_FIELD(TYPE, NAME, DEFAULT) TYPE NAME = DEFAULT;
-  PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_FIELD)
+#define PART_DECOMPOSITION_TOOLS_FIELD(NAME, ...)                                                \
+  PD::internal::value_type::NAME NAME = setting_default<PD::internal::value_type::NAME>(PD::defaults::NAME);
+  CGAL_PART_DECOMPOSITION_PARAMETERS(PART_DECOMPOSITION_TOOLS_FIELD, PART_DECOMPOSITION_TOOLS_FIELD)
 #undef PART_DECOMPOSITION_TOOLS_FIELD
-  // CGAL's own named parameters
-  unsigned int number_of_points_per_face = PD::defaults::number_of_points_per_face;
-  bool verbose = PD::defaults::verbose;
 };
 
 // Calls f(name, member pointer) for every field of Decomposition_settings, in table order.
 template <typename F>
 void for_each_setting(F&& f)
 {
-#define PART_DECOMPOSITION_TOOLS_VISIT(TYPE, NAME, DEFAULT) f(#NAME, &Decomposition_settings::NAME);
-  PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_VISIT)
+#define PART_DECOMPOSITION_TOOLS_VISIT(NAME, ...) f(#NAME, &Decomposition_settings::NAME);
+  CGAL_PART_DECOMPOSITION_PARAMETERS(PART_DECOMPOSITION_TOOLS_VISIT, PART_DECOMPOSITION_TOOLS_VISIT)
 #undef PART_DECOMPOSITION_TOOLS_VISIT
-  f("number_of_points_per_face", &Decomposition_settings::number_of_points_per_face);
-  f("verbose", &Decomposition_settings::verbose);
 }
 
 // All the settings as one pack; the caller chains its own parameters (outputs, timings) after it
@@ -110,10 +63,13 @@ void for_each_setting(F&& f)
 inline auto named_parameters(const Decomposition_settings& s)
 {
   namespace PDP = PD::parameters;
-#define PART_DECOMPOSITION_TOOLS_PASS(TYPE, NAME, DEFAULT) , PDP::NAME(s.NAME)
+#define PART_DECOMPOSITION_TOOLS_PASS(NAME, ...) , PDP::NAME(s.NAME)
+#define PART_DECOMPOSITION_TOOLS_CGAL(...)
+  // CGAL's own parameters by CGAL's functions
   return PDP::combine(
     CGAL::parameters::number_of_points_per_face(s.number_of_points_per_face).verbose(s.verbose)
-    PART_DECOMPOSITION_TOOLS_SETTINGS(PART_DECOMPOSITION_TOOLS_PASS));
+    CGAL_PART_DECOMPOSITION_PARAMETERS(PART_DECOMPOSITION_TOOLS_PASS, PART_DECOMPOSITION_TOOLS_CGAL));
+#undef PART_DECOMPOSITION_TOOLS_CGAL
 #undef PART_DECOMPOSITION_TOOLS_PASS
 }
 
@@ -179,6 +135,34 @@ auto format_value(const Range& r) -> decltype(std::begin(r), std::string())
   return out;
 }
 
+template <typename T>
+std::string format_value(const std::optional<T>& v)
+{
+  return v ? format_value(*v) : std::string("none");
+}
+
+// The switches of the method as the items NAME=VALUE of those that differ from the package's method.
+inline std::string format_value(const PD::Method_variant& v)
+{
+  const PD::Method_variant d;
+  std::string out;
+#define PART_DECOMPOSITION_TOOLS_SWITCH(NAME, ...)                                                \
+  if(v.NAME != d.NAME) out += (out.empty() ? "" : ",") + std::string(#NAME "=") + format_value(v.NAME);
+  CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(PART_DECOMPOSITION_TOOLS_SWITCH)
+#undef PART_DECOMPOSITION_TOOLS_SWITCH
+  return out.empty() ? "default" : out;
+}
+
+// The switch `name` of `v` as text; empty if there is none of that name.
+inline std::string format_switch(const PD::Method_variant& v, const std::string& name)
+{
+#define PART_DECOMPOSITION_TOOLS_SWITCH(NAME, ...)                                                \
+  if(name == #NAME) return format_value(v.NAME);
+  CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(PART_DECOMPOSITION_TOOLS_SWITCH)
+#undef PART_DECOMPOSITION_TOOLS_SWITCH
+  return "";
+}
+
 inline void parse_value(const std::string& text, double& v)
 {
   std::istringstream in(text);
@@ -210,6 +194,35 @@ std::enable_if_t<std::is_enum<E>::value> parse_value(const std::string& text, E&
   }
   throw std::invalid_argument("one of " + choices);
 }
+template <typename T>
+void parse_value(const std::string& text, std::optional<T>& v)
+{
+  if(text == "none") { v.reset(); return; }
+  T x;
+  parse_value(text, x);
+  if(x < T(1)) throw std::invalid_argument("at least 1, or none");
+  v = x;
+}
+
+// Comma-separated items applied in order to the switches: default, paper_literal, or NAME=VALUE.
+inline void parse_value(const std::string& text, PD::Method_variant& v)
+{
+  std::stringstream in(text);
+  for(std::string item; std::getline(in, item, ',');)
+  {
+    const std::size_t eq = item.find('=');
+    const std::string name = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    bool known = false;
+    if(item == "default") v = PD::Method_variant(), known = true;
+    if(item == "paper_literal") v = PD::Method_variant::paper_literal(), known = true;
+#define PART_DECOMPOSITION_TOOLS_SWITCH(NAME, ...)                                                \
+    if(eq != std::string::npos && name == #NAME) parse_value(value, v.NAME), known = true;
+    CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(PART_DECOMPOSITION_TOOLS_SWITCH)
+#undef PART_DECOMPOSITION_TOOLS_SWITCH
+    if(!known) throw std::invalid_argument("default, paper_literal or SWITCH=VALUE items, comma-separated");
+  }
+}
+
 template <typename T>
 void parse_value(const std::string& text, std::vector<T>& v)
 {

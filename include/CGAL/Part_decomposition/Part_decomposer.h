@@ -247,10 +247,10 @@ public:
   std::size_t compose_parts(FacePartMap face_part_map, const NamedParameters& np = CGAL::parameters::default_values())
   {
     const auto mnp = with_mesh(np);
-    m_use_pieces = internal::read_piece_parameters(np).use_pieces;
+    m_switches = internal::method_switches(np);
     bool fitted = needs_volumetric_stages(np);
     // the distance field may show that no piece bounds a volume
-    if(fitted && m_use_pieces && !has(DISTANCE_FIELD))
+    if(fitted && m_switches.use_pieces && !has(DISTANCE_FIELD))
     {
       compute_distance_field<ConcurrencyTag>(np);
       fitted = needs_volumetric_stages(np);
@@ -282,7 +282,7 @@ public:
     if(!has(PARTS)) compose_parts(boost::dummy_property_map());
     m_s.hierarchy = build_part_hierarchy(
       m_tm, m_s.pieces, m_s.composed,
-      with_mesh(parameters::combine(parameters::use_pieces(m_use_pieces), parameters::maximum_merge_cost(maximum_merge_cost))));
+      with_mesh(parameters::combine(parameters::method_variant(m_switches), parameters::maximum_merge_cost(maximum_merge_cost))));
     computed(HIERARCHY);
     return m_s.hierarchy;
   }
@@ -419,7 +419,7 @@ private:
   Normalization m_normalization;
   Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
   internal::Stage_results<Geom_traits> m_s;
-  bool m_use_pieces = true; // of the last compose_parts(), for the hierarchy
+  Method_variant m_switches; // of the last compose_parts(), for the hierarchy
   // which results are up to date; the stages compute the missing ones
   unsigned int m_computed = 0; // the stages whose results are current, one bit per Stage
 };

@@ -110,11 +110,11 @@ struct Pipeline_value<std::optional<E> >
 };
 
 // The value of the parameter `tag` of `np` in the type of the pipeline, `fallback` if absent.
-template <typename T, typename NamedParameters, typename Tag>
-T pipeline_parameter(const NamedParameters& np, Tag tag, const T& fallback, const char* name)
+template <typename T, typename NamedParameters, typename Tag, typename Default>
+T pipeline_parameter(const NamedParameters& np, Tag tag, const Default& fallback, const char* name)
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return fallback;
+    return Pipeline_value<T>::of(fallback, name);
   else
     return Pipeline_value<T>::of(CGAL::parameters::get_parameter(np, tag), name);
 }
@@ -135,15 +135,15 @@ auto pipeline_parameters(const TriangleMesh& tm, const NamedParameters& np)
     CGAL::parameters::geom_traits(choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits))),
     CGAL::parameters::vertex_point_map(vpm),
     CGAL::parameters::face_index_map(CGAL::get_initialized_face_index_map(tm, np)),
-    CGAL::parameters::verbose(bool(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), defaults::verbose))),
-    CGAL::parameters::number_of_points_per_face(pipeline_parameter<unsigned int>(
-      np, CGAL::internal_np::number_of_points_per_face, defaults::number_of_points_per_face,
-      "number_of_points_per_face")),
     parameters::normalization(optional_parameter<Normalization>(np, internal_np::normalization)),
     parameters::part_hierarchy(hierarchy)
-#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, TYPE, DEFAULT)                                \
-    , parameters::NAME(pipeline_parameter<TYPE>(np, internal_np::NAME, DEFAULT, #NAME))
-    CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE)
+#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, TYPE, DEFAULT, ...)                           \
+    , parameters::NAME(pipeline_parameter<TYPE>(np, internal_np::NAME, defaults::NAME, #NAME))
+#define CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE(NAME, TYPE, DEFAULT, ...)                      \
+    , CGAL::parameters::NAME(pipeline_parameter<TYPE>(np, CGAL::internal_np::NAME, defaults::NAME, #NAME))
+    CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE,
+                                       CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE)
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE
 #undef CGAL_PART_DECOMPOSITION_PIPELINE_VALUE
   );
 }

@@ -48,7 +48,7 @@ inline std::vector<int> stage_fitting_resolutions(const std::vector<int>& resolu
 struct Fitting_zone_parameters
 {
   double flow_zone_tolerance = defaults::flow_zone_tolerance;
-  bool use_freeze_zone = defaults::use_freeze_zone;
+  bool use_freeze_zone = Method_variant().use_freeze_zone;
 };
 
 template <typename NamedParameters>
@@ -59,7 +59,7 @@ Fitting_zone_parameters read_fitting_zone_parameters(const NamedParameters& np)
   Fitting_zone_parameters p;
   p.flow_zone_tolerance =
     choose_parameter(get_parameter(np, internal_np::flow_zone_tolerance), defaults::flow_zone_tolerance);
-  p.use_freeze_zone = choose_parameter(get_parameter(np, internal_np::use_freeze_zone), defaults::use_freeze_zone);
+  p.use_freeze_zone = internal::method_switches(np).use_freeze_zone;
   check_non_negative(p.flow_zone_tolerance, "flow_zone_tolerance");
   return p;
 }

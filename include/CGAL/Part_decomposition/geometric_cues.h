@@ -102,8 +102,7 @@ Cue_parameters read_cue_parameters(const NamedParameters& np)
   const double k = double(choose_parameter(get_parameter(np, internal_np::number_of_neighbors), defaults::number_of_neighbors));
   check_parameter(k >= 1. && k <= 1e6 && k == std::floor(k), "number_of_neighbors");
   p.number_of_neighbors = std::size_t(k);
-  p.use_concave_curvature =
-    bool(choose_parameter(get_parameter(np, internal_np::use_concave_curvature), defaults::use_concave_curvature));
+  p.use_concave_curvature = internal::method_switches(np).use_concave_curvature;
   return p;
 }
 

@@ -209,7 +209,7 @@ std::vector<int> read_voxel_resolutions(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   // a copy: get_parameter() may return a temporary that a reference would outlive
-  const auto range = choose_parameter(get_parameter(np, internal_np::voxel_resolutions), defaults::voxel_resolutions());
+  const auto range = choose_parameter(get_parameter(np, internal_np::voxel_resolutions), defaults::voxel_resolutions);
   std::vector<int> resolutions;
   for(const auto& r : range) resolutions.push_back(int(r));
   check_voxel_resolutions(resolutions);

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <iterator>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace CGAL {
@@ -25,71 +26,6 @@ namespace Part_decomposition {
 // here and chains them with `parameters::combine()`. CGAL's own names (`geom_traits`,
 // `vertex_point_map`, `face_index_map`, `number_of_points_per_face`, `verbose`, ...) are used
 // unchanged wherever the meaning is the same.
-//
-// The values, one line each: name, value type, default. `decompose()` hands its pipeline one
-// pack holding all of them with these types, so that the pipeline is compiled once per mesh type
-// whatever parameters a program gives (and once for all in the compiled library).
-#define CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(X)                                              \
-  /* reading a mesh */                                                                             \
-  X(weld_tolerance, double, defaults::weld_tolerance)                                              \
-  /* pieces and creases */                                                                         \
-  X(use_pieces, bool, defaults::use_pieces)                                                        \
-  X(crease_angle, double, defaults::crease_angle)                                                  \
-  X(minimum_part_area, double, defaults::minimum_part_area)                                        \
-  /* cues and topology score (paper App. B) */                                                     \
-  X(voxel_resolutions, std::vector<int>, defaults::voxel_resolutions())                            \
-  X(number_of_neighbors, unsigned int, defaults::number_of_neighbors)                              \
-  X(curvature_percentile, double, defaults::curvature_percentile)                                  \
-  X(use_concave_curvature, bool, defaults::use_concave_curvature)                                  \
-  X(cue_weights, std::vector<double>,                                                              \
-    std::vector<double>(defaults::cue_weights.begin(), defaults::cue_weights.end()))               \
-  X(freeze_ratio, double, defaults::freeze_ratio)                                                  \
-  X(use_density, bool, defaults::use_density)                                                      \
-  /* normalization and TSDF (App. E.2) */                                                          \
-  X(normalization_margin, double, defaults::normalization_margin)                                  \
-  X(tsdf_truncation, double, defaults::tsdf_truncation)                                            \
-  X(tsdf_sign_method, Tsdf_sign_method, defaults::tsdf_sign_method)                                \
-  X(grid_resolution, int, defaults::grid_resolution)                                               \
-  X(adaptive_grid, bool, defaults::adaptive_grid)                                                  \
-  /* superquadric fitting (App. E.2, Alg. A.2, A.3) */                                             \
-  X(flow_zone_tolerance, double, defaults::flow_zone_tolerance)                                    \
-  X(trust_region_scales, std::vector<double>, defaults::trust_region_scales())                     \
-  X(body_seed_threshold, double, defaults::body_seed_threshold)                                    \
-  X(minimum_body_volume, double, defaults::minimum_body_volume)                                    \
-  X(minimum_surface_volume, double, defaults::minimum_surface_volume)                              \
-  X(exterior_penalty, double, defaults::exterior_penalty)                                          \
-  X(coverage_target, double, defaults::coverage_target)                                            \
-  X(roi_radius, double, defaults::roi_radius)                                                      \
-  X(interior_weight_mode, Interior_weight_mode, defaults::interior_weight_mode)                    \
-  X(maximum_number_of_primitives, std::size_t, defaults::maximum_number_of_primitives)             \
-  X(use_freeze_zone, bool, defaults::use_freeze_zone)                                              \
-  X(use_tsdf_guidance, bool, defaults::use_tsdf_guidance)                                          \
-  X(use_body_seeds, bool, defaults::use_body_seeds)                                                \
-  X(fitting_resolution_cap, int, defaults::fitting_resolution_cap)                                 \
-  X(use_exterior_band_samples, bool, defaults::use_exterior_band_samples)                          \
-  X(use_reachable_regions, bool, defaults::use_reachable_regions)                                  \
-  X(use_seed_exclusion, bool, defaults::use_seed_exclusion)                                        \
-  X(maximum_solver_evaluations, int, defaults::maximum_solver_evaluations)                         \
-  X(maximum_rejections_in_a_row, std::size_t, defaults::maximum_rejections_in_a_row)               \
-  X(merge_primitives, bool, defaults::merge_primitives)                                            \
-  X(minimum_merge_iou, double, defaults::minimum_merge_iou)                                        \
-  /* over-segmentation and assignment (App. E.3, E.4) */                                           \
-  X(dihedral_percentile, double, defaults::dihedral_percentile)                                    \
-  X(smoothing_iterations, unsigned int, defaults::smoothing_iterations)                            \
-  X(minimum_patch_size, double, defaults::minimum_patch_size)                                      \
-  X(patch_split_size, double, defaults::patch_split_size)                                          \
-  X(vote_temperature, double, defaults::vote_temperature)                                          \
-  X(boundary_smoothness, double, defaults::boundary_smoothness)                                    \
-  X(merge_thin_sheets, bool, defaults::merge_thin_sheets)                                          \
-  /* the part hierarchy and residual patches; number_of_parts: none, the default granularity */    \
-  X(number_of_parts, std::optional<std::size_t>, std::optional<std::size_t>())                     \
-  X(maximum_merge_cost, double, defaults::maximum_merge_cost)                                      \
-  X(keep_residual_patches, bool, defaults::keep_residual_patches)                                  \
-  X(residual_tolerance, double, defaults::residual_tolerance)
-
-// The objects: a normalization, and what `decompose()` reports.
-#define CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(X)                                             \
-  X(normalization) X(part_hierarchy) X(primitive_output_iterator) X(stage_timings)
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -155,115 +91,213 @@ enum class Interior_weight_mode
   ONE_SHOT
 };
 
+// The switches of the method: each undoes a documented choice of this implementation or
+// reproduces the paper literally. One line each: name, type, default, the paper's value, stage,
+// meaning. They are the fields of `Method_variant`, one named parameter.
+#define CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(S)                                               \
+  S(use_pieces, bool, true, false, PIECES,                                                        \
+    "the parts follow the pieces of the mesh and their concave creases; false: the paper's volumetric parts alone") \
+  S(use_concave_curvature, bool, true, false, PRIOR,                                              \
+    "the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex") \
+  S(use_density, bool, true, true, PRIOR,                                                         \
+    "the topology score is weighted by the density sqrt(n_i); false: the paper's ablation")      \
+  S(adaptive_grid, bool, true, false, DISTANCE_FIELD,                                             \
+    "the leaves of the grid follow the shape; false: every leaf a voxel of the finest voxel resolution (the paper)") \
+  S(interior_weight_mode, Interior_weight_mode, Interior_weight_mode::ONE_SHOT,                   \
+    Interior_weight_mode::MPS_REESTIMATED, FITTING,                                               \
+    "the variance of the interior inlier weight: one_shot, or mps_reestimated as MPS")            \
+  S(use_freeze_zone, bool, true, true, FITTING,                                                   \
+    "false: the paper's ablation w/o Freeze, Freeze voxels are Flow to the fitter")               \
+  S(use_tsdf_guidance, bool, true, true, FITTING,                                                 \
+    "false: the paper's ablation w/o TSDF, the fit sees the occupancy only")                      \
+  S(use_body_seeds, bool, true, true, FITTING, "false: the paper's ablation w/o Body, surface seeds only") \
+  S(use_exterior_band_samples, bool, true, false, FITTING,                                        \
+    "the exterior voxels of the thin outer band are samples of the fit")                          \
+  S(use_reachable_regions, bool, true, false, FITTING, "regions of interest and claims stop at Freeze walls") \
+  S(use_seed_exclusion, bool, true, false, FITTING,                                               \
+    "a rejected seed excludes a ball around it from later seeds of its stage")                    \
+  S(merge_primitives, bool, true, false, FITTING,                                                 \
+    "adjacent primitives that one superquadric explains are merged after the fit (not in the paper)") \
+  S(keep_residual_patches, bool, false, true, ASSIGNMENT,                                         \
+    "true: the paper's residual patches, Freeze-dominant patches no primitive explains, are parts of their own") \
+  S(merge_thin_sheets, bool, true, false, ASSIGNMENT,                                             \
+    "adjacent thin, flat parts that meet along smooth edges are merged (not in the paper)")
+
 /*!
 \ingroup PkgPartDecompositionRef
-The default value of each named parameter of the package: the paper's Table A.1 where
-it gives one, the choices of this implementation (documented with the functions that read them)
-elsewhere. Every function of the package takes its defaults from here. The namespace is made from
-`parameter_table` (by `doc/Part_decomposition/tools/parameter_table.py`), a list as a function
-that returns it.
+The switches of the method, passed as the one named parameter `method_variant`. Each undoes a
+documented choice of this implementation or reproduces the paper literally; they exist for the
+ablations of `benchmark/Part_decomposition` and for comparisons with the paper. A
+default-constructed value is the package's method, `paper_literal()` the paper's. Every field is
+a `bool` but `interior_weight_mode` (an `Interior_weight_mode`); the fields, with their defaults,
+the paper's values and meanings, are listed in \ref PD_MethodSwitches.
+*/
+struct Method_variant
+{
+  /// \cond SKIP_IN_MANUAL
+#define CGAL_PART_DECOMPOSITION_SWITCH_FIELD(NAME, TYPE, DEFAULT, ...) TYPE NAME = DEFAULT;
+  CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(CGAL_PART_DECOMPOSITION_SWITCH_FIELD)
+#undef CGAL_PART_DECOMPOSITION_SWITCH_FIELD
+  /// \endcond
+
+  /// returns every switch at the paper's value.
+  static constexpr Method_variant paper_literal()
+  {
+    Method_variant v;
+#define CGAL_PART_DECOMPOSITION_SWITCH_PAPER(NAME, TYPE, DEFAULT, PAPER, ...) v.NAME = PAPER;
+    CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(CGAL_PART_DECOMPOSITION_SWITCH_PAPER)
+#undef CGAL_PART_DECOMPOSITION_SWITCH_PAPER
+    return v;
+  }
+
+  /// returns whether every switch of `a` and `b` is the same.
+  friend constexpr bool operator==(const Method_variant& a, const Method_variant& b)
+  {
+    return true
+#define CGAL_PART_DECOMPOSITION_SWITCH_EQUAL(NAME, ...) && a.NAME == b.NAME
+      CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(CGAL_PART_DECOMPOSITION_SWITCH_EQUAL);
+#undef CGAL_PART_DECOMPOSITION_SWITCH_EQUAL
+  }
+};
+
+// The named parameters that hold a value, in the order of their stages, one line each: name,
+// value type, default (in parentheses: the arguments that make it; a list is a
+// `std::vector`), stage, range, meaning. `P` is a parameter of the package, `C` one of \cgal's
+// (its tag and function are \cgal's). From this list come the tags and the functions of
+// `parameters`, `defaults`, `parameter_table` (and so the reference page and the options of the
+// programs), and the one pack of fixed types that `decompose()` hands its pipeline, so that the
+// pipeline is compiled once per mesh type whatever parameters a program gives.
+#define CGAL_PART_DECOMPOSITION_PARAMETERS(P, C)                                                 \
+  P(weld_tolerance, double, (5e-6), READING, "in [0, 0.01]",                                      \
+    "border vertices closer than this fraction of the bounding box diagonal are welded; 0: none") \
+  P(crease_angle, double, (60.), PIECES, "in (0, 180]",                                           \
+    "the dihedral angle, in degrees, from which a concave edge separates two regions of a piece") \
+  P(minimum_part_area, double, (0.005), PIECES, "in [0, 1]",                                      \
+    "a smaller part (fraction of the mesh area) joins a neighbour")                               \
+  P(voxel_resolutions, std::vector<int>, (16, 32, 64), PRIOR,                                     \
+    "a non-empty list of powers of two from 1 to 256, each twice the previous",                   \
+    "R: the grids of the prior, coarse to fine; the finest is the unit of the lengths of every volume stage") \
+  C(number_of_points_per_face, unsigned int, (36), PRIOR, "a positive perfect square",            \
+    "N_face: the barycentric samples per face")                                                   \
+  P(number_of_neighbors, unsigned int, (8), PRIOR, "a positive integer",                          \
+    "k: the nearest faces of the normal deviation cue")                                           \
+  P(curvature_percentile, double, (99.5), PRIOR, "in [0, 100]",                                   \
+    "the percentile at which the vertex curvatures are clipped")                                  \
+  P(cue_weights, std::vector<double>, (1., 1., 1., 0.), PRIOR, "4 finite numbers",                \
+    "lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score") \
+  P(freeze_ratio, double, (0.15), PRIOR, "in (0, 1)",                                             \
+    "alpha: the fraction of the active voxels frozen at each resolution")                         \
+  P(normalization_margin, double, (0.03125), DISTANCE_FIELD, "in [0, 0.25]",                      \
+    "the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)")                 \
+  P(tsdf_truncation, double, (8.), DISTANCE_FIELD, "in (0, 4 * resolution]",                      \
+    "tau: the truncation of the distance field, in voxels of the finest grid")                    \
+  P(tsdf_sign_method, Tsdf_sign_method, (Tsdf_sign_method::AUTOMATIC), DISTANCE_FIELD, "",        \
+    "how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill") \
+  P(grid_resolution, int, (128), DISTANCE_FIELD,                                                  \
+    "a power of two up to 256; raised to the finest voxel resolution",                            \
+    "the resolution of the finest leaves of the adaptive grid, where the shape is thin")          \
+  P(flow_zone_tolerance, double, (2.), FITTING, "non-negative and finite",                        \
+    "the dilation of the Flow zone, in voxels of the fitting resolution")                         \
+  P(trust_region_scales, std::vector<double>, (1., 0.5, 0.25), FITTING,                           \
+    "a non-empty list of positive numbers", "eta: the semi-axis trust-region scales of the retries") \
+  P(body_seed_threshold, double, (1.5), FITTING, "positive and finite",                           \
+    "the depth, in voxels of the fitting resolution, below which seeds switch from body to surface") \
+  P(minimum_body_volume, double, (5.), FITTING, "non-negative and finite",                        \
+    "V_min of body seeds, in voxels of the fitting resolution")                                   \
+  P(minimum_surface_volume, double, (3.), FITTING, "non-negative and finite",                     \
+    "V_min of surface seeds, in voxels of the fitting resolution")                                \
+  P(exterior_penalty, double, (5.), FITTING, "non-negative and finite",                           \
+    "mu_ext: the exterior intrusion penalty")                                                     \
+  P(coverage_target, double, (0.999), FITTING, "in (0, 1]",                                       \
+    "the claimed fraction of the valid volume that ends a fitting stage")                         \
+  P(roi_radius, double, (8.), FITTING, "positive and finite",                                     \
+    "the radius of the region of interest of a seed, in voxels of the fitting resolution")        \
+  P(maximum_number_of_primitives, std::size_t, (256), FITTING, "positive",                        \
+    "a safety cap on the number of fitted superquadrics")                                         \
+  P(fitting_resolution_cap, int, (0), FITTING, "non-negative",                                    \
+    "r_fit = min(r, cap); 0: the resolution before the finest")                                   \
+  P(maximum_solver_evaluations, int, (40), FITTING, "positive",                                   \
+    "the residual evaluations of one least-squares solve")                                        \
+  P(maximum_rejections_in_a_row, std::size_t, (4), FITTING, "non-negative",                       \
+    "the rejected seeds in a row that end a fitting stage; 0: never")                             \
+  P(minimum_merge_iou, double, (0.6), FITTING, "in (0, 1]",                                       \
+    "the voxel intersection over union from which one superquadric explains two primitives")      \
+  P(dihedral_percentile, double, (90.), OVER_SEGMENTATION, "in [0, 100]",                         \
+    "q: edges whose dihedral angle is above this percentile are cut")                             \
+  P(smoothing_iterations, unsigned int, (1), OVER_SEGMENTATION, "non-negative",                   \
+    "the boundary-smoothing passes of the over-segmentation")                                     \
+  P(minimum_patch_size, double, (0.001), OVER_SEGMENTATION, "in [0, 1]",                          \
+    "a smaller patch (fraction of the mesh area) is merged into a neighbour")                     \
+  P(patch_split_size, double, (0.0005), OVER_SEGMENTATION, "in (0, 1]",                           \
+    "a larger patch of smooth surface (fraction of the mesh area) is split")                      \
+  P(vote_temperature, double, (1.), ASSIGNMENT, "positive and finite",                            \
+    "tau_v: the temperature of the patch vote, in voxels of the finest grid")                     \
+  P(boundary_smoothness, double, (10.), ASSIGNMENT, "non-negative and finite",                    \
+    "the cost of a part boundary across smooth surface in the final labelling; 0: the paper's patch vote") \
+  P(residual_tolerance, double, (2.), ASSIGNMENT, "non-negative and finite",                      \
+    "the mean distance to its primitive, in voxels of the finest grid, from which a patch is residual") \
+  P(maximum_merge_cost, double, (0.003), HIERARCHY, "non-negative and finite",                    \
+    "the parts go on merging in the part hierarchy while a merge costs less; 0: none")            \
+  P(number_of_parts, std::optional<std::size_t>, (), HIERARCHY, "at least 1",                     \
+    "exactly this many parts, a level of the part hierarchy (at most its leaves); none: the default granularity") \
+  P(method_variant, Method_variant, (), HIERARCHY, "",                                            \
+    "the switches of the method (Method_variant): default, paper_literal, or NAME=VALUE,... of the switches") \
+  C(verbose, bool, (false), OUTPUT, "", "print what each stage does on std::cerr")
+
+// The named parameters that hold an object (a normalization, what `decompose()` reports): name,
+// type, default, stage, meaning.
+#define CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(O)                                             \
+  O(normalization, "Normalization", "compute_normalization()", DISTANCE_FIELD,                    \
+    "the normalization of the mesh into the unit cube")                                           \
+  O(part_hierarchy, "Part_hierarchy<GeomTraits>*", "nullptr", OUTPUT, "receives the part hierarchy") \
+  O(primitive_output_iterator, "an output iterator", "none", OUTPUT, "receives the superquadric of each part") \
+  O(stage_timings, "Stage_timings*", "nullptr", OUTPUT, "receives the time of each stage")
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The default of a parameter of type T from the arguments of its list entry; a list is a
+// `std::array`, so that every default is a constant.
+template <typename T>
+struct Default_of
+{
+  template <typename... A>
+  static constexpr T make(A... a) { return T(a...); }
+};
+
+template <typename E>
+struct Default_of<std::vector<E> >
+{
+  template <typename... A>
+  static constexpr std::array<E, sizeof...(A)> make(A... a) { return {{E(a)...}}; }
+};
+
+// The value type of each parameter of the list, by its name: for the programs that hold the values.
+namespace value_type {
+#define CGAL_PART_DECOMPOSITION_VALUE_TYPE(NAME, TYPE, ...) typedef TYPE NAME;
+CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_VALUE_TYPE, CGAL_PART_DECOMPOSITION_VALUE_TYPE)
+#undef CGAL_PART_DECOMPOSITION_VALUE_TYPE
+} // namespace value_type
+
+// The text of a default as the list writes it, without its parentheses.
+constexpr std::string_view unparenthesized(std::string_view text) { return text.substr(1, text.size() - 2); }
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgPartDecompositionRef
+The default value of each named parameter that holds a value: the paper's Table A.1 where it gives
+one, the choices of this implementation elsewhere; a list is a `std::array`. Every function of the
+package takes its defaults from here. The values are listed in \ref PD_ParameterTable.
 */
 namespace defaults {
-// defaults: made by doc/Part_decomposition/tools/parameter_table.py from parameter_table, do not edit
-/// border vertices closer than this fraction of the bounding box diagonal are welded; 0: none
-constexpr double weld_tolerance = 5e-06;
-/// the parts follow the pieces of the mesh and their concave creases; false: the paper's volumetric parts alone
-constexpr bool use_pieces = true;
-/// the dihedral angle, in degrees, from which a concave edge separates two regions of a piece
-constexpr double crease_angle = 60.;
-/// a smaller part (fraction of the mesh area) joins a neighbour
-constexpr double minimum_part_area = 0.005;
-/// R: the grids of the prior, coarse to fine; the finest is the unit of the lengths of every volume stage
-inline std::vector<int> voxel_resolutions() { return {16, 32, 64}; }
-/// N_face: the barycentric samples per face
-constexpr unsigned int number_of_points_per_face = 36;
-/// k: the nearest faces of the normal deviation cue
-constexpr unsigned int number_of_neighbors = 8;
-/// the percentile at which the vertex curvatures are clipped
-constexpr double curvature_percentile = 99.5;
-/// the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex
-constexpr bool use_concave_curvature = true;
-/// lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score
-constexpr std::array<double, 4> cue_weights = {{1., 1., 1., 0.}};
-/// alpha: the fraction of the active voxels frozen at each resolution
-constexpr double freeze_ratio = 0.15;
-/// the topology score is weighted by the density sqrt(n_i); false: the paper's ablation
-constexpr bool use_density = true;
-/// the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)
-constexpr double normalization_margin = 0.03125;
-/// tau: the truncation of the distance field, in voxels of the finest grid
-constexpr double tsdf_truncation = 8.;
-/// how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill
-constexpr Tsdf_sign_method tsdf_sign_method = Tsdf_sign_method::AUTOMATIC;
-/// the resolution of the finest leaves of the adaptive grid, where the shape is thin
-constexpr int grid_resolution = 128;
-/// the leaves of the grid follow the shape; false: every leaf a voxel of the finest voxel resolution (the paper)
-constexpr bool adaptive_grid = true;
-/// the dilation of the Flow zone, in voxels of the fitting resolution
-constexpr double flow_zone_tolerance = 2.;
-/// eta: the semi-axis trust-region scales of the retries
-inline std::vector<double> trust_region_scales() { return {1., 0.5, 0.25}; }
-/// the depth, in voxels of the fitting resolution, below which seeds switch from body to surface
-constexpr double body_seed_threshold = 1.5;
-/// V_min of body seeds, in voxels of the fitting resolution
-constexpr double minimum_body_volume = 5.;
-/// V_min of surface seeds, in voxels of the fitting resolution
-constexpr double minimum_surface_volume = 3.;
-/// mu_ext: the exterior intrusion penalty
-constexpr double exterior_penalty = 5.;
-/// the claimed fraction of the valid volume that ends a fitting stage
-constexpr double coverage_target = 0.999;
-/// the radius of the region of interest of a seed, in voxels of the fitting resolution
-constexpr double roi_radius = 8.;
-/// the variance of the interior inlier weight: one_shot, or mps_reestimated as MPS
-constexpr Interior_weight_mode interior_weight_mode = Interior_weight_mode::ONE_SHOT;
-/// a safety cap on the number of fitted superquadrics
-constexpr std::size_t maximum_number_of_primitives = 256;
-/// false: the paper's ablation w/o Freeze, Freeze voxels are Flow to the fitter
-constexpr bool use_freeze_zone = true;
-/// false: the paper's ablation w/o TSDF, the fit sees the occupancy only
-constexpr bool use_tsdf_guidance = true;
-/// false: the paper's ablation w/o Body, surface seeds only
-constexpr bool use_body_seeds = true;
-/// r_fit = min(r, cap); 0: the resolution before the finest
-constexpr int fitting_resolution_cap = 0;
-/// the exterior voxels of the thin outer band are samples of the fit
-constexpr bool use_exterior_band_samples = true;
-/// regions of interest and claims stop at Freeze walls
-constexpr bool use_reachable_regions = true;
-/// a rejected seed excludes a ball around it from later seeds of its stage
-constexpr bool use_seed_exclusion = true;
-/// the residual evaluations of one least-squares solve
-constexpr int maximum_solver_evaluations = 40;
-/// the rejected seeds in a row that end a fitting stage; 0: never
-constexpr std::size_t maximum_rejections_in_a_row = 4;
-/// adjacent primitives that one superquadric explains are merged after the fit (not in the paper)
-constexpr bool merge_primitives = true;
-/// the voxel intersection over union from which one superquadric explains two primitives
-constexpr double minimum_merge_iou = 0.6;
-/// q: edges whose dihedral angle is above this percentile are cut
-constexpr double dihedral_percentile = 90.;
-/// the boundary-smoothing passes of the over-segmentation
-constexpr unsigned int smoothing_iterations = 1;
-/// a smaller patch (fraction of the mesh area) is merged into a neighbour
-constexpr double minimum_patch_size = 0.001;
-/// a larger patch of smooth surface (fraction of the mesh area) is split
-constexpr double patch_split_size = 0.0005;
-/// tau_v: the temperature of the patch vote, in voxels of the finest grid
-constexpr double vote_temperature = 1.;
-/// the cost of a part boundary across smooth surface in the final labelling; 0: the paper's patch vote
-constexpr double boundary_smoothness = 10.;
-/// true: the paper's residual patches, Freeze-dominant patches no primitive explains, are parts of their own
-constexpr bool keep_residual_patches = false;
-/// the mean distance to its primitive, in voxels of the finest grid, from which a patch is residual
-constexpr double residual_tolerance = 2.;
-/// adjacent thin, flat parts that meet along smooth edges are merged (not in the paper)
-constexpr bool merge_thin_sheets = true;
-/// the parts go on merging in the part hierarchy while a merge costs less; 0: none
-constexpr double maximum_merge_cost = 0.003;
-/// print what each stage does on std::cerr
-constexpr bool verbose = false;
-// end of the defaults
+/// \cond SKIP_IN_MANUAL
+#define CGAL_PART_DECOMPOSITION_DEFAULT(NAME, TYPE, DEFAULT, ...)                                \
+  inline constexpr auto NAME = internal::Default_of<TYPE>::make DEFAULT;
+CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_DEFAULT, CGAL_PART_DECOMPOSITION_DEFAULT)
+#undef CGAL_PART_DECOMPOSITION_DEFAULT
+/// \endcond
 } // namespace defaults
 
 /*!
@@ -286,167 +320,68 @@ enum class Parameter_stage
 
 /*!
 \ingroup PkgPartDecompositionRef
-One named parameter of the package, as listed by `parameter_table`.
+What an entry of `parameter_table` describes.
+*/
+enum class Parameter_kind
+{
+  VALUE,         ///< a named parameter that holds a value: an option of the programs
+  OBJECT,        ///< a named parameter that holds an object (a normalization, an output)
+  METHOD_SWITCH  ///< a field of `Method_variant`, passed by the named parameter `method_variant`
+};
+
+/*!
+\ingroup PkgPartDecompositionRef
+One entry of `parameter_table`.
 */
 struct Parameter_description
 {
-  const char* name;          ///< the named-parameter function, e.g.\ `"freeze_ratio"`
-  const char* type;          ///< the value type
-  const char* default_value; ///< the default of `defaults`, as the programs print it
-  const char* range;         ///< the rule of the range check ("NAME must be RULE"); empty if none
-  Parameter_stage stage;     ///< the stage that reads it
-  const char* read_by;       ///< the functions that read it
-  bool is_value;             ///< `false` for objects (outputs, a normalization): no option of the programs
-  bool is_ablation;          ///< exists only to undo a documented choice or to reproduce the paper literally
-  const char* meaning;       ///< one line
+  const char* name;               ///< the named-parameter function or the field, e.g.\ `"freeze_ratio"`
+  const char* type;               ///< the value type
+  std::string_view default_value; ///< the default, as the list writes it (a list: its items)
+  std::string_view paper_value;   ///< a switch: its value in the paper; empty otherwise
+  const char* range;              ///< the rule of the range check ("NAME must be RULE"); empty if none
+  Parameter_stage stage;          ///< the stage that reads it
+  Parameter_kind kind;            ///< a value, an object or a switch of the method
+  const char* meaning;            ///< one line
 };
 
 /*!
 \ingroup PkgPartDecompositionRef
 Every named parameter that `decompose()` reads, the package's own and \cgal's
-(`number_of_points_per_face`, `verbose`), and the reader's `weld_tolerance`, in the order of their
-stages. The command-line tool `hitops`, the Python module and the manual's table of parameters
-are made from it; a test checks that they list every entry with the same default.
+(`number_of_points_per_face`, `verbose`), the reader's `weld_tolerance`, and the switches of
+`Method_variant`. The command-line tool `hitops`, the Python module and the reference pages
+\ref PD_ParameterTable and \ref PD_MethodSwitches are made from it.
 */
 constexpr Parameter_description parameter_table[] = {
-  // name, type, default, range, stage, read by, value, ablation, meaning
-  {"weld_tolerance", "double", "5e-06", "in [0, 0.01]", Parameter_stage::READING,
-   "IO::read_triangle_mesh(), IO::triangle_mesh_from_polygon_soup()", true, false,
-   "border vertices closer than this fraction of the bounding box diagonal are welded; 0: none"},
-  {"use_pieces", "bool", "true", "", Parameter_stage::PIECES, "decompose(), compose_parts()", true, true,
-   "the parts follow the pieces of the mesh and their concave creases; false: the paper's volumetric parts alone"},
-  {"crease_angle", "double", "60", "in (0, 180]", Parameter_stage::PIECES, "segment_pieces()", true, false,
-   "the dihedral angle, in degrees, from which a concave edge separates two regions of a piece"},
-  {"minimum_part_area", "double", "0.005", "in [0, 1]", Parameter_stage::PIECES,
-   "decompose(), splittable_pieces(), compose_parts()", true, false,
-   "a smaller part (fraction of the mesh area) joins a neighbour"},
-  {"voxel_resolutions", "std::vector<int>", "16,32,64",
-   "a non-empty list of powers of two from 1 to 256, each twice the previous", Parameter_stage::PRIOR,
-   "compute_flow_freeze_prior(), compute_tsdf()", true, false,
-   "R: the grids of the prior, coarse to fine; the finest is the unit of the lengths of every volume stage"},
-  {"number_of_points_per_face", "unsigned int", "36", "a positive perfect square", Parameter_stage::PRIOR,
-   "compute_topology_score()", true, false, "N_face: the barycentric samples per face"},
-  {"number_of_neighbors", "unsigned int", "8", "a positive integer", Parameter_stage::PRIOR,
-   "compute_face_normal_deviation()", true, false, "k: the nearest faces of the normal deviation cue"},
-  {"curvature_percentile", "double", "99.5", "in [0, 100]", Parameter_stage::PRIOR, "compute_face_curvature_cue()",
-   true, false, "the percentile at which the vertex curvatures are clipped"},
-  {"use_concave_curvature", "bool", "true", "", Parameter_stage::PRIOR,
-   "compute_face_curvature_cue(), compute_geometric_cues(), compute_flow_freeze_prior()", true, true,
-   "the curvature cue counts the concave vertices only (the minima rule); false: the paper's |H|/2 at every vertex"},
-  {"cue_weights", "std::array<double, 4>", "1,1,1,0", "4 finite numbers", Parameter_stage::PRIOR,
-   "compute_topology_score()", true, false,
-   "lambda: the weights of curvature mean, deviation, gradient and normal deviation in the topology score"},
-  {"freeze_ratio", "double", "0.15", "in (0, 1)", Parameter_stage::PRIOR, "compute_topology_score()", true, false,
-   "alpha: the fraction of the active voxels frozen at each resolution"},
-  {"use_density", "bool", "true", "", Parameter_stage::PRIOR,
-   "compute_topology_score(), compute_flow_freeze_prior()", true, true,
-   "the topology score is weighted by the density sqrt(n_i); false: the paper's ablation"},
-  {"normalization", "Normalization", "compute_normalization()", "", Parameter_stage::DISTANCE_FIELD,
-   "every stage on the mesh", false, false, "the normalization of the mesh into the unit cube"},
-  {"normalization_margin", "double", "0.03125", "in [0, 0.25]", Parameter_stage::DISTANCE_FIELD,
-   "compute_normalization()", true, false,
-   "the free margin of the normalized cube (2/64: two voxels of the 64^3 grid)"},
-  {"tsdf_truncation", "double", "8", "in (0, 4 * resolution]", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()",
-   true, false, "tau: the truncation of the distance field, in voxels of the finest grid"},
-  {"tsdf_sign_method", "Tsdf_sign_method", "automatic", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true,
-   false, "how the inside is decided: automatic (ray_votes), ray_votes, inside_test, winding_number or flood_fill"},
-  {"grid_resolution", "int", "128", "a power of two up to 256; raised to the finest voxel resolution",
-   Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, false,
-   "the resolution of the finest leaves of the adaptive grid, where the shape is thin"},
-  {"adaptive_grid", "bool", "true", "", Parameter_stage::DISTANCE_FIELD, "compute_tsdf()", true, true,
-   "the leaves of the grid follow the shape; false: every leaf a voxel of the finest voxel resolution (the paper)"},
-  {"flow_zone_tolerance", "double", "2", "non-negative and finite", Parameter_stage::FITTING,
-   "compute_fitting_zones(), fit_superquadrics()", true, false,
-   "the dilation of the Flow zone, in voxels of the fitting resolution"},
-  {"trust_region_scales", "std::vector<double>", "1,0.5,0.25", "a non-empty list of positive numbers",
-   Parameter_stage::FITTING, "fit_superquadrics()", true, false, "eta: the semi-axis trust-region scales of the retries"},
-  {"body_seed_threshold", "double", "1.5", "positive and finite", Parameter_stage::FITTING, "fit_superquadrics()", true,
-   false, "the depth, in voxels of the fitting resolution, below which seeds switch from body to surface"},
-  {"minimum_body_volume", "double", "5", "non-negative and finite", Parameter_stage::FITTING, "fit_superquadrics()",
-   true, false, "V_min of body seeds, in voxels of the fitting resolution"},
-  {"minimum_surface_volume", "double", "3", "non-negative and finite", Parameter_stage::FITTING,
-   "fit_superquadrics()", true, false, "V_min of surface seeds, in voxels of the fitting resolution"},
-  {"exterior_penalty", "double", "5", "non-negative and finite", Parameter_stage::FITTING, "fit_superquadrics()", true,
-   false, "mu_ext: the exterior intrusion penalty"},
-  {"coverage_target", "double", "0.999", "in (0, 1]", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
-   "the claimed fraction of the valid volume that ends a fitting stage"},
-  {"roi_radius", "double", "8", "positive and finite", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
-   "the radius of the region of interest of a seed, in voxels of the fitting resolution"},
-  {"interior_weight_mode", "Interior_weight_mode", "one_shot", "", Parameter_stage::FITTING, "fit_superquadrics()",
-   true, true, "the variance of the interior inlier weight: one_shot, or mps_reestimated as MPS"},
-  {"maximum_number_of_primitives", "std::size_t", "256", "positive", Parameter_stage::FITTING, "fit_superquadrics()",
-   true, false, "a safety cap on the number of fitted superquadrics"},
-  {"use_freeze_zone", "bool", "true", "", Parameter_stage::FITTING, "compute_fitting_zones(), fit_superquadrics()",
-   true, true, "false: the paper's ablation w/o Freeze, Freeze voxels are Flow to the fitter"},
-  {"use_tsdf_guidance", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "false: the paper's ablation w/o TSDF, the fit sees the occupancy only"},
-  {"use_body_seeds", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "false: the paper's ablation w/o Body, surface seeds only"},
-  {"fitting_resolution_cap", "int", "0", "non-negative", Parameter_stage::FITTING,
-   "fitting_resolutions(), fit_superquadrics()", true, false,
-   "r_fit = min(r, cap); 0: the resolution before the finest"},
-  {"use_exterior_band_samples", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "the exterior voxels of the thin outer band are samples of the fit"},
-  {"use_reachable_regions", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "regions of interest and claims stop at Freeze walls"},
-  {"use_seed_exclusion", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "a rejected seed excludes a ball around it from later seeds of its stage"},
-  {"maximum_solver_evaluations", "int", "40", "positive", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
-   "the residual evaluations of one least-squares solve"},
-  {"maximum_rejections_in_a_row", "std::size_t", "4", "non-negative", Parameter_stage::FITTING, "fit_superquadrics()",
-   true, false, "the rejected seeds in a row that end a fitting stage; 0: never"},
-  {"merge_primitives", "bool", "true", "", Parameter_stage::FITTING, "fit_superquadrics()", true, true,
-   "adjacent primitives that one superquadric explains are merged after the fit (not in the paper)"},
-  {"minimum_merge_iou", "double", "0.6", "in (0, 1]", Parameter_stage::FITTING, "fit_superquadrics()", true, false,
-   "the voxel intersection over union from which one superquadric explains two primitives"},
-  {"dihedral_percentile", "double", "90", "in [0, 100]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
-   false, "q: edges whose dihedral angle is above this percentile are cut"},
-  {"smoothing_iterations", "unsigned int", "1", "non-negative", Parameter_stage::OVER_SEGMENTATION, "over_segment()",
-   true, false, "the boundary-smoothing passes of the over-segmentation"},
-  {"minimum_patch_size", "double", "0.001", "in [0, 1]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
-   false, "a smaller patch (fraction of the mesh area) is merged into a neighbour"},
-  {"patch_split_size", "double", "0.0005", "in (0, 1]", Parameter_stage::OVER_SEGMENTATION, "over_segment()", true,
-   false, "a larger patch of smooth surface (fraction of the mesh area) is split"},
-  {"vote_temperature", "double", "1", "positive and finite", Parameter_stage::ASSIGNMENT, "assign_parts()", true,
-   false, "tau_v: the temperature of the patch vote, in voxels of the finest grid"},
-  {"boundary_smoothness", "double", "10", "non-negative and finite", Parameter_stage::ASSIGNMENT, "assign_parts()",
-   true, false, "the cost of a part boundary across smooth surface in the final labelling; 0: the paper's patch vote"},
-  {"keep_residual_patches", "bool", "false", "", Parameter_stage::ASSIGNMENT,
-   "decompose(), Part_decomposer::compose_parts()", true, true,
-   "true: the paper's residual patches, Freeze-dominant patches no primitive explains, are parts of their own"},
-  {"residual_tolerance", "double", "2", "non-negative and finite", Parameter_stage::ASSIGNMENT,
-   "decompose(), separate_residual_patches()", true, false,
-   "the mean distance to its primitive, in voxels of the finest grid, from which a patch is residual"},
-  {"merge_thin_sheets", "bool", "true", "", Parameter_stage::ASSIGNMENT,
-   "decompose(), Part_decomposer::compose_parts()", true, true,
-   "adjacent thin, flat parts that meet along smooth edges are merged (not in the paper)"},
-  {"maximum_merge_cost", "double", "0.003", "non-negative and finite", Parameter_stage::HIERARCHY, "decompose()", true,
-   false, "the parts go on merging in the part hierarchy while a merge costs less; 0: none"},
-  {"number_of_parts", "std::size_t", "none", "at least 1", Parameter_stage::HIERARCHY, "decompose()", true, false,
-   "exactly this many parts, a level of the part hierarchy (at most its leaves); none: the default granularity"},
-  {"part_hierarchy", "Part_hierarchy<GeomTraits>*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false,
-   false, "receives the part hierarchy"},
-  {"primitive_output_iterator", "an output iterator", "none", "", Parameter_stage::OUTPUT, "decompose()", false, false,
-   "receives the superquadric of each part"},
-  {"stage_timings", "Stage_timings*", "nullptr", "", Parameter_stage::OUTPUT, "decompose()", false, false,
-   "receives the time of each stage"},
-  {"verbose", "bool", "false", "", Parameter_stage::OUTPUT, "decompose()", true, false,
-   "print what each stage does on std::cerr"}};
+#define CGAL_PART_DECOMPOSITION_VALUE_ROW(NAME, TYPE, DEFAULT, STAGE, RANGE, MEANING)            \
+  {#NAME, #TYPE, internal::unparenthesized(#DEFAULT), "", RANGE, Parameter_stage::STAGE, Parameter_kind::VALUE, MEANING},
+  CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_VALUE_ROW, CGAL_PART_DECOMPOSITION_VALUE_ROW)
+#undef CGAL_PART_DECOMPOSITION_VALUE_ROW
+#define CGAL_PART_DECOMPOSITION_OBJECT_ROW(NAME, TYPE, DEFAULT, STAGE, MEANING)                  \
+  {#NAME, TYPE, DEFAULT, "", "", Parameter_stage::STAGE, Parameter_kind::OBJECT, MEANING},
+  CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_OBJECT_ROW)
+#undef CGAL_PART_DECOMPOSITION_OBJECT_ROW
+#define CGAL_PART_DECOMPOSITION_SWITCH_ROW(NAME, TYPE, DEFAULT, PAPER, STAGE, MEANING)           \
+  {#NAME, #TYPE, #DEFAULT, #PAPER, "", Parameter_stage::STAGE, Parameter_kind::METHOD_SWITCH, MEANING},
+  CGAL_PART_DECOMPOSITION_METHOD_SWITCHES(CGAL_PART_DECOMPOSITION_SWITCH_ROW)
+#undef CGAL_PART_DECOMPOSITION_SWITCH_ROW
+};
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-constexpr bool same_name(const char* a, const char* b)
-{
-  return *a == *b && (*a == '\0' || same_name(a + 1, b + 1));
-}
-
 // The entry of `name` in parameter_table, or nullptr.
-constexpr const Parameter_description* find_parameter(const char* name)
+constexpr const Parameter_description* find_parameter(std::string_view name)
 {
   for(const Parameter_description& p : parameter_table)
-    if(same_name(p.name, name)) return &p;
+    if(p.name == name) return &p;
   return nullptr;
+}
+
+// The rule of the range check of `name`, as the table states it.
+constexpr const char* range_rule(std::string_view name)
+{
+  return find_parameter(name) == nullptr ? "" : find_parameter(name)->range;
 }
 
 // The value of a parameter whose absence means something (`number_of_parts`, `normalization`);
@@ -475,38 +410,30 @@ std::optional<T> optional_parameter(const NamedParameters& np, Tag tag)
   }
 }
 
-// The rule of the range check of `name`, as the table states it.
-constexpr const char* range_rule(const char* name)
-{
-  return find_parameter(name) == nullptr ? "" : find_parameter(name)->range;
-}
-
 } // namespace internal
-
-// The table cannot miss a named parameter, nor list one that does not exist: it has one entry per
-// tag plus the three of CGAL and of the reader that it adds.
-#define CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY(NAME, ...)                                     \
-  static_assert(internal::find_parameter(#NAME) != nullptr, "parameter_table misses " #NAME);
-CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
-CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY)
-#undef CGAL_PART_DECOMPOSITION_CHECK_TABLE_ENTRY
-#define CGAL_PART_DECOMPOSITION_COUNT_TAG(NAME, ...) +1
-static_assert(std::size(parameter_table) ==
-                2 CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_COUNT_TAG)
-                  CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_COUNT_TAG),
-              "parameter_table lists a parameter that has no tag");
-#undef CGAL_PART_DECOMPOSITION_COUNT_TAG
-static_assert(internal::find_parameter("number_of_points_per_face") && internal::find_parameter("verbose"),
-              "parameter_table misses a parameter of CGAL");
 /// \endcond
 
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {
 #define CGAL_PART_DECOMPOSITION_DECLARE_TAG(NAME, ...) enum NAME##_t { NAME };
-CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_TAG)
+#define CGAL_PART_DECOMPOSITION_CGAL_TAG(...)
+CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_TAG, CGAL_PART_DECOMPOSITION_CGAL_TAG)
 CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_TAG)
+#undef CGAL_PART_DECOMPOSITION_CGAL_TAG
 #undef CGAL_PART_DECOMPOSITION_DECLARE_TAG
 } // namespace internal_np
+
+namespace internal {
+
+// The switches of the method given to a function, the package's method if none.
+template <typename NamedParameters>
+Method_variant method_switches(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::method_variant),
+                                            Method_variant());
+}
+
+} // namespace internal
 /// \endcond
 
 /*!
@@ -522,9 +449,8 @@ PD::decompose(mesh, part_map,
                                       PD::parameters::voxel_resolutions(std::vector<int>{32, 64})));
 \endcode
 
-Which parameter a function reads, its type, range and default are listed in that function's
-documentation; `decompose()` accepts them all and passes each to the stage that reads it. Every
-parameter, with its type, default, range, meaning and the functions that read it, is in
+`decompose()` accepts them all and passes each to the stage that reads it; each function of the
+package says which it reads. Every parameter, with its type, default, range and meaning, is in
 `parameter_table`, from which the reference page \ref PD_ParameterTable is made.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
@@ -541,8 +467,10 @@ namespace parameters {
   {                                                                                           \
     return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t);                      \
   }
-CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
+#define CGAL_PART_DECOMPOSITION_CGAL_FUNCTION(...)
+CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION, CGAL_PART_DECOMPOSITION_CGAL_FUNCTION)
 CGAL_PART_DECOMPOSITION_OBJECT_PARAMETERS(CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION)
+#undef CGAL_PART_DECOMPOSITION_CGAL_FUNCTION
 #undef CGAL_PART_DECOMPOSITION_DECLARE_FUNCTION
 
 /// \endcond

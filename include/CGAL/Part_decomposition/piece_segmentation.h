@@ -28,7 +28,7 @@ namespace internal {
 // The package parameters of `segment_pieces()` and of the part composition that uses it.
 struct Piece_parameters
 {
-  bool use_pieces = defaults::use_pieces;
+  bool use_pieces = Method_variant().use_pieces;
   double crease_angle = defaults::crease_angle;
   double minimum_part_area = defaults::minimum_part_area;
 };
@@ -40,7 +40,7 @@ Piece_parameters read_piece_parameters(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   namespace inp = Part_decomposition::internal_np;
   Piece_parameters p;
-  p.use_pieces = choose_parameter(get_parameter(np, inp::use_pieces), p.use_pieces);
+  p.use_pieces = internal::method_switches(np).use_pieces;
   p.crease_angle = choose_parameter(get_parameter(np, inp::crease_angle), p.crease_angle);
   p.minimum_part_area = choose_parameter(get_parameter(np, inp::minimum_part_area), p.minimum_part_area);
   check_parameter(p.crease_angle > 0. && p.crease_angle <= 180., "crease_angle");

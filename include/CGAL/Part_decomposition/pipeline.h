@@ -257,7 +257,7 @@ void decompose_once(const TriangleMesh& tm, const NamedParameters& np, Stage_res
 }
 
 // `decompose()` on the pack of `pipeline_parameters()` (every value present, with the types of
-// `CGAL_PART_DECOMPOSITION_VALUE_PARAMETERS`): the parts per face index, their superquadrics and
+// `CGAL_PART_DECOMPOSITION_PARAMETERS`): the parts per face index, their superquadrics and
 // the time of each stage but the total. The compiled library holds it for the common mesh types.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
 void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np,

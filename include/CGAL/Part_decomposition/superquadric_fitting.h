@@ -41,25 +41,25 @@ namespace internal {
 struct Fitting_parameters
 {
   double flow_zone_tolerance = defaults::flow_zone_tolerance;
-  std::vector<double> trust_region_scales = defaults::trust_region_scales();
+  std::vector<double> trust_region_scales{defaults::trust_region_scales.begin(), defaults::trust_region_scales.end()};
   double body_seed_threshold = defaults::body_seed_threshold;
   double minimum_body_volume = defaults::minimum_body_volume;
   double minimum_surface_volume = defaults::minimum_surface_volume;
   double exterior_penalty = defaults::exterior_penalty;
   double coverage_target = defaults::coverage_target;
   double roi_radius = defaults::roi_radius;
-  Interior_weight_mode interior_weight_mode = defaults::interior_weight_mode;
+  Interior_weight_mode interior_weight_mode = Method_variant().interior_weight_mode;
   std::size_t maximum_number_of_primitives = defaults::maximum_number_of_primitives;
-  bool use_freeze_zone = defaults::use_freeze_zone;
-  bool use_tsdf_guidance = defaults::use_tsdf_guidance;
-  bool use_body_seeds = defaults::use_body_seeds;
+  bool use_freeze_zone = Method_variant().use_freeze_zone;
+  bool use_tsdf_guidance = Method_variant().use_tsdf_guidance;
+  bool use_body_seeds = Method_variant().use_body_seeds;
   int fitting_resolution_cap = defaults::fitting_resolution_cap;
-  bool use_exterior_band_samples = defaults::use_exterior_band_samples;
-  bool use_reachable_regions = defaults::use_reachable_regions;
-  bool use_seed_exclusion = defaults::use_seed_exclusion;
+  bool use_exterior_band_samples = Method_variant().use_exterior_band_samples;
+  bool use_reachable_regions = Method_variant().use_reachable_regions;
+  bool use_seed_exclusion = Method_variant().use_seed_exclusion;
   int maximum_solver_evaluations = defaults::maximum_solver_evaluations;
   std::size_t maximum_rejections_in_a_row = defaults::maximum_rejections_in_a_row;
-  bool merge_primitives = defaults::merge_primitives;
+  bool merge_primitives = Method_variant().merge_primitives;
   double minimum_merge_iou = defaults::minimum_merge_iou;
   bool verbose = false;
 };
@@ -71,11 +71,12 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Fitting_parameters p;
+  const Method_variant switches = internal::method_switches(np);
   const Fitting_zone_parameters zone_parameters = read_fitting_zone_parameters(np);
   p.flow_zone_tolerance = zone_parameters.flow_zone_tolerance;
   p.use_freeze_zone = zone_parameters.use_freeze_zone;
-  p.trust_region_scales =
-    choose_parameter(get_parameter(np, internal_np::trust_region_scales), defaults::trust_region_scales());
+  const auto scales = choose_parameter(get_parameter(np, internal_np::trust_region_scales), defaults::trust_region_scales);
+  p.trust_region_scales.assign(scales.begin(), scales.end());
   p.body_seed_threshold = choose_parameter(get_parameter(np, internal_np::body_seed_threshold), defaults::body_seed_threshold);
   p.minimum_body_volume = choose_parameter(get_parameter(np, internal_np::minimum_body_volume), defaults::minimum_body_volume);
   p.minimum_surface_volume =
@@ -83,28 +84,25 @@ Fitting_parameters read_fitting_parameters(const NamedParameters& np)
   p.exterior_penalty = choose_parameter(get_parameter(np, internal_np::exterior_penalty), defaults::exterior_penalty);
   p.coverage_target = choose_parameter(get_parameter(np, internal_np::coverage_target), defaults::coverage_target);
   p.roi_radius = choose_parameter(get_parameter(np, internal_np::roi_radius), defaults::roi_radius);
-  p.interior_weight_mode =
-    choose_parameter(get_parameter(np, internal_np::interior_weight_mode), defaults::interior_weight_mode);
+  p.interior_weight_mode = switches.interior_weight_mode;
   p.maximum_number_of_primitives = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_primitives), defaults::maximum_number_of_primitives),
     1, "maximum_number_of_primitives");
-  p.use_tsdf_guidance = choose_parameter(get_parameter(np, internal_np::use_tsdf_guidance), defaults::use_tsdf_guidance);
-  p.use_body_seeds = choose_parameter(get_parameter(np, internal_np::use_body_seeds), defaults::use_body_seeds);
+  p.use_tsdf_guidance = switches.use_tsdf_guidance;
+  p.use_body_seeds = switches.use_body_seeds;
   p.fitting_resolution_cap = checked_integer<int>(
     choose_parameter(get_parameter(np, internal_np::fitting_resolution_cap), defaults::fitting_resolution_cap),
     0, "fitting_resolution_cap");
-  p.use_exterior_band_samples =
-    choose_parameter(get_parameter(np, internal_np::use_exterior_band_samples), defaults::use_exterior_band_samples);
-  p.use_reachable_regions =
-    choose_parameter(get_parameter(np, internal_np::use_reachable_regions), defaults::use_reachable_regions);
-  p.use_seed_exclusion = choose_parameter(get_parameter(np, internal_np::use_seed_exclusion), defaults::use_seed_exclusion);
+  p.use_exterior_band_samples = switches.use_exterior_band_samples;
+  p.use_reachable_regions = switches.use_reachable_regions;
+  p.use_seed_exclusion = switches.use_seed_exclusion;
   p.maximum_solver_evaluations = checked_integer<int>(
     choose_parameter(get_parameter(np, internal_np::maximum_solver_evaluations), defaults::maximum_solver_evaluations),
     1, "maximum_solver_evaluations");
   p.maximum_rejections_in_a_row = checked_integer<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::maximum_rejections_in_a_row), defaults::maximum_rejections_in_a_row),
     0, "maximum_rejections_in_a_row");
-  p.merge_primitives = choose_parameter(get_parameter(np, internal_np::merge_primitives), defaults::merge_primitives);
+  p.merge_primitives = switches.merge_primitives;
   p.minimum_merge_iou = choose_parameter(get_parameter(np, internal_np::minimum_merge_iou), defaults::minimum_merge_iou);
   p.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), defaults::verbose);
 

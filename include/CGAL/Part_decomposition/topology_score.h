@@ -165,7 +165,7 @@ topology_score_fields(const Triangle_arrays& mesh, const std::vector<double>& c,
   CGAL_precondition(!resolutions.empty());
   return topology_score_fields<ConcurrencyTag>(
     mesh, c, phi, resolutions, *std::max_element(resolutions.begin(), resolutions.end()), normalization,
-    Topology_score_parameters{barycentric, weights, alpha, defaults::use_density});
+    Topology_score_parameters{barycentric, weights, alpha, Method_variant().use_density});
 }
 
 } // namespace internal
@@ -279,7 +279,7 @@ Topology_score_parameters read_topology_score_parameters(const NamedParameters& 
   p.cue_weights = to_cue_weights(choose_parameter(get_parameter(np, internal_np::cue_weights), defaults::cue_weights));
   p.freeze_ratio = double(choose_parameter(get_parameter(np, internal_np::freeze_ratio), defaults::freeze_ratio));
   check_freeze_ratio(p.freeze_ratio);
-  p.use_density = bool(choose_parameter(get_parameter(np, internal_np::use_density), defaults::use_density));
+  p.use_density = internal::method_switches(np).use_density;
   return p;
 }
 

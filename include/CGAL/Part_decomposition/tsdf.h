@@ -63,7 +63,7 @@ Tsdf_parameters read_tsdf_parameters(const NamedParameters& np)
                   "grid_resolution");
   // never coarser than the finest voxel resolution, the unit of the method's lengths
   p.grid_resolution = (std::max)(p.grid_resolution, p.resolution);
-  p.adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_grid), defaults::adaptive_grid);
+  p.adaptive = internal::method_switches(np).adaptive_grid;
   p.truncation_voxels = double(choose_parameter(get_parameter(np, internal_np::tsdf_truncation), defaults::tsdf_truncation));
   check_parameter(p.truncation_voxels > 0. && p.truncation_voxels <= 4. * p.resolution, "tsdf_truncation");
   p.sign_method = choose_parameter(get_parameter(np, internal_np::tsdf_sign_method), defaults::tsdf_sign_method);
