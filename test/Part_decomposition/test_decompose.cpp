@@ -353,6 +353,33 @@ TEST_CASE("the stage functions in their documented order give the parts of decom
   check_stages_give_decompose(dumbbell, true, false, switches(&Variant::adaptive_grid, false));
 }
 
+TEST_CASE("a parallel Part_decomposer gives the parts of decompose() and times its stages", "[decompose][stages][data]")
+{
+  // decompose() runs through the decomposer's stages: the same parts, the over-segmentation beside
+  // the volumetric stages
+  Mesh m;
+  test_shapes::read_shipped_shape("dumbbell", m);
+  std::vector<std::size_t> expected(num_faces(m)), parts(num_faces(m));
+  PD::decompose<CGAL::Parallel_tag>(m, CGAL::make_property_map(expected), PDP::maximum_merge_cost(0.));
+  PD::Part_decomposer<Mesh> pd(m);
+  const std::size_t K = pd.compose_parts<CGAL::Parallel_tag>(CGAL::make_property_map(parts));
+  CHECK(parts == expected);
+  CHECK(test_shapes::count_if_numbered_by_first_face(parts) == K);
+  const PD::Stage_timings& t = pd.stage_timings();
+  CHECK(t.overlapping);
+  for(double seconds : {t.pieces, t.prior, t.tsdf, t.fitting, t.fitting_zones, t.over_segmentation, t.assignment})
+    CHECK(seconds > 0.);
+  CHECK(t.fitting >= t.fitting_zones);
+  CHECK(t.hierarchy == 0.);
+  CHECK(t.total == 0.);
+  pd.build_hierarchy();
+  CHECK(pd.stage_timings().hierarchy > 0.);
+  // a stage computed again adds its time
+  const double prior = t.prior;
+  pd.compute_prior();
+  CHECK(pd.stage_timings().prior > prior);
+}
+
 TEST_CASE("the thin-sheet merge is a step of Part_decomposer::compose_parts()", "[decompose][sheet_merge][data]")
 {
   // The table: its top is a thin slab.

@@ -8,20 +8,111 @@
 #ifndef CGAL_PART_DECOMPOSITION_PART_DECOMPOSER_H
 #define CGAL_PART_DECOMPOSITION_PART_DECOMPOSER_H
 
-#include <CGAL/Part_decomposition/pipeline.h>
+#include <CGAL/Part_decomposition/Superquadric.h>
+#include <CGAL/Part_decomposition/fitting_zones.h>
+#include <CGAL/Part_decomposition/flow_freeze_prior.h>
+#include <CGAL/Part_decomposition/input_validation.h>
+#include <CGAL/Part_decomposition/normalization.h>
+#include <CGAL/Part_decomposition/over_segmentation.h>
+#include <CGAL/Part_decomposition/part_composition.h>
+#include <CGAL/Part_decomposition/part_hierarchy.h>
+#include <CGAL/Part_decomposition/parameters.h>
+#include <CGAL/Part_decomposition/stage_results.h>
+#include <CGAL/Part_decomposition/piece_segmentation.h>
+#include <CGAL/Part_decomposition/primitive_assignment.h>
+#include <CGAL/Part_decomposition/superquadric_fitting.h>
+#include <CGAL/Part_decomposition/thin_sheet_merging.h>
+#include <CGAL/Part_decomposition/tsdf.h>
+#include <CGAL/Part_decomposition/internal/parts/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+
 
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Part_decomposition {
+
+/// \cond SKIP_IN_MANUAL
+// What the stages of `Part_decomposer` share.
+namespace internal {
+
+// Reads (and so checks) the parameters of every stage, also of those a mesh may not need: a
+// parameter out of its range is an error whatever the mesh.
+template <typename NamedParameters>
+void check_stage_parameters(const NamedParameters& np)
+{
+  read_prior_parameters(np);
+  read_tsdf_parameters(np);
+  read_fitting_zone_parameters(np);
+  read_fitting_parameters(np);
+  read_over_segmentation_parameters(np);
+  read_assignment_parameters(np);
+  read_sheet_merging_parameters(np);
+  read_piece_parameters(np);
+  read_hierarchy_parameters(np);
+}
+
+inline bool any_of_flags(const std::vector<std::uint8_t>& flags)
+{
+  return std::find(flags.begin(), flags.end(), std::uint8_t(1)) != flags.end();
+}
+
+// Per face index, whether its piece is flagged: the faces whose thin parts the grid refines are
+// those of the pieces the volume stages may decompose.
+inline std::vector<std::uint8_t> faces_of_pieces(const Piece_segmentation& pieces, const std::vector<std::uint8_t>& flags)
+{
+  std::vector<std::uint8_t> out(pieces.piece.size(), 0);
+  for(std::size_t i = 0; i < out.size(); ++i) out[i] = flags[pieces.piece[i]];
+  return out;
+}
+
+// The results of the stages of one decomposition, as the stage functions return them.
+template <typename GeomTraits>
+struct Stage_results
+{
+  Piece_segmentation pieces;
+  std::vector<std::uint8_t> volumetric_pieces; // per piece; empty before the distance field
+  Hierarchical_prior prior;
+  Truncated_signed_distance_field tsdf;
+  Fitting_zones zones;
+  Superquadric_fitting_result<GeomTraits> fitting;
+  Volumetric_parts volumetric;
+  Composed_parts<GeomTraits> composed;
+  Part_hierarchy<GeomTraits> hierarchy;
+};
+
+// The parts of the primitives (assignment, residual patches, thin-sheet merge) and their
+// composition with the pieces.
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
+void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fitted, Stage_results<GT>& s)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  Volumetric_parts& v = s.volumetric;
+  if(fitted)
+  {
+    v.parts.assign(num_faces(tm), 0);
+    const auto part_map = boost::make_iterator_property_map(v.parts.begin(), fim);
+    v.part_to_primitive = assign_parts<ConcurrencyTag>(
+      tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.tsdf, part_map, np);
+    if(read_assignment_parameters(np).keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
+    if(read_sheet_merging_parameters(np).merge_thin_sheets)
+      merge_thin_sheet_parts<ConcurrencyTag>(tm, part_map, v.part_to_primitive, s.fitting, s.tsdf, np);
+  }
+  s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);
+}
+
+} // namespace internal
+/// \endcond
 
 /*!
 \ingroup PkgPartDecompositionRef
@@ -36,7 +127,9 @@ map, face index map and normalization of the decomposer are added.
 A stage computes the earlier stages it needs that are missing, with its own named parameters, and
 drops the results that depended on an earlier result it replaces: the stages may be called in
 any order, and `compose_parts()` alone gives the parts of `decompose()` without the hierarchy's
-merges. The results of a stage not computed yet are empty. A named parameter out of its range,
+merges: `decompose()` runs its stages through a decomposer, then cuts the part hierarchy. With
+`CGAL::Parallel_tag`, `compose_parts()` runs the over-segmentation beside the volumetric stages
+when both are missing. The results of a stage not computed yet are empty. A named parameter out of its range,
 and a `normalization` or `normalization_margin` other than the decomposer's, throw
 `Invalid_input` (`INVALID_PARAMETER`).
 
@@ -127,7 +220,8 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Piece_segmentation& segment_pieces(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np));
+    internal::add_seconds(m_timings.pieces,
+                          [&] { m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np)); });
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
     computed(PIECES);
@@ -146,7 +240,9 @@ public:
     if(!internal::read_piece_parameters(np).use_pieces) return true;
     if(!has(PIECES)) segment_pieces(np);
     if(has(DISTANCE_FIELD)) return internal::any_of_flags(volumetric_pieces(np));
-    return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
+    return internal::add_seconds(m_timings.pieces, [&] {
+      return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
+    });
   }
 
   /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`; the distance
@@ -155,7 +251,7 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   const Hierarchical_prior& compute_prior(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np));
+    internal::add_seconds(m_timings.prior, [&] { m_s.prior = compute_flow_freeze_prior<ConcurrencyTag>(m_tm, with_mesh(np)); });
     computed(PRIOR);
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
@@ -178,8 +274,10 @@ public:
       thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
                                                                 m_tm, m_segmented, with_mesh(np)));
     }
-    m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
-                                                                      use_pieces ? &thin_faces : nullptr);
+    internal::add_seconds(m_timings.tsdf, [&] {
+      m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
+                                                                        use_pieces ? &thin_faces : nullptr);
+    });
     computed(DISTANCE_FIELD);
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
@@ -197,8 +295,14 @@ public:
     if(!has(PRIOR)) compute_prior<ConcurrencyTag>(np);
     if(!has(DISTANCE_FIELD)) compute_distance_field<ConcurrencyTag>(np);
     const int cap = internal::read_fitting_parameters(np).fitting_resolution_cap;
-    m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
-      m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
+    double seconds = 0.;
+    internal::add_seconds(seconds, [&] {
+      m_s.zones = Part_decomposition::compute_fitting_zones<ConcurrencyTag>(
+        m_s.prior, m_s.tsdf, fitting_resolutions(m_s.prior.resolutions, cap), np);
+    });
+    // the fitting's time includes its zones'
+    m_timings.fitting_zones += seconds;
+    m_timings.fitting += seconds;
     computed(ZONES);
     return m_s.zones;
   }
@@ -213,7 +317,9 @@ public:
   {
     check_frame_parameters(np);
     if(!has(ZONES)) compute_fitting_zones<ConcurrencyTag>(np);
-    m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
+    internal::add_seconds(m_timings.fitting, [&] {
+      m_s.fitting = fit_superquadrics<ConcurrencyTag, Geom_traits>(m_s.prior, m_s.tsdf, m_s.zones, np);
+    });
     computed(FITTING);
     return m_s.fitting;
   }
@@ -224,9 +330,7 @@ public:
             typename NamedParameters = CGAL::parameters::Default_named_parameters>
   std::size_t over_segment(const NamedParameters& np = CGAL::parameters::default_values())
   {
-    m_s.volumetric.patches.assign(num_faces(m_tm), 0);
-    const std::size_t count = Part_decomposition::over_segment<ConcurrencyTag>(
-      m_tm, boost::make_iterator_property_map(m_s.volumetric.patches.begin(), m_fim), with_mesh(np));
+    const std::size_t count = patches_into<ConcurrencyTag>(m_s.volumetric.patches, np);
     computed(PATCHES);
     return count;
   }
@@ -249,20 +353,25 @@ public:
     const auto mnp = with_mesh(np);
     m_switches = internal::method_switches(np);
     bool fitted = needs_volumetric_stages(np);
-    // the distance field may show that no piece bounds a volume
-    if(fitted && m_switches.use_pieces && !has(DISTANCE_FIELD))
+    if(fitted && !has(FITTING) && !has(PATCHES))
     {
-      compute_distance_field<ConcurrencyTag>(np);
-      fitted = needs_volumetric_stages(np);
+      // The fitting's own loops are short (one primitive at a time), so its sequential part is the
+      // longest of the stages: the over-segmentation runs next to the volumetric stages.
+      std::vector<std::size_t> patches;
+      m_timings.overlapping = m_timings.overlapping || internal::is_parallel_tag<ConcurrencyTag>();
+      internal::run_side_by_side<ConcurrencyTag>([&] { fitted = fit_if_volumetric<ConcurrencyTag>(np); },
+                                                 [&] { patches_into<ConcurrencyTag>(patches, np); });
+      m_s.volumetric.patches = std::move(patches);
+      computed(PATCHES);
     }
-    if(fitted)
+    else if(fitted)
     {
-      if(!has(FITTING)) fit_primitives<ConcurrencyTag>(np);
-      if(!has(PATCHES)) over_segment<ConcurrencyTag>(np);
+      fitted = has(FITTING) || fit_if_volumetric<ConcurrencyTag>(np);
+      if(fitted && !has(PATCHES)) over_segment<ConcurrencyTag>(np);
     }
     m_s.volumetric.parts.clear();
     m_s.volumetric.residual_faces.clear();
-    internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s);
+    internal::add_seconds(m_timings.assignment, [&] { internal::run_part_stages<ConcurrencyTag>(m_tm, mnp, fitted, m_s); });
     computed(PARTS);
     internal::put_face_values(m_tm, m_fim, m_s.composed.parts, face_part_map);
     return m_s.composed.number_of_parts();
@@ -280,9 +389,11 @@ public:
   {
     internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
     if(!has(PARTS)) compose_parts(boost::dummy_property_map());
-    m_s.hierarchy = build_part_hierarchy(
-      m_tm, m_s.pieces, m_s.composed,
-      with_mesh(parameters::combine(parameters::method_variant(m_switches), parameters::maximum_merge_cost(maximum_merge_cost))));
+    internal::add_seconds(m_timings.hierarchy, [&] {
+      m_s.hierarchy = build_part_hierarchy(m_tm, m_s.pieces, m_s.composed,
+                                           with_mesh(parameters::combine(parameters::method_variant(m_switches),
+                                                                         parameters::maximum_merge_cost(maximum_merge_cost))));
+    });
     computed(HIERARCHY);
     return m_s.hierarchy;
   }
@@ -344,6 +455,10 @@ public:
   const std::vector<std::uint8_t>& residual_parts() const { return m_s.composed.residual_parts; }
   /// the part hierarchy.
   const Part_hierarchy<Geom_traits>& hierarchy() const { return m_s.hierarchy; }
+  /// the seconds spent in each stage by this decomposer, summed over its calls (`total` is 0; with
+  /// a parallel `compose_parts()`, the over-segmentation runs beside the volumetric stages and
+  /// `overlapping` is `true`).
+  const Stage_timings& stage_timings() const { return m_timings; }
   /// @}
 
 private:
@@ -369,6 +484,32 @@ private:
       "normalization", "the decomposer's (same center and scale)");
     internal::check_parameter(choose_parameter(get_parameter(np, internal_np::normalization_margin), m_margin) == m_margin,
                               "normalization_margin", "the decomposer's (given to its constructor)");
+  }
+
+  // The over-segmentation into `patches` (indexed by the face index map), timed; the stage's
+  // bookkeeping is left to the caller, so that it may run beside the other stages.
+  template <typename ConcurrencyTag, typename NamedParameters>
+  std::size_t patches_into(std::vector<std::size_t>& patches, const NamedParameters& np)
+  {
+    return internal::add_seconds(m_timings.over_segmentation, [&] {
+      patches.assign(num_faces(m_tm), 0);
+      return Part_decomposition::over_segment<ConcurrencyTag>(
+        m_tm, boost::make_iterator_property_map(patches.begin(), m_fim), with_mesh(np));
+    });
+  }
+
+  // The primitives if the volumetric stages decompose a piece (always without pieces): the distance
+  // field may show that no piece bounds a volume. Returns whether they were fitted.
+  template <typename ConcurrencyTag, typename NamedParameters>
+  bool fit_if_volumetric(const NamedParameters& np)
+  {
+    if(m_switches.use_pieces && !has(DISTANCE_FIELD))
+    {
+      compute_distance_field<ConcurrencyTag>(np);
+      if(!needs_volumetric_stages(np)) return false;
+    }
+    fit_primitives<ConcurrencyTag>(np);
+    return true;
   }
 
   // The volumetric pieces, computed once per pieces and distance field (they turn the pieces).
@@ -420,6 +561,7 @@ private:
   Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
   internal::Stage_results<Geom_traits> m_s;
   Method_variant m_switches; // of the last compose_parts(), for the hierarchy
+  Stage_timings m_timings;
   // which results are up to date; the stages compute the missing ones
   unsigned int m_computed = 0; // the stages whose results are current, one bit per Stage
 };

@@ -366,6 +366,26 @@ struct Part_hierarchy
   }
 };
 
+/*!
+\ingroup PkgPartDecompositionRef
+Wall-clock seconds spent in each stage of `decompose()`.
+*/
+struct Stage_timings
+{
+  double pieces = 0.;            ///< pieces and their regions between concave creases
+  double prior = 0.;             ///< geometric cues, topology scores and Flow/Freeze fusion
+  double tsdf = 0.;              ///< the adaptive grid and the truncated signed distance field on it
+  double fitting = 0.;           ///< fitting zones and superquadric fitting
+  double fitting_zones = 0.;     ///< of which the fitting zones
+  double over_segmentation = 0.; ///< curvature-aware over-segmentation
+  double assignment = 0.;        ///< assignment, thin-sheet merge and composition with the pieces
+  double hierarchy = 0.;         ///< the part hierarchy and its cut (0 if it was not built)
+  double total = 0.;             ///< the whole call, input checks included
+  /// whether some stages ran at the same time (parallel `decompose()`): then the stage times
+  /// overlap and their sum exceeds `total`.
+  bool overlapping = false;
+};
+
 } // namespace Part_decomposition
 } // namespace CGAL
 
