@@ -230,38 +230,17 @@ reads what another writes.
 components
 \param face_part_map receives the part id of each face
 \param np an optional sequence of named parameters (package parameters are chained with
-`parameters::combine()`): those listed below, which `decompose()` reads itself, and every parameter
-of the stage functions, passed to the stage that reads it; each is documented once, with its type,
-default, range and meaning, in \ref PD_ParameterTable (and with the stage function that reads it)
+`parameters::combine()`): `vertex_point_map`, `face_index_map` and `geom_traits`
+(\ref PD_MeshParameters), those listed below, which have a meaning of their own here, and every
+other parameter of \ref PD_ParameterTable, passed to the stage that reads it (`verbose` to
+`compute_tsdf()` and `fit_superquadrics()`); each is documented once, with its type, default, range
+and meaning, in \ref PD_ParameterTable
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a model of `PartDecompositionTraits`}
-    \cgalParamDefault{the kernel of the point type of the vertex point map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
   \cgalParamNBegin{normalization}
     \cgalParamDescription{the normalization of the mesh into the unit cube; it must be the one `compute_normalization()` computes from `normalization_margin`}
     \cgalParamType{`Normalization`}
     \cgalParamDefault{computed by `compute_normalization()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{primitive_output_iterator}
     \cgalParamDescription{receives, for each part in increasing id, its superquadric in input

@@ -158,7 +158,7 @@ enum class Interior_weight_mode
 /*!
 \ingroup PkgPartDecompositionRef
 The default value of each named parameter of the package: the paper's Table A.1 where
-it gives one, the choices of this implementation (documented with the functions that read them)
+it gives one, the choices of this implementation (explained in the user manual, \ref PD_Parameters)
 elsewhere. Every function of the package takes its defaults from here. The namespace is made from
 `parameter_table` (by `doc/Part_decomposition/tools/parameter_table.py`), a list as a function
 that returns it.
@@ -522,10 +522,10 @@ PD::decompose(mesh, part_map,
                                       PD::parameters::voxel_resolutions(std::vector<int>{32, 64})));
 \endcode
 
-Which parameter a function reads, its type, range and default are listed in that function's
-documentation; `decompose()` accepts them all and passes each to the stage that reads it. Every
-parameter, with its type, default, range, meaning and the functions that read it, is in
-`parameter_table`, from which the reference page \ref PD_ParameterTable is made.
+Each function lists the parameters it reads; `decompose()` accepts them all and passes each to the
+stage that reads it. Every parameter, with its type, default, range, meaning and the functions that
+read it, is in `parameter_table`, from which the reference page \ref PD_ParameterTable is made;
+\cgal's parameters of the mesh are described in \ref PD_MeshParameters.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
 \cgal's own parameters keep their names: `vertex_point_map`, `vertex_index_map`,

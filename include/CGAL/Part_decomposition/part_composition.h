@@ -316,8 +316,8 @@ over-segmentation are worth computing only if one piece is splittable (or with `
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the result is the same
 \param tm the mesh
 \param pieces the pieces of `tm`, as `segment_pieces()` returned them
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and
-`minimum_part_area`, as for `decompose()`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `minimum_part_area` (\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
@@ -403,7 +403,8 @@ named parameter `keep_residual_patches` is `true`.
 \param parts the patches, parts and primitives of `over_segment()` and `assign_parts()`
 \param prior the prior of `tm`
 \param fitting the primitives `assign_parts()` assigned
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and `residual_tolerance`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `residual_tolerance` (\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range or `prior` and
 `fitting` have different normalizations.
 */
@@ -454,8 +455,8 @@ superquadric (see `Composed_parts::part_primitives`).
 ignored if `parts.parts` is empty
 \param parts the parts of the volumetric stages; `parts.parts` is empty if they did not run
 \param fitting the primitives of `parts.part_to_primitive` (unused if `parts.parts` is empty)
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`, `use_pieces`
-and `minimum_part_area`, as for `decompose()`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters), `use_pieces` and `minimum_part_area` (\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range, if a vector
 of `parts` or `pieces` indexed by face does not have one value per face, if `volumetric` does not
 have one flag per piece while `parts.parts` is not empty, or if `parts.parts` is empty with
@@ -531,8 +532,9 @@ superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_
 \param tm the mesh
 \param pieces the pieces given to `compose_parts()` (ignored with `use_pieces(false)`)
 \param parts the result of `compose_parts()`
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and `use_pieces`
-given to `compose_parts()`, and `maximum_merge_cost` (see `build_part_hierarchy(tm, face_part_map, np)`)
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `use_pieces` given to `compose_parts()`, and `maximum_merge_cost`
+(\ref PD_ParameterTable; see `build_part_hierarchy(tm, face_part_map, np)`)
 */
 template <typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
