@@ -84,16 +84,79 @@ def test_every_parameter_is_a_python_keyword_with_the_same_default(table, help_o
     assert set(pd.DEFAULTS) - {row["name"] for row in values} == {"threads"}
 
 
-def test_decompose_documents_its_own_parameters_and_refers_to_the_table(table):
-    """Each parameter is documented once, in the table; decompose() documents those it reads itself."""
-    with open(os.path.join(ROOT, "include", "CGAL", "Part_decomposition", "decompose.h"), encoding="utf-8") as f:
-        reference = f.read()
-    assert "\\ref PD_ParameterTable" in reference
-    own = {"normalization", "verbose", "primitive_output_iterator", "number_of_parts", "maximum_merge_cost",
-           "part_hierarchy", "stage_timings"}
-    assert own <= {row["name"] for row in table}
-    for name in own:
+HEADERS = os.path.join(ROOT, "include", "CGAL", "Part_decomposition")
+MESH_PARAMETERS = ("vertex_point_map", "vertex_index_map", "face_index_map", "geom_traits")
+
+
+def read(*path):
+    with open(os.path.join(*path), encoding="utf-8") as f:
+        return f.read()
+
+
+def headers():
+    """path -> text of every public header of the package (internal/ excluded)."""
+    out = {}
+    for directory, subdirectories, files in os.walk(HEADERS):
+        subdirectories[:] = [d for d in subdirectories if d != "internal"]
+        for name in files:
+            if name.endswith(".h"):
+                out[os.path.join(directory, name)] = read(directory, name)
+    return out
+
+
+def documented_functions():
+    """function name -> the doc comments (/*! */) of the functions and members of that name."""
+    docs = {}
+    for text in headers().values():
+        for m in re.finditer(r"/\*!((?:(?!\*/).)*)\*/\s*(?:template\s*<[^{;]*?>\s*)?[^;{(]*?\b(\w+)\s*\(", text, re.S):
+            docs.setdefault(m.group(2), []).append(m.group(1))
+    return docs
+
+
+def readers_of_the_table(table):
+    """parameter -> the stage function that reads it, named in its stage's title ("prior
+    (compute_flow_freeze_prior())"); a switch of the method is read through `method_variant`."""
+    readers = {}
+    for row in table:
+        m = re.search(r"\((\w+)\(\)\)", row["stage"])
+        if m and row["kind"] != "object":
+            readers[row["name"]] = (m.group(1), "method_variant" if row["kind"] == "switch" else row["name"])
+    assert len(readers) >= 40
+    return readers
+
+
+def test_each_parameter_is_documented_once():
+    """One doc block per parameter at most in the headers: the table page and its section on the mesh
+    parameters document them; a function keeps a block only for a meaning of its own."""
+    blocks = [name for text in headers().values() for name in re.findall(r"\\cgalParamNBegin\{(\w+)\}", text)]
+    repeated = sorted({name for name in blocks if blocks.count(name) > 1})
+    assert not repeated, "documented more than once in the headers: %s" % ", ".join(repeated)
+    page = read(ROOT, "doc", "Part_decomposition", "parameter_table.txt")
+    mesh_section = page[page.index("\\section PD_MeshParameters"):]
+    for name in MESH_PARAMETERS:
+        assert "\\cgalParamNBegin{%s}" % name in mesh_section, name
+    # decompose() documents the parameters that mean something of their own there, and refers to the table
+    reference = read(HEADERS, "decompose.h")
+    assert "\\ref PD_ParameterTable" in reference and "\\ref PD_MeshParameters" in reference
+    for name in ("normalization", "primitive_output_iterator", "number_of_parts", "maximum_merge_cost",
+                 "part_hierarchy", "stage_timings"):
         assert "\\cgalParamNBegin{%s}" % name in reference, name
+
+
+def test_each_function_names_the_parameters_it_reads(table):
+    """The doc of the stage function of every parameter names it (a switch: `method_variant`;
+    decompose() accepts them all and refers to the table), and refers to the page that documents it."""
+    docs = documented_functions()
+    checked = 0
+    for name, (function, named) in readers_of_the_table(table).items():
+        if function == "decompose":
+            continue
+        assert function in docs, "no documented function %s() (the stage of %s)" % (function, name)
+        assert any("`%s`" % named in doc or "`%s(" % named in doc or "\\cgalParamNBegin{%s}" % named in doc
+                   for doc in docs[function]), "the doc of %s() does not name %s" % (function, named)
+        assert any("\\ref PD_ParameterTable" in doc or "\\ref PD_MeshParameters" in doc for doc in docs[function]), function
+        checked += 1
+    assert checked >= 40
 
 
 def violating_value(row):

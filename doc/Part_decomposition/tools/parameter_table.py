@@ -43,6 +43,11 @@ def cpp_default(row, text):
     return text
 
 
+def cell(text):
+    """Text in a cell of a Markdown table: a bar would end the cell."""
+    return text.replace("|", "\\|")
+
+
 def stage_heading(stage):
     return "| <b>%s</b> | | | | |" % (stage[0].upper() + stage[1:])
 
@@ -61,7 +66,7 @@ def make_table(rows):
             stage = row["stage"]
             out.append(stage_heading(stage))
         out.append("| `%s` | `%s` | %s | %s | %s |" % (row["name"], row["type"], cpp_default(row, row["default"]),
-                                                     row["range"], row["meaning"]))
+                                                     row["range"], cell(row["meaning"])))
     return "\n".join(out) + "\n"
 
 
@@ -72,7 +77,7 @@ def make_switches(rows):
     for row in rows:
         if row["kind"] == "switch":
             out.append("| `%s` | `%s` | %s | %s | %s |" % (row["name"], row["type"], cpp_default(row, row["default"]),
-                                                         cpp_default(row, row["paper"]), row["meaning"]))
+                                                         cpp_default(row, row["paper"]), cell(row["meaning"])))
     return "\n".join(out) + "\n"
 
 

@@ -230,7 +230,7 @@ public:
   }
 
   /// whether the parts of `compose_parts()` with the named parameters `np` need the volumetric
-  /// stages (prior, distance field, fit, over-segmentation): with `use_pieces(false)`, or if a
+  /// stages (prior, distance field, fit, over-segmentation): with `use_pieces = false`, or if a
   /// piece is splittable (`splittable_pieces()`) and, once the distance field is computed, the
   /// volumetric stages decompose it (`volumetric_pieces()`). Before the distance field is known,
   /// it tells whether it is worth computing. Segments the pieces if they are missing.
@@ -339,8 +339,8 @@ public:
   computes the parts as `decompose()` does before its part hierarchy, writes the part id (0 to
   `K-1`) of every face to `face_part_map`, once, and returns `K`: if `needs_volumetric_stages(np)`,
   the primitives are assigned to the patches (`assign_parts()`), the residual patches kept
-  (`separate_residual_patches()`) with `keep_residual_patches(true)` and the thin sheets merged
-  (`merge_thin_sheet_parts()`) unless `merge_thin_sheets(false)` is given; then the parts are
+  (`separate_residual_patches()`) with `keep_residual_patches = true` and the thin sheets merged
+  (`merge_thin_sheet_parts()`) unless `merge_thin_sheets = false` is given; then the parts are
   composed with the pieces (`Part_decomposition::compose_parts()`). The stages it needs are
   computed if missing. Part `k` is explained by `part_primitives()[k]`.
   \tparam FacePartMap a model of `WritablePropertyMap` with
@@ -450,7 +450,7 @@ public:
   const std::vector<std::size_t>& part_to_primitive() const { return m_s.composed.part_to_primitive; }
   /// for each part, its superquadric in input coordinates (see `Composed_parts::part_primitives`).
   const std::vector<Primitive>& part_primitives() const { return m_s.composed.part_primitives; }
-  /// per part, 1 if it is a residual part (see the named parameter `keep_residual_patches` of
+  /// per part, 1 if it is a residual part (see the switch `keep_residual_patches` of
   /// `decompose()`), whose superquadric is only the box-like superquadric of its bounding box.
   const std::vector<std::uint8_t>& residual_parts() const { return m_s.composed.residual_parts; }
   /// the part hierarchy.

@@ -47,8 +47,8 @@ and every power is evaluated max-normalised, so that values and derivatives stay
 accurate for exponents near 0 (box-like shapes), near 2 (octahedron-like shapes) and for points
 arbitrarily close to the centre.
 
-\tparam GeomTraits a model of `Kernel`; only `GeomTraits::Point_3`, `GeomTraits::Vector_3` and
-`GeomTraits::FT` are used.
+\tparam GeomTraits a model of `PartDecompositionTraits`; only `GeomTraits::Point_3`,
+`GeomTraits::Vector_3` and `GeomTraits::FT` are used.
 */
 template <typename GeomTraits>
 class Superquadric

@@ -179,18 +179,19 @@ the same output, whatever the number of threads.
 
 It is the sequence of the stage functions, which give the same parts when called in this
 order with the same named parameters (see the user manual): `segment_pieces()` and
-`splittable_pieces()`; if a piece is splittable, `compute_tsdf()` and `volumetric_pieces()`; if a
-piece is volumetric, `compute_flow_freeze_prior()`, `compute_fitting_zones()`,
+`splittable_pieces()`; if a piece is splittable, `compute_flow_freeze_prior()`, `compute_tsdf()`
+and `volumetric_pieces()`; if a piece is volumetric, `compute_fitting_zones()`,
 `fit_superquadrics()`, `over_segment()`, `assign_parts()`, `separate_residual_patches()` (with
-`keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the part
-hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as they
-cost less than `maximum_merge_cost`. `Part_decomposer` keeps the result of each. When no piece is
-volumetric and the open sheets that `inflate_sheets()` inflates hold at least half of the area
-and have limbs (a cut-out figure, a relief; see `inflate_sheets()`), the stages up to `compose_parts()` run on that solid instead, each face
-takes the part of its copy, and the hierarchy measures its parts on the solid's side of their
-normals (`Part_decomposer` does not take this path). Every named
-parameter of these functions is accepted here and passed to the stage that reads it; \ref PD_ParameterTable
-lists them all, as does `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
+the switch `keep_residual_patches`) and `merge_thin_sheet_parts()`; then `compose_parts()` and the
+part hierarchy (`build_part_hierarchy()`), whose merges go on from the composed parts as long as
+they cost less than `maximum_merge_cost`. It runs them through a `Part_decomposer`, which keeps
+the result of each. When no piece is volumetric and the open sheets that `inflate_sheets()`
+inflates hold at least half of the area and have limbs (a cut-out figure, a relief; see
+`inflate_sheets()`), the stages up to `compose_parts()` run on that solid instead, each face takes
+the part of its copy, and the hierarchy measures its parts on the solid's side of their normals
+(a decomposer's own `compose_parts()` does not take this path). Every named parameter of these
+functions is accepted here and passed to the stage that reads it; \ref PD_ParameterTable lists
+them all, as does `parameter_table` (with `weld_tolerance`, read by the mesh reader only). The normalization is
 computed once from `normalization_margin` (a `normalization` given here must be that one).
 `face_part_map` is written once, at the end.
 
@@ -211,38 +212,17 @@ reads what another writes.
 components
 \param face_part_map receives the part id of each face
 \param np an optional sequence of named parameters (package parameters are chained with
-`parameters::combine()`): those listed below, which `decompose()` reads itself, and every parameter
-of the stage functions, passed to the stage that reads it; each is documented once, with its type,
-default, range and meaning, in \ref PD_ParameterTable (and with the stage function that reads it)
+`parameters::combine()`): `vertex_point_map`, `face_index_map` and `geom_traits`
+(\ref PD_MeshParameters), those listed below, which have a meaning of their own here, and every
+other parameter of \ref PD_ParameterTable, passed to the stage that reads it (`verbose` to
+`compute_tsdf()` and `fit_superquadrics()`); each is documented once, with its type, default, range
+and meaning, in \ref PD_ParameterTable
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a model of `PartDecompositionTraits`}
-    \cgalParamDefault{the kernel of the point type of the vertex point map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
   \cgalParamNBegin{normalization}
     \cgalParamDescription{the normalization of the mesh into the unit cube; it must be the one `compute_normalization()` computes from `normalization_margin`}
     \cgalParamType{`Normalization`}
     \cgalParamDefault{computed by `compute_normalization()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{if `true`, the fitter prints every accepted primitive and stage to `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{primitive_output_iterator}
     \cgalParamDescription{receives, for each part in increasing id, its superquadric in input

@@ -197,7 +197,8 @@ and the sign of the field:
 - `freeze_zone` = `FREEZE` leaves or `exterior` (`exterior` only if `use_freeze_zone` is `false`);
 - for each \f$r_{fit}\f$ of `fitting_resolutions`: `flow_zone[r_fit]` = the leaves whose centre is
   within \f$t / r_{fit}\f$ (Euclidean, between leaf centres) of the centre of a non-exterior leaf,
-  \f$t\f$ being the Flow-zone tolerance in voxels of \f$r_{fit}\f$.
+  \f$t\f$ being `flow_zone_tolerance`, in voxels of \f$r_{fit}\f$ (paper Table A.1:
+  \f$2\Delta^{r_{fit}}\f$).
 
 The paper takes the exterior as the complement of `fillholes(occupied)`, the unoccupied voxels that
 a flood fill reaches from the border of the grid. A hole in the surface wider than a voxel lets
@@ -223,22 +224,8 @@ nearest of those leaves.
        the inside from the outside
 \param fitting_resolutions the fitting resolutions \f$r_{fit}\f$ (paper: \f$\min(r, 32)\f$ for
        \f$r \in \{16, 32, 64\}\f$, i.e.\ 16 and 32)
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{flow_zone_tolerance}
-    \cgalParamDescription{the dilation of the Flow zone, in voxels of each fitting resolution
-                          (paper Table A.1: \f$2\Delta^{r_{fit}}\f$)}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`2.0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_freeze_zone}
-    \cgalParamDescription{whether `FREEZE` leaves belong to the Freeze zone; `false` leaves the
-                          exterior only (the paper's "w/o Freeze" ablation)}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `flow_zone_tolerance` and
+`method_variant` (its switch `use_freeze_zone`) (\ref PD_ParameterTable)
 
 \returns the zones; `flow_zone` has one entry per distinct fitting resolution.
 

@@ -363,88 +363,11 @@ resolutions, and the fusion.
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the triangle mesh
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class; the computations are done in
-                          `double` from the coordinates of the points, so only its point type matters}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal kernel deduced from the point type}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization}
-    \cgalParamDescription{the map from input coordinates to the normalized cube \f$[-0.5,0.5]^3\f$}
-    \cgalParamType{`CGAL::Part_decomposition::Normalization`}
-    \cgalParamDefault{`compute_normalization(tm, np)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization_margin}
-    \cgalParamDescription{passed to `compute_normalization()` when `normalization` is not given}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`2.0/64`}
-  \cgalParamNEnd
-  \cgalParamNBegin{voxel_resolutions}
-    \cgalParamDescription{the resolutions of the grids, coarse to fine}
-    \cgalParamType{`std::vector<int>` (or any range of integers): a non-empty list of powers of
-                   two from 1 to 256, each twice the previous}
-    \cgalParamDefault{`{16, 32, 64}`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_points_per_face}
-    \cgalParamDescription{the number of samples per face, \f$n^2\f$ for \f$n\f$ divisions per side (`barycentric_sample_grid()`)}
-    \cgalParamType{an integer type, a positive perfect square}
-    \cgalParamDefault{`36`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_neighbors}
-    \cgalParamDescription{the number \f$k\f$ of nearest faces of the normal deviation cue}
-    \cgalParamType{an integer type, at least 1}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-  \cgalParamNBegin{curvature_percentile}
-    \cgalParamDescription{the percentile at which the vertex curvatures are clipped}
-    \cgalParamType{`double`, in `[0, 100]`}
-    \cgalParamDefault{`99.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_concave_curvature}
-    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
-                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{cue_weights}
-    \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of the topology score}
-    \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
-    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
-  \cgalParamNEnd
-  \cgalParamNBegin{freeze_ratio}
-    \cgalParamDescription{the fraction \f$\alpha\f$ of active voxels that become Freeze at each resolution}
-    \cgalParamType{`double`, in \f$(0, 1)\f$}
-    \cgalParamDefault{`0.15`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_density}
-    \cgalParamDescription{whether the topology score is weighted by the density term \f$\sqrt{n}\f$
-                          (paper Eq.\ 3); `false` is the paper's "w/o Density" ablation}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters), `normalization`,
+`normalization_margin`, `voxel_resolutions`, `number_of_points_per_face`, `number_of_neighbors`,
+`curvature_percentile`, `cue_weights`, `freeze_ratio` and `method_variant` (its switches
+`use_concave_curvature` and `use_density`) (\ref PD_ParameterTable)
 
 \returns the prior: the fields at each scored resolution, the fused classes and leaf resolutions on the
 finest grid, the leaf counts per level and the normalization used.

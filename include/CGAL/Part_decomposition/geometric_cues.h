@@ -154,29 +154,8 @@ Linear in the size of `tm`: one pass over the corners of the faces.
 
 \param tm the triangle mesh
 \param vertex_curvature_map receives \f$\kappa_v\f$ for every vertex
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map` and `face_index_map` (\ref PD_MeshParameters)
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face of `tm` is not a triangle.
@@ -209,7 +188,7 @@ points to the side of its faces' normals (the outside of a closed surface orient
 reader orients it; an open surface is taken as it is oriented). Parts meet where the surface is
 concave (the minima rule of Hoffman and Richards): the convex curvature of a thin limb, which the
 paper's \f$|H|/2\f$ counts in full, would mark the whole limb as a boundary and leave no room to fit
-it; `use_concave_curvature(false)` gives the paper's cue.
+it; `use_concave_curvature = false` gives the paper's cue.
 
 \par Complexity
 Linear in the size of `tm` (the percentile is a selection, not a sort).
@@ -222,40 +201,9 @@ Linear in the size of `tm` (the percentile is a selection, not a sort).
 
 \param tm the triangle mesh
 \param face_curvature_map receives \f$c_f\f$ for every face
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{curvature_percentile}
-    \cgalParamDescription{the percentile at which the vertex curvatures are clipped to suppress tessellation outliers}
-    \cgalParamType{`double`, in `[0, 100]`}
-    \cgalParamDefault{`99.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_concave_curvature}
-    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
-                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters), `curvature_percentile` and
+`method_variant` (its switch `use_concave_curvature`) (\ref PD_ParameterTable)
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face is not a triangle, (`INVALID_PARAMETER`) if
@@ -305,34 +253,9 @@ queries for `number_of_neighbors` neighbours takes logarithmic time in practice.
 
 \param tm the triangle mesh
 \param face_normal_deviation_map receives \f$\phi_{norm}(f)\f$ for every face
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_neighbors}
-    \cgalParamDescription{the number \f$k\f$ of nearest faces compared with each face}
-    \cgalParamType{an integer type, at least 1}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters) and `number_of_neighbors`
+(\ref PD_ParameterTable)
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face is not a triangle, (`INVALID_PARAMETER`) if
@@ -371,45 +294,9 @@ computes the two per-face geometric cues of paper App.\ B in one call: the face 
 \param tm the triangle mesh
 \param face_curvature_map receives \f$c_f \in [0,1]\f$ for every face
 \param face_normal_deviation_map receives \f$\phi_{norm}(f) \in [0,2]\f$ for every face
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{curvature_percentile}
-    \cgalParamDescription{the percentile at which the vertex curvatures are clipped}
-    \cgalParamType{`double`, in `[0, 100]`}
-    \cgalParamDefault{`99.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_concave_curvature}
-    \cgalParamDescription{whether the curvature of the convex vertices is left out (the minima rule);
-                          `false` gives the paper's \f$|H|/2\f$ at every vertex}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_neighbors}
-    \cgalParamDescription{the number \f$k\f$ of nearest faces compared with each face}
-    \cgalParamType{an integer type, at least 1}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters), `curvature_percentile`,
+`number_of_neighbors` and `method_variant` (its switch `use_concave_curvature`) (\ref PD_ParameterTable)
 
 \pre `tm` has no garbage (`Surface_mesh`)
 \throws Invalid_input (`NOT_TRIANGLE_MESH`) if a face is not a triangle, (`INVALID_PARAMETER`) if

@@ -177,29 +177,8 @@ Linear in the size of `tm`.
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the mesh
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map` and `face_index_map` (\ref PD_MeshParameters)
 
 \throws Invalid_input if one of the conditions above does not hold: `NO_FACES`,
 `NOT_TRIANGLE_MESH`, `NON_FINITE_COORDINATES`, `DEGENERATE_EXTENT`, `COORDINATES_OUT_OF_RANGE`, or

@@ -107,30 +107,16 @@ Normalization_parameters read_normalization_parameters(const NamedParameters& np
 /*!
 \ingroup PkgPartDecompositionRef
 computes the normalization of `tm`: the centre of its axis-aligned bounding box goes to the
-origin and its longest side to `1 - 2*margin`, so that a free layer of width `margin` separates
-the shape from the border of the cube and the exterior of the shape is connected around it on
-every grid.
+origin and its longest side to `1 - 2*margin`, `margin` being `normalization_margin`, so that a
+free layer of width `margin` separates the shape from the border of the cube and the exterior of
+the shape is connected around it on every grid.
 
 \tparam FaceListGraph a model of `FaceListGraph`
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the mesh
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<FaceListGraph>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization_margin}
-    \cgalParamDescription{the free margin left on each side of the cube, in normalized units}
-    \cgalParamType{`double`, in `[0, 0.25]`}
-    \cgalParamDefault{`2.0/64`, two voxels of the \f$64^3\f$ grid}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`
+(\ref PD_MeshParameters) and `normalization_margin` (\ref PD_ParameterTable)
 
 Only the vertices incident to a face count.
 

@@ -251,22 +251,24 @@ The steps are:
    (`CGAL::Polygon_mesh_processing::connected_components()`); border edges are never crossed.
 5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
    flood fill alone leaves one patch over most of an organic shape, where the paper reports 200 to
-   500 patches. A component larger than
-   `patch_split_size` (\f$a_{max}\f$) times the area of the mesh is split by an ordered flood
-   fill: its uncut edges are crossed by increasing dihedral angle, joining the two sides unless
-   the joined piece would have an area above \f$a_{max}\f$ or a squared radius of gyration (of
-   its face centroids, area-weighted) above \f$0.2\,a_{max}\f$, so that compact pieces meet
-   along the locally sharpest edges. Flat edges (\f$s \le 0.05\f$ degree) are always crossed: a
-   planar region is never split.
-6. <b>Fragment clean-up.</b> A patch whose area is below `minimum_patch_size` times the area of the
-   mesh is merged into the neighbouring patch across its weakest shared edge (the one of smallest
-   dihedral angle; on a tie, the neighbour of smallest area, then of smallest id), the smallest
-   patch first, repeated until every patch is large enough or has no neighbour (a small connected
-   component of the mesh stays a patch of its own).
+   500 patches. A component larger than `patch_split_size` (\f$a_{max}\f$; 1: no cap) times the
+   area of the mesh is split by an ordered flood fill: its uncut edges are crossed by increasing
+   dihedral angle, joining the two sides unless the joined piece would have an area above
+   \f$a_{max}\f$ or a squared radius of gyration (of its face centroids, area-weighted) above
+   \f$0.2\,a_{max}\f$, so that compact pieces meet along the locally sharpest edges. Flat edges
+   (\f$s \le 0.05\f$ degree) are always crossed: a planar region is never split.
+6. <b>Fragment clean-up.</b> A patch whose area is below `minimum_patch_size` (0: no clean-up)
+   times the area of the mesh is merged into the neighbouring patch across its weakest shared edge
+   (the one of smallest dihedral angle; on a tie, the neighbour of smallest area, then of smallest
+   id), the smallest patch first, repeated until every patch is large enough or has no neighbour
+   (a small connected component of the mesh stays a patch of its own).
 7. <b>Boundary smoothing</b>, `smoothing_iterations` times: a face moves to the patch that holds at
    least two of its three neighbours, counting only neighbours that do not move in the same pass
    (this keeps every patch edge-connected). Patches are never created; one may vanish.
 8. Patches are numbered `0` to `A-1` by increasing smallest face index.
+
+With the default `patch_split_size` and `minimum_patch_size`, the patches are compact and cover
+0.1 to 0.2 percent of the area each, so that a patch rarely straddles two parts.
 
 The result does not depend on the number of threads.
 
@@ -285,53 +287,9 @@ clean-up, logarithmic in the number of patches.
 
 \param tm the triangle mesh
 \param face_patch_map receives the patch id of each face, in `[0, A)`
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class, used for the face normals}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                          `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{dihedral_percentile}
-    \cgalParamDescription{the percentile \f$q\f$ of the dihedral angles above which edges are cut}
-    \cgalParamType{`double`, in `[0, 100]`}
-    \cgalParamDefault{`90`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_patch_size}
-    \cgalParamDescription{the smallest patch area kept by the clean-up, as a fraction of the area
-                          of the mesh; `0` disables the clean-up}
-    \cgalParamType{`double`, in `[0, 1]`}
-    \cgalParamDefault{`0.001`}
-  \cgalParamNEnd
-  \cgalParamNBegin{patch_split_size}
-    \cgalParamDescription{the largest patch area the size cap lets the ordered flood fill build,
-                          as a fraction of the area of the mesh; `1` disables the cap}
-    \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.0005`: with the clean-up at `0.001`, compact patches of 0.1 to 0.2 percent
-                      of the area, so that a patch rarely straddles two parts}
-  \cgalParamNEnd
-  \cgalParamNBegin{smoothing_iterations}
-    \cgalParamDescription{the number of boundary-smoothing passes}
-    \cgalParamType{`int`, non-negative}
-    \cgalParamDefault{`1`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`face_index_map`, `geom_traits` (\ref PD_MeshParameters), `dihedral_percentile`,
+`minimum_patch_size`, `patch_split_size` and `smoothing_iterations` (\ref PD_ParameterTable)
 
 \pre `CGAL::is_triangle_mesh(tm)`
 \pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)

@@ -289,7 +289,8 @@ constexpr std::string_view unparenthesized(std::string_view text) { return text.
 \ingroup PkgPartDecompositionRef
 The default value of each named parameter that holds a value: the paper's Table A.1 where it gives
 one, the choices of this implementation elsewhere; a list is a `std::array`. Every function of the
-package takes its defaults from here. The values are listed in \ref PD_ParameterTable.
+package takes its defaults from here. The values are listed in \ref PD_ParameterTable, the choices explained in the
+user manual, \ref PD_Parameters.
 */
 namespace defaults {
 /// \cond SKIP_IN_MANUAL
@@ -449,9 +450,10 @@ PD::decompose(mesh, part_map,
                                       PD::parameters::voxel_resolutions(std::vector<int>{32, 64})));
 \endcode
 
-`decompose()` accepts them all and passes each to the stage that reads it; each function of the
-package says which it reads. Every parameter, with its type, default, range and meaning, is in
-`parameter_table`, from which the reference page \ref PD_ParameterTable is made.
+Each function lists the parameters it reads; `decompose()` accepts them all and passes each to the
+stage that reads it. Every parameter, with its type, default, range and meaning, is in
+`parameter_table`, from which the reference page \ref PD_ParameterTable is made; \cgal's
+parameters of the mesh are described in \ref PD_MeshParameters.
 
 Each function is `template <typename T> Named_function_parameters<T, Tag> name(const T& value)`.
 \cgal's own parameters keep their names: `vertex_point_map`, `vertex_index_map`,

@@ -310,14 +310,14 @@ junctions (edges of three faces or more) in chains at least 1/20 of the piece's 
 long make up less than 0.1% of the length of its edges, so that a scan's scattered defective edges
 do not count but the walls and shelves of a cabinet, glued along lines, do (the parts of an
 assembly of sheets are its regions). The prior, the distance field, the fit and the
-over-segmentation are worth computing only if one piece is splittable (or with `use_pieces(false)`);
+over-segmentation are worth computing only if one piece is splittable (or with `use_pieces = false`);
 `volumetric_pieces()` then tells which of them the volumetric stages decompose.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the result is the same
 \param tm the mesh
 \param pieces the pieces of `tm`, as `segment_pieces()` returned them
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and
-`minimum_part_area`, as for `decompose()`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `minimum_part_area` (\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh,
@@ -397,13 +397,14 @@ lies in Freeze voxels of `prior` and whose faces are on average farther than `re
 voxels of the finest grid from the primitive of their part. Each edge-connected set of residual
 faces becomes a part, appended with `no_primitive`; `parts.residual_faces` receives the residual
 faces. `decompose()` calls it, between `assign_parts()` and `merge_thin_sheet_parts()`, when its
-named parameter `keep_residual_patches` is `true`.
+switch `keep_residual_patches` of `method_variant` is `true`.
 
 \param tm the mesh
 \param parts the patches, parts and primitives of `over_segment()` and `assign_parts()`
 \param prior the prior of `tm`
 \param fitting the primitives `assign_parts()` assigned
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and `residual_tolerance`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `residual_tolerance` (\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range or `prior` and
 `fitting` have different normalizations.
 */
@@ -441,7 +442,7 @@ whose boundary is concave on average by at least 0.15 (an edge counting
 \f$\min(1, \theta / 60^\circ)\f$ if concave with dihedral angle \f$\theta\f$, 0 if convex,
 weighted by length) is a part of its own, and the others stay with the largest: a limb ends at a
 concave root, a stray claim does not. Parts smaller than `minimum_part_area` of the mesh area are
-merged into the neighbour across their weakest shared edge. With `use_pieces(false)`, the parts are those of `parts`.
+merged into the neighbour across their weakest shared edge. With `use_pieces = false`, the parts are those of `parts`.
 
 Each part keeps the primitive of the volumetric part that covers most of it, and gets its
 superquadric (see `Composed_parts::part_primitives`).
@@ -449,17 +450,18 @@ superquadric (see `Composed_parts::part_primitives`).
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the result is the same
 \param tm the mesh
 \param pieces the pieces of `tm`, after `volumetric_pieces()` if it was called (ignored with
-`use_pieces(false)`)
+`use_pieces = false`)
 \param volumetric per piece, 1 if the volumetric stages decomposed it (`volumetric_pieces()`);
 ignored if `parts.parts` is empty
 \param parts the parts of the volumetric stages; `parts.parts` is empty if they did not run
 \param fitting the primitives of `parts.part_to_primitive` (unused if `parts.parts` is empty)
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`, `use_pieces`
-and `minimum_part_area`, as for `decompose()`
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters), `minimum_part_area` and `method_variant` (its switch `use_pieces`)
+(\ref PD_ParameterTable)
 \throws Invalid_input (`INVALID_PARAMETER`) if a named parameter is out of its range, if a vector
 of `parts` or `pieces` indexed by face does not have one value per face, if `volumetric` does not
 have one flag per piece while `parts.parts` is not empty, or if `parts.parts` is empty with
-`use_pieces(false)`.
+`use_pieces = false`.
 */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -529,10 +531,11 @@ superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_
 (named parameter `maximum_merge_cost`), from which cost on the merges are ordered by size first.
 
 \param tm the mesh
-\param pieces the pieces given to `compose_parts()` (ignored with `use_pieces(false)`)
+\param pieces the pieces given to `compose_parts()` (ignored with `use_pieces = false`)
 \param parts the result of `compose_parts()`
-\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits` and `use_pieces`
-given to `compose_parts()`, and `maximum_merge_cost` (see `build_part_hierarchy(tm, face_part_map, np)`)
+\param np the named parameters `vertex_point_map`, `face_index_map`, `geom_traits`
+(\ref PD_MeshParameters) and `method_variant` given to `compose_parts()`, and `maximum_merge_cost`
+(\ref PD_ParameterTable; see `build_part_hierarchy(tm, face_part_map, np)`)
 */
 template <typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -357,35 +357,9 @@ are a level of the tree.
 
 \param tm the mesh
 \param face_part_map the finest part of each face, from `0` to `K - 1`
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                          `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a model of `PartDecompositionTraits`}
-    \cgalParamDefault{the kernel of the point type of the vertex point map}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_merge_cost}
-    \cgalParamDescription{the cost that ends the default parts, from which merges are ordered by the size of the smaller part first}
-    \cgalParamType{`double`, non-negative and finite}
-    \cgalParamDefault{`0.003`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`face_index_map`, `geom_traits` (\ref PD_MeshParameters) and `maximum_merge_cost`
+(\ref PD_ParameterTable)
 
 \pre `CGAL::is_triangle_mesh(tm)` and the values of `face_part_map` are `0` to `K - 1`, each used.
 

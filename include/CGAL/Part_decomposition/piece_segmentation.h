@@ -100,30 +100,11 @@ Linear in the number of faces, up to the inverse Ackermann factor of the union-f
 \tparam NamedParameters a sequence of named parameters
 
 \param tm the triangle mesh
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                          `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{crease_angle}
-    \cgalParamDescription{the dihedral angle, in degrees, from which a concave edge separates two regions}
-    \cgalParamType{`double`, in `(0, 180]`}
-    \cgalParamDefault{`60`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`face_index_map`, `geom_traits` (\ref PD_MeshParameters) and `crease_angle`
+(\ref PD_ParameterTable); it checks the range of `minimum_part_area`, which `splittable_pieces()`
+and `compose_parts()` read. `decompose()` segments the pieces unless the switch `use_pieces` of
+`method_variant` is `false`.
 
 \pre `CGAL::is_triangle_mesh(tm)`
 

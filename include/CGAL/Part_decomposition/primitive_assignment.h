@@ -358,42 +358,12 @@ at most one nearest-neighbour query per face; the vote is linear.
 \param tsdf the distance field whose grid the labels are given on; its normalization maps the
        coordinates of `tm` to the normalized cube, its `voxel_size` is the unit of lengths
 \param face_part_map receives the part id of each face, in `[0, K)`
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                          `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{vote_temperature}
-    \cgalParamDescription{the temperature \f$\tau_v\f$ of the vote, in voxels \f$\Delta\f$: a face
-                          one \f$\tau_v\f$ farther weighs \f$1/e\f$ as much}
-    \cgalParamType{`double`, positive}
-    \cgalParamDefault{`1.0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{boundary_smoothness}
-    \cgalParamDescription{\f$\lambda\f$, the weight of the cut cost in the labelling of the faces; 0
-                          gives the vote of the patches}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`10.0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class (for the dihedral angles)}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`face_index_map`, `geom_traits` (if \f$\lambda > 0\f$; \ref PD_MeshParameters), `vote_temperature`
+and `boundary_smoothness` (\ref PD_ParameterTable); it checks the range of `residual_tolerance`,
+which `separate_residual_patches()` reads. The switches `keep_residual_patches` and
+`merge_thin_sheets` of `method_variant` decide whether `decompose()` runs
+`separate_residual_patches()` and `merge_thin_sheet_parts()` after it.
 
 \pre `CGAL::is_triangle_mesh(tm)`
 \pre if `TriangleMesh` is a `CGAL::Surface_mesh`, it has no garbage (or a `face_index_map` is given)

@@ -130,8 +130,8 @@ no inside, but its outline has limbs. Each face of `tm` then gets the part of it
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \param tm the mesh
 \param pieces the pieces of `tm` (`segment_pieces()`)
-\param np the named parameters `vertex_point_map`, `face_index_map` and `geom_traits`, as for
-`decompose()`
+\param np the named parameters `vertex_point_map`, `face_index_map` and `geom_traits`
+(\ref PD_MeshParameters)
 \returns the solid: its face `i` (in the order of its faces) is the copy of the face of index `i`
 of `tm`, on the side of its normal; the faces after `num_faces(tm)` are the other sides of the
 open pieces. Non-manifold points of the solid (where a sheet's border touches itself) are

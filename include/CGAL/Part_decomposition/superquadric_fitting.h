@@ -275,15 +275,16 @@ Flow zone and stopping them at the Freeze zone.
 For each stage \f$r\f$ (16, 32, 64), with \f$r_{fit} = \min(r, c)\f$, \f$c\f$ being
 `fitting_resolution_cap` or by default the resolution before the finest (32), the valid set
 \f$\Omega_{valid} = \{\mathcal{R}_{map} \le r\} \setminus \Omega_{freeze}\f$ is covered until a
-fraction `coverage_target` (0.999 by default) of it is claimed: a body seed is placed at the
-maximum of the Euclidean
-distance transform of the unclaimed valid voxels if it reaches `body_seed_threshold` voxels of
-\f$r_{fit}\f$, otherwise a surface seed at the centroid of the largest remaining 6-connected
-component; a superquadric is initialized there (a ball of radius
-\f$\min(\Delta^{r_{fit}}, \mathrm{EDT}_{\Omega_{flow}}(s))\f$), fitted to the samples of its
-region of interest with the trust-region scales \f$\eta\f$ in turn until its surface stays in the
-Flow zone, and accepted if the voxels within \f$2\Delta\f$ of it that are neither Freeze, claimed
-nor reserved for a finer stage number at least \f$V_{min}\f$.
+fraction `coverage_target` of it is claimed (0.999 by default: the paper's 0.95 leaves thin
+limbs, a few voxels each, without a primitive): a body seed is placed at the maximum of the
+Euclidean distance transform of the unclaimed valid voxels if it reaches `body_seed_threshold`
+voxels of \f$r_{fit}\f$ (never with `use_body_seeds = false`), otherwise a surface seed at the
+centroid of the largest remaining 6-connected component; a superquadric is initialized there (a
+ball of radius \f$\min(\Delta^{r_{fit}}, \mathrm{EDT}_{\Omega_{flow}}(s))\f$), fitted to the
+samples of its region of interest with the trust-region scales \f$\eta\f$ (`trust_region_scales`)
+in turn until its surface stays in the Flow zone, and accepted if the voxels within \f$2\Delta\f$
+of it that are neither Freeze, claimed nor reserved for a finer stage number at least \f$V_{min}\f$
+(`minimum_body_volume` or `minimum_surface_volume`).
 
 Choices where the paper is silent or that depart from it (their measured effect is in the user
 manual, \ref PD_Deviations):
@@ -320,8 +321,8 @@ manual, \ref PD_Deviations):
   (or, if every voxel is Freeze, of the voxels that are not exterior) on their principal axes,
   which claims them all; `verbose` says so and why the seeds were rejected. The paper leaves the
   shape without a primitive.
-- Without TSDF guidance, \f$d_\mathcal{M}\f$ is replaced by \f$-\tau\f$ inside the hull and
-  \f$+\tau\f$ in the exterior.
+- Without TSDF guidance (`use_tsdf_guidance = false`), \f$d_\mathcal{M}\f$ is replaced by
+  \f$-\tau\f$ inside the hull and \f$+\tau\f$ in the exterior.
 - Small residual regions: unclaimed non-Freeze components smaller than the surface \f$V_{min}\f$
   of the last stage take the label of their nearest claimed voxel.
 - Merged primitives (`merge_primitives`): the fitter may tile one box or one rounded solid with
@@ -336,159 +337,28 @@ manual, \ref PD_Deviations):
   primitive is that superquadric; the others are kept as fitted.
 
 The paper's literal version is reached with `fitting_resolution_cap(32)`,
-`use_exterior_band_samples(false)`, `use_reachable_regions(false)`, `use_seed_exclusion(false)`,
-`maximum_rejections_in_a_row(0)`, `maximum_solver_evaluations(1100)` and `coverage_target(0.95)`.
+`use_exterior_band_samples = false`, `use_reachable_regions = false`, `use_seed_exclusion = false`,
+`maximum_rejections_in_a_row(0)`, `maximum_solver_evaluations(1100)` (the default of scipy's
+`least_squares`, \f$100 \times 11\f$) and `coverage_target(0.95)`. With `verbose`, every accepted
+primitive, every rejected seed with the reason, a summary of every stage and the time spent in
+each step are printed to `std::cerr`.
 
 \tparam ConcurrencyTag enables sequential versus parallel evaluation of the residuals and
 distance transforms. Possible values are `Sequential_tag`, `Parallel_tag` and
 `Parallel_if_available_tag`. Results are identical for every number of threads.
-\tparam GeomTraits a model of `Kernel`, the kernel of the returned superquadrics
+\tparam GeomTraits a model of `PartDecompositionTraits`, the traits of the returned superquadrics
 \tparam NamedParameters a sequence of named parameters
 
 \param prior the hierarchical Flow/Freeze prior (`classes`, `leaf_resolution`, `resolutions`,
        `normalization` are read)
 \param tsdf the truncated signed distance field on the finest grid of the prior
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{flow_zone_tolerance}
-    \cgalParamDescription{the dilation of the hull that defines the Flow zone, in voxels of \f$r_{fit}\f$}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`2.0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{trust_region_scales}
-    \cgalParamDescription{the semi-axis trust-region scales \f$\eta\f$ tried in turn}
-    \cgalParamType{`std::vector<double>`, positive values}
-    \cgalParamDefault{`{1.0, 0.5, 0.25}`}
-  \cgalParamNEnd
-  \cgalParamNBegin{body_seed_threshold}
-    \cgalParamDescription{the EDT depth, in voxels of \f$r_{fit}\f$, from which a body seed is used}
-    \cgalParamType{`double`, positive}
-    \cgalParamDefault{`1.5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_body_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of body seeds, in voxels of \f$r_{fit}\f$}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_surface_volume}
-    \cgalParamDescription{\f$V_{min}\f$ of surface seeds, in voxels of \f$r_{fit}\f$}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`3`}
-  \cgalParamNEnd
-  \cgalParamNBegin{exterior_penalty}
-    \cgalParamDescription{\f$\mu_{ext}\f$, the exterior intrusion penalty of FitSDF}
-    \cgalParamType{`double`, non-negative}
-    \cgalParamDefault{`5`}
-  \cgalParamNEnd
-  \cgalParamNBegin{coverage_target}
-    \cgalParamDescription{the fraction of \f$\Omega_{valid}\f$ to claim before a stage ends}
-    \cgalParamType{`double`, in \f$(0,1]\f$}
-    \cgalParamDefault{`0.999` (the paper's 0.95 leaves thin limbs, a few voxels each, without a
-                      primitive)}
-  \cgalParamNEnd
-  \cgalParamNBegin{roi_radius}
-    \cgalParamDescription{\f$\rho(r_{fit})\f$, the radius of the region of interest, in voxels of \f$r_{fit}\f$}
-    \cgalParamType{`double`, positive}
-    \cgalParamDefault{`8`}
-  \cgalParamNEnd
-  \cgalParamNBegin{interior_weight_mode}
-    \cgalParamDescription{how the variance of the interior Gaussian weight is set}
-    \cgalParamType{`CGAL::Part_decomposition::Interior_weight_mode`}
-    \cgalParamDefault{`Interior_weight_mode::ONE_SHOT`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_number_of_primitives}
-    \cgalParamDescription{a safety cap on the number of accepted superquadrics}
-    \cgalParamType{`std::size_t`, positive}
-    \cgalParamDefault{`256`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_freeze_zone}
-    \cgalParamDescription{if `false` (ablation "w/o Freeze"), Freeze voxels are treated as Flow:
-                          the Freeze zone is the exterior only}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_tsdf_guidance}
-    \cgalParamDescription{if `false` (ablation "w/o TSDF"), the fit sees the occupancy only:
-                          \f$-\tau\f$ in the hull, \f$+\tau\f$ outside}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_body_seeds}
-    \cgalParamDescription{if `false` (ablation "w/o Body"), only surface seeds are used}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{fitting_resolution_cap}
-    \cgalParamDescription{\f$c\f$ in \f$r_{fit} = \min(r, c)\f$; 0 stands for the resolution before
-                          the finest (half the resolution if there is only one). The paper's
-                          literal rule is 32. Zones given to `fit_superquadrics()` must have been
-                          computed at `fitting_resolutions(prior.resolutions, c)`.}
-    \cgalParamType{`int`, non-negative}
-    \cgalParamDefault{`0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_exterior_band_samples}
-    \cgalParamDescription{if `true`, the exterior voxels of the \f$1.5\Delta\f$ band within the
-                          ball of the region of interest are samples of the fit (never claimed); if
-                          `false`, the samples are those of the region of interest only, as in
-                          the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_reachable_regions}
-    \cgalParamDescription{if `true`, the region of interest is the part of the ball reachable from
-                          the seed by 6-connected steps without crossing Freeze or claimed voxels,
-                          and a claim keeps only its voxels 6-connected to that region; if
-                          `false`, the region is the whole ball (minus Freeze and claimed voxels)
-                          and the claim all of \f$M_{fit}\f$ outside them, as in the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_seed_exclusion}
-    \cgalParamDescription{if `true`, a rejected seed excludes from the later seeds of its stage the
-                          ball described above (its inscribed ball for a body seed, radius
-                          \f$\rho/2\f$ for a surface seed); if `false`, only the seed voxel, as in
-                          the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_solver_evaluations}
-    \cgalParamDescription{the most residual evaluations (with or without the Jacobian) of one
-                          least-squares solve. The paper's solver (scipy's `least_squares`) allows
-                          \f$100 \times 11 = 1100\f$ by default; a solve also stops on its
-                          tolerances, so a large value makes them the only stop}
-    \cgalParamType{`int`, positive}
-    \cgalParamDefault{`40`}
-  \cgalParamNEnd
-  \cgalParamNBegin{maximum_rejections_in_a_row}
-    \cgalParamDescription{the number of seeds rejected in a row that ends a stage; 0 never ends a
-                          stage on rejections (the paper's rule: the stage then ends when no seed
-                          is left, the coverage is reached, or after
-                          \f$16\max(P_{max}, 16)\f$ seeds, \f$P_{max}\f$ being
-                          `maximum_number_of_primitives`)}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`4`}
-  \cgalParamNEnd
-  \cgalParamNBegin{merge_primitives}
-    \cgalParamDescription{if `true`, after the last stage, adjacent primitives that one superquadric
-                          explains are merged (see above); not in the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{minimum_merge_iou}
-    \cgalParamDescription{the voxel intersection over union between the union of two groups' claimed
-                          voxels and its superquadric from which the groups are merged}
-    \cgalParamType{`double`, in `(0, 1]`}
-    \cgalParamDefault{`0.6`}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{if `true`, prints every accepted primitive, every rejected seed with the
-                          reason, a summary of every stage and the time spent in each step to
-                          `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `flow_zone_tolerance`,
+`trust_region_scales`, `body_seed_threshold`, `minimum_body_volume`, `minimum_surface_volume`,
+`exterior_penalty`, `coverage_target`, `roi_radius`, `maximum_number_of_primitives`,
+`fitting_resolution_cap`, `maximum_solver_evaluations`, `maximum_rejections_in_a_row`,
+`minimum_merge_iou`, `verbose` and `method_variant` (its switches `interior_weight_mode`,
+`use_freeze_zone`, `use_tsdf_guidance`, `use_body_seeds`, `use_exterior_band_samples`,
+`use_reachable_regions`, `use_seed_exclusion` and `merge_primitives`) (\ref PD_ParameterTable)
 
 \par Complexity
 Independent of the number of faces of the mesh. A stage ends after \f$k\f$ =

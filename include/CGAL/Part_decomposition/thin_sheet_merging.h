@@ -309,7 +309,7 @@ Sheet_merging_parameters read_sheet_merging_parameters(const NamedParameters& np
 /*!
 \ingroup PkgPartDecompositionRef
 merges the parts of a decomposition that tile one thin sheet: the stage of `decompose()` after
-`assign_parts()` and before `compose_parts()` (its named parameter `merge_thin_sheets` is the switch). This step is not
+`assign_parts()` and before `compose_parts()` (the switch `merge_thin_sheets` of `method_variant`). This step is not
 in the paper.
 
 Thin shells (the wall of a cup, the skin of a wing, a table top a few voxels thick) are fitted by
@@ -349,30 +349,8 @@ several flat superquadrics: the fitter cannot grow one primitive along a curved 
        values, as returned by `assign_parts()`); on output, the primitive of each new part
 \param fitting the fitted primitives and the voxels each claimed
 \param tsdf the distance field the primitives were fitted to
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class, used for the face normals}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                          `0` and `num_faces(tm) - 1`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`face_index_map` and `geom_traits` (\ref PD_MeshParameters)
 
 \pre `CGAL::is_triangle_mesh(tm)`
 \pre `fitting` was computed on the grid of `tsdf` (`fit_superquadrics()` with `tsdf`).

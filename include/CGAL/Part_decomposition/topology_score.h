@@ -353,61 +353,10 @@ with `CGAL::Sequential_tag` and `CGAL::Parallel_tag`.
 \param resolution the resolution \f$r\f$ of the grid
 \param sampling_resolution the resolution \f$r_s\f$ of the grid the samples are binned in, a
        power of two times `resolution`
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_index_map}
-    \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization}
-    \cgalParamDescription{the map from input coordinates to the normalized cube \f$[-0.5,0.5]^3\f$}
-    \cgalParamType{`CGAL::Part_decomposition::Normalization`}
-    \cgalParamDefault{`compute_normalization(tm, np)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization_margin}
-    \cgalParamDescription{passed to `compute_normalization()` when `normalization` is not given}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`2.0/64`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_points_per_face}
-    \cgalParamDescription{the number of samples per face, \f$n^2\f$ for \f$n\f$ divisions per side}
-    \cgalParamType{an integer type, a positive perfect square}
-    \cgalParamDefault{`36`}
-  \cgalParamNEnd
-  \cgalParamNBegin{cue_weights}
-    \cgalParamDescription{the weights \f$(\lambda_1, \lambda_2, \lambda_3, \lambda_4)\f$ of
-                          \f$\mu^\kappa, \sigma^\kappa, \Delta^\kappa, \phi_{norm}\f$}
-    \cgalParamType{`std::array<double, 4>` (or any range of 4 finite numbers)}
-    \cgalParamDefault{`{1, 1, 1, 0}`: the normal deviation, which counts convex edges too, is off}
-  \cgalParamNEnd
-  \cgalParamNBegin{freeze_ratio}
-    \cgalParamDescription{the fraction \f$\alpha\f$ of active voxels with the highest scores that become Freeze}
-    \cgalParamType{`double`, in \f$(0, 1)\f$}
-    \cgalParamDefault{`0.15`}
-  \cgalParamNEnd
-  \cgalParamNBegin{use_density}
-    \cgalParamDescription{whether the score is weighted by the density term \f$\sqrt{n}\f$ (paper Eq.\ 3);
-                          `false` is the paper's "w/o Density" ablation}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters), `normalization`,
+`normalization_margin`, `number_of_points_per_face`, `cue_weights`, `freeze_ratio` and
+`method_variant` (its switch `use_density`) (\ref PD_ParameterTable)
 
 \returns the field at resolution `resolution`.
 

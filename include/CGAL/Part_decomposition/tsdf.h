@@ -211,7 +211,9 @@ Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh&
 \ingroup PkgPartDecompositionRef
 computes the truncated signed distance field \f$d_\mathcal{M}\f$ of `tm` (paper App.\ E.2) on an
 adaptive grid of the normalized cube (`Adaptive_grid`), one value per leaf, at its centre: the
-Euclidean distance to the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$.
+Euclidean distance to the surface, negative inside and positive outside, clipped to \f$\pm\tau\f$,
+\f$\tau\f$ being `tsdf_truncation` voxels of the finest of `voxel_resolutions` (paper Table A.1:
+\f$8\Delta^{(64)}\f$).
 
 <b>The grid.</b> The leaves are the leaves of a `CGAL::Octree` over the normalized cube, refined
 where the shape needs it. A cell is split while its centre is closer to the surface than its own
@@ -223,16 +225,17 @@ another sheet of surface, turned by more than 120 degrees, closer than two sides
 other side of a thin part, or across a narrow gap), it is split down to `grid_resolution`.
 Away from the surface the leaves grow with the distance, and the interior of bulky parts and the
 empty space are covered by a few large leaves. Without `prior`, the surface asks for the finest
-of `voxel_resolutions` everywhere. With `adaptive_grid(false)`, every leaf is a voxel of the
-finest of `voxel_resolutions`: the dense grid of the paper.
+of `voxel_resolutions` everywhere. With `adaptive_grid = false`, every leaf is a voxel of the
+finest of `voxel_resolutions`: the dense grid of the paper. With `verbose`, the number of leaves
+of each resolution is printed to `std::cerr`.
 
 <b>The values.</b> Distances are exact, up to rounding, wherever they are below \f$\tau\f$: the
 distance to the closest triangle, found in a `CGAL::AABB_tree` of the normalized triangles by a
 nearest-first traversal bounded from the start by the triangle closest to the parent cell's
 centre. Beyond \f$\tau\f$ the value is \f$\pm\tau\f$. The sign is decided at the centre of the
 finest voxel in the middle of each leaf (the centre of a leaf of one finest voxel) by
-`sign_method` (see `Tsdf_sign_method`), from the exact signed crossings of the rows of the finest
-voxels with the triangles. Coordinates are read through the vertex point map with
+`tsdf_sign_method` (see `Tsdf_sign_method`), from the exact signed crossings of the rows of the
+finest voxels with the triangles. Coordinates are read through the vertex point map with
 `CGAL::to_double()` and everything is computed in double precision on the normalized coordinates.
 
 \par Complexity
@@ -250,55 +253,10 @@ the prior's resolution, and the crossings of the rows of the finest grid with th
           components, with components of any orientation
 \param prior the Flow/Freeze prior of `tm` at the same `voxel_resolutions` and normalization
        (`compute_flow_freeze_prior()`), whose fused leaves tell how fine the surface must be
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
-                   `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization}
-    \cgalParamDescription{the map from input coordinates to the normalized cube
-                          \f$[-0.5,0.5]^3\f$ in which the grid lives}
-    \cgalParamType{`CGAL::Part_decomposition::Normalization`}
-    \cgalParamDefault{`compute_normalization(tm, np)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{normalization_margin}
-    \cgalParamDescription{passed to `compute_normalization()` when no `normalization` is given}
-    \cgalParamType{`double`}
-    \cgalParamDefault{`2.0/64`}
-  \cgalParamNEnd
-  \cgalParamNBegin{voxel_resolutions}
-    \cgalParamDescription{the resolutions of the method; lengths are measured in voxels of the finest}
-    \cgalParamType{`std::vector<int>` (or any range of integers): a non-empty list of powers of
-                   two from 1 to 256, each twice the previous (the rule of `compute_flow_freeze_prior()`)}
-    \cgalParamDefault{`std::vector<int>{16, 32, 64}`}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution of the finest leaves of the grid}
-    \cgalParamType{`int`: a power of two up to 256; raised to the finest of `voxel_resolutions` if below it}
-    \cgalParamDefault{`128`}
-  \cgalParamNEnd
-  \cgalParamNBegin{adaptive_grid}
-    \cgalParamDescription{`false`: every leaf is a voxel of the finest of `voxel_resolutions`,
-                          the dense grid of the paper}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-  \cgalParamNBegin{tsdf_truncation}
-    \cgalParamDescription{\f$\tau\f$ in voxels of the finest of `voxel_resolutions` (paper Table A.1: \f$8\Delta^{(64)}\f$)}
-    \cgalParamType{`double`, in \f$(0, 4r]\f$ for that resolution \f$r\f$}
-    \cgalParamDefault{`8.0`}
-  \cgalParamNEnd
-  \cgalParamNBegin{tsdf_sign_method}
-    \cgalParamDescription{how the sign is decided}
-    \cgalParamType{`CGAL::Part_decomposition::Tsdf_sign_method`}
-    \cgalParamDefault{`Tsdf_sign_method::AUTOMATIC`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `vertex_point_map`,
+`vertex_index_map`, `face_index_map` (\ref PD_MeshParameters), `normalization`,
+`normalization_margin`, `voxel_resolutions`, `grid_resolution`, `tsdf_truncation`,
+`tsdf_sign_method`, `verbose` and `method_variant` (its switch `adaptive_grid`) (\ref PD_ParameterTable)
 
 \pre `tm` lies inside the normalized cube once normalized (the default normalization ensures it).
 \pre `tm` has no garbage (`Surface_mesh` after removals: call `collect_garbage()`).

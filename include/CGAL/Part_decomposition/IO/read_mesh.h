@@ -175,16 +175,8 @@ the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts 
 
 \param filename the file
 \param tm an empty mesh that receives the triangles
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{weld_tolerance}
-    \cgalParamDescription{the distance, as a fraction of the diagonal of the bounding box of the
-                          triangles, within which vertices on a border are welded; 0 welds nothing}
-    \cgalParamType{`double`, in `[0, 0.01]`}
-    \cgalParamDefault{`5e-6`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
+\param np an optional sequence of named parameters; this function reads `weld_tolerance`
+(\ref PD_ParameterTable)
 
 \returns the correspondence between the faces of `tm` and those of the file.
 
@@ -227,7 +219,8 @@ indices, e.g.\ `std::vector<std::array<std::size_t, 3> >`
 \param points the points
 \param polygons the polygons, each as indices into `points`
 \param tm an empty mesh that receives the triangles
-\param np an optional sequence of named parameters: `weld_tolerance` (see `read_triangle_mesh()`)
+\param np an optional sequence of named parameters; this function reads `weld_tolerance`
+(\ref PD_ParameterTable)
 
 \returns the correspondence between the faces of `tm` and the polygons.
 
