@@ -392,9 +392,9 @@ render::Picture_options picture_options(const std::pair<int, int>& size)
 }
 
 // The PNG of the triangles beside their parts, one label per triangle.
-py::bytes picture_png(const std::vector<std::array<double, 3> >& points,
-                      const std::vector<std::array<std::int64_t, 3> >& triangles, const std::vector<std::size_t>& labels,
-                      const render::Picture_options& options)
+template <typename TriangleRange>
+py::bytes picture_png(const std::vector<std::array<double, 3> >& points, const TriangleRange& triangles,
+                      const std::vector<std::size_t>& labels, const render::Picture_options& options)
 {
   std::vector<render::Rgb> colours;
   for(std::size_t l : labels) colours.push_back(Part_decomposition_tools::part_rgb(l));
@@ -430,22 +430,11 @@ py::bytes render_file_png(py::object path_like, py::handle labels, std::pair<int
   if(l.size() != info.number_of_input_faces)
     throw py::value_error("labels has " + std::to_string(l.size()) + " entries, the file " +
                           std::to_string(info.number_of_input_faces) + " faces");
-  // the reader's mesh is dense (no removed element): its indices are 0..n-1
   std::vector<std::array<double, 3> > points;
-  for(Mesh::Vertex_index v : vertices(mesh))
-    points.push_back({{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}});
-  std::vector<std::array<std::int64_t, 3> > triangles;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  render::surface_mesh_arrays(mesh, points, triangles);
   std::vector<std::size_t> face_labels;
-  std::size_t i = 0;
-  for(Mesh::Face_index f : faces(mesh))
-  {
-    std::array<std::int64_t, 3> t{};
-    std::size_t k = 0;
-    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
-      if(k < 3) t[k++] = std::int64_t(v);
-    triangles.push_back(t);
-    face_labels.push_back(l[info.face_to_input[i++]]);
-  }
+  for(std::size_t i = 0; i < triangles.size(); ++i) face_labels.push_back(l[info.face_to_input[i]]);
   return picture_png(points, triangles, face_labels, options);
 }
 

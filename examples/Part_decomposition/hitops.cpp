@@ -608,25 +608,11 @@ namespace render = Part_decomposition_tools::render;
 // The PNG of the mesh in grey beside its parts; `face_part` in the order of faces(mesh).
 std::vector<std::uint8_t> thumbnail_png(const Mesh& mesh, const std::vector<std::size_t>& face_part, const Options& o)
 {
-  // vertex indices of a mesh with removed elements are not dense: points by index, gaps unused
-  std::vector<std::array<double, 3> > points(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
-  for(Mesh::Vertex_index v : vertices(mesh))
-  {
-    const K::Point_3& p = mesh.point(v);
-    points[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
-  }
+  std::vector<render::Vec3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
+  render::surface_mesh_arrays(mesh, points, triangles);
   std::vector<render::Rgb> colours;
-  std::size_t i = 0;
-  for(Mesh::Face_index f : faces(mesh))
-  {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
-      if(k < 3) t[k++] = std::size_t(v);
-    triangles.push_back(t);
-    colours.push_back(Part_decomposition_tools::part_rgb(face_part[i++]));
-  }
+  for(std::size_t part : face_part) colours.push_back(Part_decomposition_tools::part_rgb(part));
   render::Picture_options picture;
   picture.width = o.thumbnail_width;
   picture.height = o.thumbnail_height;

@@ -603,6 +603,26 @@ Image render_input_and_parts(const PointRange& points, const TriangleRange& tria
   return image;
 }
 
+// The points of a `CGAL::Surface_mesh` by vertex index (the gaps of removed vertices unused) and
+// its triangles in the iteration order of its faces: the arrays of render_input_and_parts().
+template <typename SurfaceMesh>
+void surface_mesh_arrays(const SurfaceMesh& mesh, std::vector<Vec3>& points,
+                         std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  points.assign(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), Vec3{});
+  for(auto v : vertices(mesh))
+    points[std::size_t(v)] = {{double(mesh.point(v).x()), double(mesh.point(v).y()), double(mesh.point(v).z())}};
+  triangles.clear();
+  for(auto f : faces(mesh))
+  {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(auto v : vertices_around_face(mesh.halfedge(f), mesh))
+      if(k < 3) t[k++] = std::size_t(v);
+    triangles.push_back(t);
+  }
+}
+
 } // namespace render
 } // namespace Part_decomposition_tools
 

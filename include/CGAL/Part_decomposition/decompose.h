@@ -100,39 +100,64 @@ T pipeline_parameter(const NamedParameters& np, Tag tag, const Default& fallback
     return Pipeline_value<T>::of(CGAL::parameters::get_parameter(np, tag), name);
 }
 
-// The pack that `decompose()` hands its pipeline: every value present, in one type per mesh, vertex
-// point map, face index map and traits, whatever parameters the program gave.
+// Every value of the list of parameters, at its default or as the program gave it, in the type of
+// the pipeline: what `decompose()` hands the pipeline, whatever parameters the program gave.
+struct Pipeline_values
+{
+#define CGAL_PART_DECOMPOSITION_PIPELINE_FIELD(NAME, TYPE, ...) TYPE NAME = Pipeline_value<TYPE>::of(defaults::NAME, #NAME);
+  CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_FIELD, CGAL_PART_DECOMPOSITION_PIPELINE_FIELD)
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_FIELD
+};
+
+template <typename NamedParameters>
+Pipeline_values pipeline_values(const NamedParameters& np)
+{
+  Pipeline_values v;
+#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, TYPE, ...)                                    \
+  v.NAME = pipeline_parameter<TYPE>(np, internal_np::NAME, defaults::NAME, #NAME);
+#define CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE(NAME, TYPE, ...)                               \
+  v.NAME = pipeline_parameter<TYPE>(np, CGAL::internal_np::NAME, defaults::NAME, #NAME);
+  CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE,
+                                     CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE)
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_VALUE
+  return v;
+}
+
+// The mesh's traits and maps, a given normalization and the hierarchy's output: the rest of what
+// `decompose()` hands the pipeline.
+template <typename GeomTraits, typename VertexPointMap, typename FaceIndexMap>
+struct Pipeline_inputs
+{
+  GeomTraits traits;
+  VertexPointMap vpm;
+  FaceIndexMap fim;
+  std::optional<Normalization> normalization;
+  Part_hierarchy<GeomTraits>* hierarchy;
+};
+
 template <typename TriangleMesh, typename NamedParameters>
-auto pipeline_parameters(const TriangleMesh& tm, const NamedParameters& np)
+auto pipeline_inputs(const TriangleMesh& tm, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  Part_hierarchy<GT>* const hierarchy =
-    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr));
-  return parameters::combine(
-    CGAL::parameters::geom_traits(choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits))),
-    CGAL::parameters::vertex_point_map(vpm),
-    CGAL::parameters::face_index_map(CGAL::get_initialized_face_index_map(tm, np)),
-    parameters::normalization(optional_parameter<Normalization>(np, internal_np::normalization)),
-    parameters::part_hierarchy(hierarchy)
-#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, TYPE, DEFAULT, ...)                           \
-    , parameters::NAME(pipeline_parameter<TYPE>(np, internal_np::NAME, defaults::NAME, #NAME))
-#define CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE(NAME, TYPE, DEFAULT, ...)                      \
-    , CGAL::parameters::NAME(pipeline_parameter<TYPE>(np, CGAL::internal_np::NAME, defaults::NAME, #NAME))
-    CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE,
-                                       CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE)
-#undef CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE
-#undef CGAL_PART_DECOMPOSITION_PIPELINE_VALUE
-  );
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  return Pipeline_inputs<GT, std::decay_t<decltype(vpm)>, std::decay_t<decltype(fim)> >{
+    choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits)), vpm, fim,
+    optional_parameter<Normalization>(np, internal_np::normalization),
+    choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr))};
 }
 
-template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
-void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np,
-                               Decomposition_pass<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>& pass,
-                               Stage_timings& timings);
+// `decompose()` on its inputs and values: the parts per face index, their superquadrics and the
+// time of each stage but the total. The compiled library holds it for the common mesh types, so
+// that a program that links it compiles neither the pipeline nor the pack of its parameters.
+template <typename ConcurrencyTag, typename TriangleMesh, typename GeomTraits, typename VertexPointMap,
+          typename FaceIndexMap>
+void decompose_values(const TriangleMesh& tm, const Pipeline_inputs<GeomTraits, VertexPointMap, FaceIndexMap>& in,
+                      const Pipeline_values& values, Decomposition_pass<GeomTraits>& pass, Stage_timings& timings);
 
 } // namespace internal
 /// \endcond
@@ -152,8 +177,8 @@ namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
 
-typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
-  Compiled_parameters;
+typedef decltype(pipeline_inputs(std::declval<const Compiled_mesh&>(), CGAL::parameters::default_values()))
+  Compiled_inputs;
 
 } // namespace internal
 } // namespace Part_decomposition
@@ -161,8 +186,9 @@ typedef decltype(pipeline_parameters(std::declval<const Compiled_mesh&>(), CGAL:
 
 #define CGAL_PART_DECOMPOSITION_INSTANTIATE_DECOMPOSE(EXTERN, CONCURRENCY_TAG)                      \
   namespace CGAL { namespace Part_decomposition { namespace internal {                            \
-  EXTERN template void decompose_with_parameters<CONCURRENCY_TAG, Compiled_mesh, Compiled_parameters>( \
-    const Compiled_mesh&, const Compiled_parameters&, Decomposition_pass<CGAL::Epick>&, Stage_timings&); \
+  EXTERN template void decompose_values<CONCURRENCY_TAG>(                                         \
+    const Compiled_mesh&, const Compiled_inputs&, const Pipeline_values&, Decomposition_pass<CGAL::Epick>&, \
+    Stage_timings&);                                                                               \
   } } }
 /// \endcond
 #endif
@@ -294,17 +320,17 @@ std::size_t decompose(const TriangleMesh& tm, FacePartMap face_part_map,
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto pipeline_np = internal::pipeline_parameters(tm, np);
+  const auto inputs = internal::pipeline_inputs(tm, np);
   internal::Decomposition_pass<GT> pass;
   Stage_timings timings;
 #ifdef CGAL_PART_DECOMPOSITION_COMPILED_LIBRARY
   static_assert(std::is_same<TriangleMesh, internal::Compiled_mesh>::value &&
-                  std::is_same<std::decay_t<decltype(pipeline_np)>, internal::Compiled_parameters>::value,
+                  std::is_same<std::decay_t<decltype(inputs)>, internal::Compiled_inputs>::value,
                 "the library CGAL::Part_decomposition holds decompose() for a CGAL::Surface_mesh of Epick points with "
                 "its own vertex point and face index maps: link CGAL::Part_decomposition_headers for other types");
 #endif
-  internal::decompose_with_parameters<ConcurrencyTag>(tm, pipeline_np, pass, timings);
-  internal::put_face_values(tm, get_parameter(pipeline_np, CGAL::internal_np::face_index), pass.parts, face_part_map);
+  internal::decompose_values<ConcurrencyTag>(tm, inputs, internal::pipeline_values(np), pass, timings);
+  internal::put_face_values(tm, inputs.fim, pass.parts, face_part_map);
   auto out = choose_parameter(get_parameter(np, internal_np::primitive_output_iterator), CGAL::Emptyset_iterator());
   for(const Superquadric<GT>& sq : pass.primitives) *out++ = sq;
   timings.total = internal::seconds_since(t0);

@@ -147,7 +147,7 @@ void decompose_once(Decomposer& d, const TriangleMesh& tm, const NamedParameters
 
 // `decompose()` on the pack of `pipeline_parameters()` (every value present, with the types of
 // `CGAL_PART_DECOMPOSITION_PARAMETERS`): the parts per face index, their superquadrics and
-// the time of each stage but the total. The compiled library holds it for the common mesh types.
+// the time of each stage but the total.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters>
 void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np,
                                Decomposition_pass<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>& pass,
@@ -169,6 +169,32 @@ void decompose_with_parameters(const TriangleMesh& tm, const NamedParameters& np
   decompose_once<ConcurrencyTag>(
     d, tm, parameters::combine(np, parameters::normalization(d.normalization()), face_graphs_parameter(&graphs)), pass,
     timings);
+}
+
+// The pack of named parameters of `decompose_values()`: every value present, in one type per mesh,
+// vertex point map, face index map and traits.
+template <typename GeomTraits, typename VertexPointMap, typename FaceIndexMap>
+auto pipeline_parameters(const Pipeline_inputs<GeomTraits, VertexPointMap, FaceIndexMap>& in, const Pipeline_values& v)
+{
+  return parameters::combine(
+    CGAL::parameters::geom_traits(in.traits), CGAL::parameters::vertex_point_map(in.vpm),
+    CGAL::parameters::face_index_map(in.fim), parameters::normalization(in.normalization),
+    parameters::part_hierarchy(in.hierarchy)
+#define CGAL_PART_DECOMPOSITION_PIPELINE_VALUE(NAME, ...) , parameters::NAME(v.NAME)
+#define CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE(NAME, ...) , CGAL::parameters::NAME(v.NAME)
+    CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_PIPELINE_VALUE,
+                                       CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE)
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_CGAL_VALUE
+#undef CGAL_PART_DECOMPOSITION_PIPELINE_VALUE
+  );
+}
+
+template <typename ConcurrencyTag, typename TriangleMesh, typename GeomTraits, typename VertexPointMap,
+          typename FaceIndexMap>
+void decompose_values(const TriangleMesh& tm, const Pipeline_inputs<GeomTraits, VertexPointMap, FaceIndexMap>& in,
+                      const Pipeline_values& values, Decomposition_pass<GeomTraits>& pass, Stage_timings& timings)
+{
+  decompose_with_parameters<ConcurrencyTag>(tm, pipeline_parameters(in, values), pass, timings);
 }
 
 } // namespace internal
