@@ -222,10 +222,11 @@ public:
   {
     internal::add_seconds(m_timings.pieces,
                           [&] { m_segmented = Part_decomposition::segment_pieces<ConcurrencyTag>(m_tm, with_mesh(np)); });
+    m_splittable.clear();
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
     computed(PIECES);
-    if(has(DISTANCE_FIELD)) volumetric_pieces(np);
+    if(has(DISTANCE_FIELD)) volumetric_pieces<ConcurrencyTag>(np);
     return m_s.pieces;
   }
 
@@ -234,15 +235,14 @@ public:
   /// piece is splittable (`splittable_pieces()`) and, once the distance field is computed, the
   /// volumetric stages decompose it (`volumetric_pieces()`). Before the distance field is known,
   /// it tells whether it is worth computing. Segments the pieces if they are missing.
-  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  template <typename ConcurrencyTag = CGAL::Sequential_tag,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
   bool needs_volumetric_stages(const NamedParameters& np = CGAL::parameters::default_values())
   {
     if(!internal::read_piece_parameters(np).use_pieces) return true;
-    if(!has(PIECES)) segment_pieces(np);
-    if(has(DISTANCE_FIELD)) return internal::any_of_flags(volumetric_pieces(np));
-    return internal::add_seconds(m_timings.pieces, [&] {
-      return internal::any_of_flags(Part_decomposition::splittable_pieces(m_tm, m_s.pieces, with_mesh(np)));
-    });
+    if(!has(PIECES)) segment_pieces<ConcurrencyTag>(np);
+    if(has(DISTANCE_FIELD)) return internal::any_of_flags(volumetric_pieces<ConcurrencyTag>(np));
+    return internal::any_of_flags(splittable<ConcurrencyTag>(np));
   }
 
   /// computes the hierarchical Flow/Freeze prior with `compute_flow_freeze_prior()`; the distance
@@ -271,8 +271,7 @@ public:
     if(use_pieces)
     {
       if(!has(PIECES)) segment_pieces<ConcurrencyTag>(np);
-      thin_faces = internal::faces_of_pieces(m_segmented, Part_decomposition::splittable_pieces<ConcurrencyTag>(
-                                                                m_tm, m_segmented, with_mesh(np)));
+      thin_faces = internal::faces_of_pieces(m_segmented, splittable<ConcurrencyTag>(np));
     }
     internal::add_seconds(m_timings.tsdf, [&] {
       m_s.tsdf = internal::compute_tsdf_of_checked_mesh<ConcurrencyTag>(m_tm, &m_s.prior, with_mesh(np),
@@ -281,7 +280,7 @@ public:
     computed(DISTANCE_FIELD);
     m_s.pieces = m_segmented;
     m_s.volumetric_pieces.clear();
-    if(has(PIECES)) volumetric_pieces(np);
+    if(has(PIECES)) volumetric_pieces<ConcurrencyTag>(np);
     return m_s.tsdf;
   }
 
@@ -352,7 +351,7 @@ public:
   {
     const auto mnp = with_mesh(np);
     m_switches = internal::method_switches(np);
-    bool fitted = needs_volumetric_stages(np);
+    bool fitted = needs_volumetric_stages<ConcurrencyTag>(np);
     if(fitted && !has(FITTING) && !has(PATCHES))
     {
       // The fitting's own loops are short (one primitive at a time), so its sequential part is the
@@ -506,19 +505,31 @@ private:
     if(m_switches.use_pieces && !has(DISTANCE_FIELD))
     {
       compute_distance_field<ConcurrencyTag>(np);
-      if(!needs_volumetric_stages(np)) return false;
+      if(!needs_volumetric_stages<ConcurrencyTag>(np)) return false;
     }
     fit_primitives<ConcurrencyTag>(np);
     return true;
   }
 
   // The volumetric pieces, computed once per pieces and distance field (they turn the pieces).
-  template <typename NamedParameters>
+  template <typename ConcurrencyTag, typename NamedParameters>
   const std::vector<std::uint8_t>& volumetric_pieces(const NamedParameters& np)
   {
     if(m_s.volumetric_pieces.empty())
-      m_s.volumetric_pieces = Part_decomposition::volumetric_pieces(m_tm, m_s.pieces, m_s.tsdf, with_mesh(np));
+      m_s.volumetric_pieces =
+        Part_decomposition::volumetric_pieces<ConcurrencyTag>(m_tm, m_s.pieces, m_s.tsdf, with_mesh(np));
     return m_s.volumetric_pieces;
+  }
+
+  // The splittable pieces of the segmented pieces, computed once per segmentation.
+  template <typename ConcurrencyTag, typename NamedParameters>
+  const std::vector<std::uint8_t>& splittable(const NamedParameters& np)
+  {
+    if(m_splittable.empty())
+      internal::add_seconds(m_timings.pieces, [&] {
+        m_splittable = Part_decomposition::splittable_pieces<ConcurrencyTag>(m_tm, m_segmented, with_mesh(np));
+      });
+    return m_splittable;
   }
 
   // The stage dependencies, written once: the stages each result feeds directly. A stage computed
@@ -559,6 +570,7 @@ private:
   double m_margin;
   Normalization m_normalization;
   Piece_segmentation m_segmented; // as segmented, before volumetric_pieces() turned open pieces
+  std::vector<std::uint8_t> m_splittable; // per piece of m_segmented; empty until known
   internal::Stage_results<Geom_traits> m_s;
   Method_variant m_switches; // of the last compose_parts(), for the hierarchy
   Stage_timings m_timings;
