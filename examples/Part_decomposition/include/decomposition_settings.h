@@ -31,23 +31,10 @@ namespace Part_decomposition_tools {
 
 namespace PD = CGAL::Part_decomposition;
 
-// A default of PD::defaults as the value of a setting (a list as a std::vector).
-template <typename T, typename D>
-T setting_default(const D& d)
-{
-  if constexpr(std::is_same<T, D>::value) return d;
-  else return T(std::begin(d), std::end(d));
-}
-
-// Every named parameter of PD::parameter_table that holds a value, at its default. Each is a
-// field, passed by named_parameters() (the reader's weld_tolerance is passed too, and ignored).
-struct Decomposition_settings
-{
-#define PART_DECOMPOSITION_TOOLS_FIELD(NAME, ...)                                                \
-  PD::internal::value_type::NAME NAME = setting_default<PD::internal::value_type::NAME>(PD::defaults::NAME);
-  CGAL_PART_DECOMPOSITION_PARAMETERS(PART_DECOMPOSITION_TOOLS_FIELD, PART_DECOMPOSITION_TOOLS_FIELD)
-#undef PART_DECOMPOSITION_TOOLS_FIELD
-};
+// Every named parameter of PD::parameter_table that holds a value, at its default: the library's
+// own structure of the values of decompose(), one field per parameter, passed by
+// named_parameters() (the reader's weld_tolerance is passed too, and ignored).
+typedef PD::internal::Pipeline_values Decomposition_settings;
 
 // Calls f(name, member pointer) for every field of Decomposition_settings, in table order.
 template <typename F>

@@ -101,7 +101,8 @@ T pipeline_parameter(const NamedParameters& np, Tag tag, const Default& fallback
 }
 
 // Every value of the list of parameters, at its default or as the program gave it, in the type of
-// the pipeline: what `decompose()` hands the pipeline, whatever parameters the program gave.
+// the pipeline: what `decompose()` hands the pipeline, whatever parameters the program gave (and
+// what the package's programs hold their users' settings in).
 struct Pipeline_values
 {
 #define CGAL_PART_DECOMPOSITION_PIPELINE_FIELD(NAME, TYPE, ...) TYPE NAME = Pipeline_value<TYPE>::of(defaults::NAME, #NAME);
@@ -142,11 +143,9 @@ auto pipeline_inputs(const TriangleMesh& tm, const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  return Pipeline_inputs<GT, std::decay_t<decltype(vpm)>, std::decay_t<decltype(fim)> >{
-    choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits)), vpm, fim,
+  const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
+  return Pipeline_inputs<GT, decltype(maps.vpm), decltype(maps.fim)>{
+    choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits)), maps.vpm, maps.fim,
     optional_parameter<Normalization>(np, internal_np::normalization),
     choose_parameter(get_parameter(np, internal_np::part_hierarchy), static_cast<Part_hierarchy<GT>*>(nullptr))};
 }

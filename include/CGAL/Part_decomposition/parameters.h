@@ -272,13 +272,6 @@ struct Default_of<std::vector<E> >
   static constexpr std::array<E, sizeof...(A)> make(A... a) { return {{E(a)...}}; }
 };
 
-// The value type of each parameter of the list, by its name: for the programs that hold the values.
-namespace value_type {
-#define CGAL_PART_DECOMPOSITION_VALUE_TYPE(NAME, TYPE, ...) typedef TYPE NAME;
-CGAL_PART_DECOMPOSITION_PARAMETERS(CGAL_PART_DECOMPOSITION_VALUE_TYPE, CGAL_PART_DECOMPOSITION_VALUE_TYPE)
-#undef CGAL_PART_DECOMPOSITION_VALUE_TYPE
-} // namespace value_type
-
 // The text of a default as the list writes it, without its parentheses.
 constexpr std::string_view unparenthesized(std::string_view text) { return text.substr(1, text.size() - 2); }
 

@@ -168,20 +168,6 @@ constexpr double minimum_bounding_fraction = 0.5;
 // set gives the same parts from 0.0003 to 0.01 (benchmark/Part_decomposition/RESULTS.md).
 constexpr double maximum_junction_fraction = 0.001;
 
-// The mesh maps of `np`, read once for the steps below.
-template <typename TriangleMesh, typename NamedParameters>
-struct Mesh_maps
-{
-  typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type vpm;
-  typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type fim;
-
-  Mesh_maps(const TriangleMesh& tm, const NamedParameters& np)
-    : vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                             get_const_property_map(CGAL::vertex_point, tm))),
-      fim(CGAL::get_initialized_face_index_map(tm, np))
-  {}
-};
-
 // The box-like superquadric of the principal-axis bounding box of a surface given as triangles
 // (`points` holds three corners per triangle): what a part gets when no primitive was fitted to
 // it (a flat sheet has no volume to fit). The axes are those of the surface's second moments, so

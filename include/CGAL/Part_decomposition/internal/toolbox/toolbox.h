@@ -11,6 +11,7 @@
 // The small tools every stage uses: parallel loops, a 3D vector, quantiles, voxel neighbours.
 
 #include <CGAL/assertions.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
@@ -158,6 +159,20 @@ void run_side_by_side(const F& f, const G& g)
     g();
   }
 }
+
+// The vertex point map and the face index map of `np` (the mesh's own if absent), read once.
+template <typename TriangleMesh, typename NamedParameters>
+struct Mesh_maps
+{
+  typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type vpm;
+  typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type fim;
+
+  Mesh_maps(const TriangleMesh& tm, const NamedParameters& np)
+    : vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                             get_const_property_map(CGAL::vertex_point, tm))),
+      fim(CGAL::get_initialized_face_index_map(tm, np))
+  {}
+};
 
 // Wall-clock seconds since `t0`, for the stage timings.
 inline double seconds_since(const std::chrono::steady_clock::time_point& t0)
