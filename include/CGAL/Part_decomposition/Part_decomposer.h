@@ -57,7 +57,6 @@ void check_stage_parameters(const NamedParameters& np)
   read_fitting_parameters(np);
   read_over_segmentation_parameters(np);
   read_assignment_parameters(np);
-  read_sheet_merging_parameters(np);
   read_piece_parameters(np);
   read_hierarchy_parameters(np);
 }
@@ -104,8 +103,9 @@ void run_part_stages(const TriangleMesh& tm, const NamedParameters& np, bool fit
     const auto part_map = boost::make_iterator_property_map(v.parts.begin(), fim);
     v.part_to_primitive = assign_parts<ConcurrencyTag>(
       tm, boost::make_iterator_property_map(v.patches.begin(), fim), s.fitting.labels, s.tsdf, part_map, np);
-    if(read_assignment_parameters(np).keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
-    if(read_sheet_merging_parameters(np).merge_thin_sheets)
+    const Method_variant switches = method_switches(np);
+    if(switches.keep_residual_patches) separate_residual_patches(tm, v, s.prior, s.fitting, np);
+    if(switches.merge_thin_sheets)
       merge_thin_sheet_parts<ConcurrencyTag>(tm, part_map, v.part_to_primitive, s.fitting, s.tsdf, np);
   }
   s.composed = Part_decomposition::compose_parts<ConcurrencyTag>(tm, s.pieces, s.volumetric_pieces, v, s.fitting, np);

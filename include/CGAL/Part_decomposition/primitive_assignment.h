@@ -165,7 +165,6 @@ std::vector<std::int32_t> vote_patch_labels(const std::vector<std::size_t>& patc
 struct Assignment_parameters
 {
   double vote_temperature = defaults::vote_temperature;
-  bool keep_residual_patches = Method_variant().keep_residual_patches;
   double residual_tolerance = defaults::residual_tolerance;
   double boundary_smoothness = defaults::boundary_smoothness;
 };
@@ -177,7 +176,6 @@ Assignment_parameters read_assignment_parameters(const NamedParameters& np)
   p.vote_temperature = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::vote_temperature), p.vote_temperature);
   check_positive(p.vote_temperature, "vote_temperature");
-  p.keep_residual_patches = internal::method_switches(np).keep_residual_patches;
   p.residual_tolerance = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::residual_tolerance), p.residual_tolerance);
   check_non_negative(p.residual_tolerance, "residual_tolerance");

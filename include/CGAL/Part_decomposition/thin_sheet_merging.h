@@ -288,21 +288,6 @@ std::size_t merge_thin_sheets_on_faces(const TriangleMesh& tm, const VertexPoint
   return K2;
 }
 
-
-// The package parameters of the thin-sheet merge: its switch in `decompose()`.
-struct Sheet_merging_parameters
-{
-  bool merge_thin_sheets = Method_variant().merge_thin_sheets;
-};
-
-template <typename NamedParameters>
-Sheet_merging_parameters read_sheet_merging_parameters(const NamedParameters& np)
-{
-  Sheet_merging_parameters p;
-  p.merge_thin_sheets = internal::method_switches(np).merge_thin_sheets;
-  return p;
-}
-
 } // namespace internal
 /// \endcond
 
