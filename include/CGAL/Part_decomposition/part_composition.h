@@ -257,7 +257,7 @@ inline std::vector<std::uint8_t> residual_part_flags(const std::vector<double>& 
 // The leaves and groups of the hierarchy: faces with the same (part, volumetric part, region,
 // patch) are one leaf, with the same (part, volumetric part) one group. A patch counts only in
 // the pieces the volumetric stages decomposed (`patch_of_face`).
-template <typename GeomTraits, typename PatchOfFace>
+template <typename ConcurrencyTag, typename GeomTraits, typename PatchOfFace>
 void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector<std::size_t>& region,
                   const PatchOfFace& patch_of_face, Composed_parts<GeomTraits>& c)
 {
@@ -265,10 +265,10 @@ void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector
   std::vector<std::array<std::size_t, 4> > key(nf);
   for(std::size_t i = 0; i < nf; ++i)
     key[i] = {{c.parts[i], volume_part.empty() ? 0 : volume_part[i], region.empty() ? 0 : region[i], patch_of_face(i)}};
-  index_of_keys(key, c.finest_parts);
+  index_of_keys<ConcurrencyTag>(key, c.finest_parts);
   c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
   for(auto& k : key) k[2] = k[3] = 0;
-  index_of_keys(key, c.part_groups);
+  index_of_keys<ConcurrencyTag>(key, c.part_groups);
 }
 
 // Per piece: 1 if it is splittable (`splittable_pieces(adj, ...)`) and not an assembly of sheets,
@@ -352,11 +352,13 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
   // the triangles by face index, in the unit frame of the field
   std::vector<internal::Triangle_points> triangles(num_faces(tm));
-  for(std::size_t i = 0; i < triangles.size(); ++i)
-    for(int c = 0; c < 3; ++c)
-      triangles[i][std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
+  internal::for_each_range<ConcurrencyTag>(triangles.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      for(int c = 0; c < 3; ++c)
+        triangles[i][std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
+  }, 4096);
   const double depth = internal::bounding_probe_depth * tsdf.voxel_size;
-  const internal::Bounding_fractions sides = internal::bounding_area_fractions(
+  const internal::Bounding_fractions sides = internal::bounding_area_fractions<ConcurrencyTag>(
     triangles, pieces.piece, pieces.number_of_pieces, tsdf.grid, tsdf.values, depth);
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
@@ -501,7 +503,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
     internal::part_primitives<GeomTraits>(tm, maps.vpm, maps.fim, c.parts, c.part_to_primitive, fitting.input_primitives);
   c.residual_parts = internal::residual_part_flags(face_area, c.parts, c.number_of_parts(), parts.residual_faces);
   const bool patches = has_volume && !parts.patches.empty();
-  internal::finest_parts(volume_part, p.use_pieces ? pieces.region : std::vector<std::size_t>(), [&](std::size_t i) {
+  internal::finest_parts<ConcurrencyTag>(volume_part, p.use_pieces ? pieces.region : std::vector<std::size_t>(), [&](std::size_t i) {
     return patches && (!p.use_pieces || volumetric[pieces.piece[i]]) ? parts.patches[i] : std::size_t(0);
   }, c);
   return c;

@@ -70,33 +70,50 @@ struct Bounding_fractions
   std::vector<double> bounding, outward;
 };
 
+// +1 if face `t` has the inside of `field` below it (against its normal) and the outside above, -1
+// for the reverse, 0 otherwise or for a face of zero area; `twice_area` receives its double area.
 template <typename Grid>
+int bounding_side(const Triangle_points& t, const Grid& grid, const std::vector<double>& field, double depth,
+                  double& twice_area)
+{
+  const Vec3 n = cross3(sub3(t[1], t[0]), sub3(t[2], t[0]));
+  twice_area = norm3(n);
+  if(!(twice_area > 0.)) return 0;
+  Vec3 below, above;
+  for(int a = 0; a < 3; ++a)
+  {
+    const double c = (t[0][a] + t[1][a] + t[2][a]) / 3., step = depth * n[a] / twice_area;
+    below[a] = c - step;
+    above[a] = c + step;
+  }
+  const bool inside_below = std::signbit(interpolate_field(grid, field, below));
+  if(inside_below == std::signbit(interpolate_field(grid, field, above))) return 0;
+  return inside_below ? 1 : -1;
+}
+
+template <typename ConcurrencyTag, typename Grid>
 Bounding_fractions bounding_area_fractions(const std::vector<Triangle_points>& triangles,
                                            const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
                                            const Grid& grid, const std::vector<double>& field, double depth)
 {
+  const std::size_t nf = triangles.size();
+  std::vector<double> twice_area(nf);
+  std::vector<signed char> side(nf);
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) side[i] = (signed char)(bounding_side(triangles[i], grid, field, depth, twice_area[i]));
+  }, 1024);
+  // the sums in face order, whatever the number of threads
   std::vector<double> area(number_of_pieces, 0.);
   Bounding_fractions out;
   out.bounding.assign(number_of_pieces, 0.);
   out.outward.assign(number_of_pieces, 0.);
-  for(std::size_t i = 0; i < triangles.size(); ++i)
+  for(std::size_t i = 0; i < nf; ++i)
   {
-    const Triangle_points& t = triangles[i];
-    const Vec3 n = cross3(sub3(t[1], t[0]), sub3(t[2], t[0]));
-    const double twice_area = norm3(n);
-    if(!(twice_area > 0.)) continue;
-    Vec3 below, above;
-    for(int a = 0; a < 3; ++a)
-    {
-      const double c = (t[0][a] + t[1][a] + t[2][a]) / 3., step = depth * n[a] / twice_area;
-      below[a] = c - step;
-      above[a] = c + step;
-    }
-    area[piece[i]] += twice_area;
-    const bool inside_below = std::signbit(interpolate_field(grid, field, below));
-    if(inside_below == std::signbit(interpolate_field(grid, field, above))) continue;
-    out.bounding[piece[i]] += twice_area;
-    out.outward[piece[i]] += inside_below ? twice_area : -twice_area;
+    if(!(twice_area[i] > 0.)) continue;
+    area[piece[i]] += twice_area[i];
+    if(side[i] == 0) continue;
+    out.bounding[piece[i]] += twice_area[i];
+    out.outward[piece[i]] += side[i] > 0 ? twice_area[i] : -twice_area[i];
   }
   for(std::size_t p = 0; p < number_of_pieces; ++p)
     if(area[p] > 0.)

@@ -11,12 +11,6 @@
 #include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
-#include <CGAL/Union_find.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_sort.h>
-#endif
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -102,12 +96,7 @@ std::vector<std::uint64_t> uncut_edges_by_angle(const Face_adjacency& adj, const
       }
     }
   }
-#ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel_tag<ConcurrencyTag>())
-    tbb::parallel_sort(edges.begin(), edges.end());
-  else
-#endif
-    std::sort(edges.begin(), edges.end());
+  sort_distinct<ConcurrencyTag>(edges.begin(), edges.end());
   return edges;
 }
 
@@ -135,30 +124,26 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
 
   const std::vector<std::uint64_t> edges = uncut_edges_by_angle<ConcurrencyTag>(adj, cut, label, large, flat_angle);
 
-  // Union-find over faces; the value of each root holds its piece: the area and the
-  // area-weighted first and second moments of its face centroids, and its smallest face index.
+  // Disjoint sets of faces; the piece of each root: its area, the area-weighted first and second
+  // moments of its face centroids, and its smallest face index.
   struct Piece { double area, mx, my, mz, m2; std::size_t first; };
-  typedef CGAL::Union_find<Piece> Pieces;
-  Pieces pieces;
-  std::vector<typename Pieces::handle> piece_of;
-  piece_of.reserve(nf);
+  Index_sets sets(nf);
+  std::vector<Piece> piece(nf);
   for(std::size_t i = 0; i < nf; ++i)
   {
     const double* c = &adj.centroid[3 * i];
     const double a = adj.area[i];
-    piece_of.push_back(pieces.make_set(Piece{a, a * c[0], a * c[1], a * c[2],
-                                             a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), i}));
+    piece[i] = Piece{a, a * c[0], a * c[1], a * c[2], a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), i};
   }
   const double max_gyration = gyration_ratio * max_area;
   for(const std::uint64_t key : edges)
   {
     const std::size_t slot = std::size_t((key >> 1) & 0x7fffffffu);
     const bool flat = (key & 1u) != 0;
-    const typename Pieces::handle a = pieces.find(piece_of[slot / 3]);
-    const typename Pieces::handle b = pieces.find(piece_of[adj.neighbor[slot]]);
+    const std::size_t a = sets.find(slot / 3), b = sets.find(adj.neighbor[slot]);
     if(a == b) continue;
-    const Piece& pa = *a;
-    const Piece& pb = *b;
+    const Piece& pa = piece[a];
+    const Piece& pb = piece[b];
     const Piece m{pa.area + pb.area, pa.mx + pb.mx, pa.my + pb.my, pa.mz + pb.mz, pa.m2 + pb.m2,
                   (std::min)(pa.first, pb.first)};
     if(!flat)
@@ -170,26 +155,32 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
         if(g > max_gyration) continue;
       }
     }
-    pieces.unify_sets(a, b);
-    *pieces.find(a) = m;
+    piece[sets.unite(a, b)] = m;
   }
   // Pieces of split patches get ids after the unchanged ones; renumbering orders them all.
   for(std::size_t i = 0; i < nf; ++i)
-    if(large[label[i]]) label[i] = number_of_patches + pieces.find(piece_of[i])->first;
+    if(large[label[i]]) label[i] = number_of_patches + piece[sets.find(i)].first;
   return renumber_by_first_face(label);
 }
 
-// The rank of each key among the distinct keys (`index`), and their number.
-template <typename Key>
+// The rank of each key among the distinct keys (`index`), and their number: the keys sorted with
+// their indices, ranked in one pass.
+template <typename ConcurrencyTag, typename Key>
 std::size_t index_of_keys(const std::vector<Key>& key, std::vector<std::size_t>& index)
 {
-  std::vector<Key> sorted(key);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  std::vector<std::pair<Key, std::size_t> > sorted(key.size());
+  for_each_range<ConcurrencyTag>(key.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) sorted[i] = std::make_pair(key[i], i);
+  }, 4096);
+  sort_distinct<ConcurrencyTag>(sorted.begin(), sorted.end());
   index.resize(key.size());
-  for(std::size_t i = 0; i < key.size(); ++i)
-    index[i] = std::size_t(std::lower_bound(sorted.begin(), sorted.end(), key[i]) - sorted.begin());
-  return sorted.size();
+  std::size_t rank = 0;
+  for(std::size_t s = 0; s < sorted.size(); ++s)
+  {
+    if(s > 0 && sorted[s].first != sorted[s - 1].first) ++rank;
+    index[sorted[s].second] = rank;
+  }
+  return sorted.empty() ? 0 : rank + 1;
 }
 
 // Merges every patch whose area is below `min_area` into the neighbouring patch across its

@@ -55,7 +55,7 @@ inline std::uint64_t hash_of_points(const double* x, std::size_t n)
 // Faces with the same three corners are twins (`adj.twin`: the first of them). Faces are grouped
 // by a hash of their sorted corners and compared exactly within a group: sorting the corners of a
 // million faces costs seconds and a hundred bytes per face.
-template <typename Corners>
+template <typename ConcurrencyTag, typename Corners>
 void find_twin_faces(const Corners& corners, Face_adjacency& adj)
 {
   typedef std::array<std::array<double, 3>, 3> C;
@@ -66,8 +66,10 @@ void find_twin_faces(const Corners& corners, Face_adjacency& adj)
     return c;
   };
   std::vector<std::pair<std::uint64_t, std::size_t> > hashed(nf);
-  for(std::size_t i = 0; i < nf; ++i) hashed[i] = std::make_pair(hash_of_points(sorted_corners(i)[0].data(), 9), i);
-  std::sort(hashed.begin(), hashed.end());
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) hashed[i] = std::make_pair(hash_of_points(sorted_corners(i)[0].data(), 9), i);
+  }, 4096);
+  sort_distinct<ConcurrencyTag>(hashed.begin(), hashed.end());
   adj.twin.assign(nf, Face_adjacency::no_face);
   std::vector<std::pair<C, std::size_t> > group;
   for(std::size_t s = 0; s < nf;)
@@ -97,7 +99,7 @@ void find_twin_faces(const Corners& corners, Face_adjacency& adj)
 // Only the edges of border slots are sorted (none on a closed mesh), then every slot on one of
 // them (a fin on a plate glues a border edge to an interior one). Returns whether a slot was
 // glued or a twin found: if not, the graph reads as the unglued one.
-template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 bool glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
                                   Face_adjacency& adj)
 {
@@ -148,7 +150,7 @@ bool glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
     }
     s = e;
   }
-  find_twin_faces(corners, adj);
+  find_twin_faces<ConcurrencyTag>(corners, adj);
   return glued || std::any_of(adj.twin.begin(), adj.twin.end(), [](std::size_t t) { return t != Face_adjacency::no_face; });
 }
 
@@ -160,7 +162,7 @@ Face_adjacency piece_adjacency(const TriangleMesh& tm, const FaceIndexMap& fim, 
                                const NamedParameters& np)
 {
   Face_adjacency adj = face_adjacency_of<ConcurrencyTag>(tm, fim, np);
-  glue_coincident_border_edges(tm, fim, vpm, adj);
+  glue_coincident_border_edges<ConcurrencyTag>(tm, fim, vpm, adj);
   return adj;
 }
 
@@ -184,7 +186,7 @@ Face_graphs build_face_graphs(const TriangleMesh& tm, const FaceIndexMap& fim, c
 {
   Face_graphs g;
   auto glued = std::make_shared<Face_adjacency>(face_adjacency_of<ConcurrencyTag>(tm, fim, np));
-  const bool changed = glue_coincident_border_edges(tm, fim, vpm, *glued);
+  const bool changed = glue_coincident_border_edges<ConcurrencyTag>(tm, fim, vpm, *glued);
   g.pieces = glued;
   g.plain = changed ? std::make_shared<const Face_adjacency>(face_adjacency_of<ConcurrencyTag>(tm, fim, np)) : g.pieces;
   return g;
@@ -203,20 +205,17 @@ template <typename Join>
 std::size_t face_components(const Face_adjacency& adj, const Join& join, std::vector<std::size_t>& label)
 {
   const std::size_t nf = adj.number_of_faces;
-  CGAL::Union_find<std::size_t> uf;
-  std::vector<CGAL::Union_find<std::size_t>::handle> handle;
-  handle.reserve(nf);
-  for(std::size_t i = 0; i < nf; ++i) handle.push_back(uf.make_set(i));
+  Index_sets sets(nf);
   for(std::size_t i = 0; i < nf; ++i)
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
-      if(j != Face_adjacency::no_face && join(i, k)) uf.unify_sets(handle[i], handle[j]);
+      if(j != Face_adjacency::no_face && join(i, k)) sets.unite(i, j);
     }
   for(std::size_t i = 0; i < adj.twin.size(); ++i)
-    if(adj.twin[i] != Face_adjacency::no_face) uf.unify_sets(handle[i], handle[adj.twin[i]]);
+    if(adj.twin[i] != Face_adjacency::no_face) sets.unite(i, adj.twin[i]);
   label.resize(nf);
-  for(std::size_t i = 0; i < nf; ++i) label[i] = *uf.find(handle[i]);
+  for(std::size_t i = 0; i < nf; ++i) label[i] = sets.find(i);
   return renumber_by_first_face(label);
 }
 

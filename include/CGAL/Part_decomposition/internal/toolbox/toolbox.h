@@ -15,11 +15,14 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 #include <type_traits>
 #include <vector>
 
@@ -27,6 +30,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
 #endif
 
 namespace CGAL {
@@ -193,6 +197,49 @@ decltype(auto) add_seconds(double& total, const F& f)
   const Timed timed{total, std::chrono::steady_clock::now()};
   return f();
 }
+
+// Sorts [first, last) with `less`, with TBB when `ConcurrencyTag` is parallel: only for ranges in
+// which no two elements compare equal, so that the order does not depend on the sort.
+template <typename ConcurrencyTag, typename Iterator, typename Less = std::less<> >
+void sort_distinct(Iterator first, Iterator last, const Less& less = Less())
+{
+  static_check_concurrency_tag<ConcurrencyTag>();
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
+  {
+    tbb::parallel_sort(first, last, less);
+    return;
+  }
+#endif
+  std::sort(first, last, less);
+}
+
+// Disjoint sets of the indices [0, n) on two flat arrays (boost::disjoint_sets): CGAL::Union_find
+// allocates a node per element, and following its pointers over millions of faces misses the
+// cache at every step.
+class Index_sets
+{
+public:
+  explicit Index_sets(std::size_t n) : m_rank(n, 0), m_parent(n), m_sets(m_rank.data(), m_parent.data())
+  {
+    std::iota(m_parent.begin(), m_parent.end(), std::size_t(0));
+  }
+  Index_sets(const Index_sets&) = delete;
+  Index_sets& operator=(const Index_sets&) = delete;
+
+  std::size_t find(std::size_t i) { return m_sets.find_set(i); }
+  // joins the sets of i and j; returns the root of the joined set
+  std::size_t unite(std::size_t i, std::size_t j)
+  {
+    const std::size_t a = find(i), b = find(j);
+    if(a != b) m_sets.link(a, b);
+    return find(a);
+  }
+
+private:
+  std::vector<std::size_t> m_rank, m_parent;
+  boost::disjoint_sets<std::size_t*, std::size_t*> m_sets;
+};
 
 // Writes `values` (indexed by `fim`) to a caller's face property map: the one conversion from the
 // stages' face-indexed vectors back to the caller's map.
