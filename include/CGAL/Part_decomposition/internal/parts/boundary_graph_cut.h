@@ -88,19 +88,29 @@ inline double slot_cut_cost(const Face_adjacency& adj, const Face_corners& corne
   return edge_scale * slot_length(corners, i, k) * cut_penalty(adj.angle[3 * i + std::size_t(k)], concave);
 }
 
-// The rank of face `j` in the increasing list `faces`, or Label_problem::fixed.
-inline std::size_t rank_in(const std::vector<std::size_t>& faces, std::size_t j)
+// The rank of a face in its contested set (the set's faces by increasing index), or
+// Label_problem::fixed for a face outside the set `set`: an array lookup, where a binary search
+// per link was a fifth of the labelling of a large mesh.
+struct Set_ranks
 {
-  const auto it = std::lower_bound(faces.begin(), faces.end(), j);
-  return it != faces.end() && *it == j ? std::size_t(it - faces.begin()) : Label_problem::fixed;
-}
+  const std::vector<std::size_t>& set_of; // per face, its set (read for contested faces only)
+  const std::vector<std::uint8_t>& contested;
+  const std::vector<std::size_t>& rank; // per contested face, its rank in its set
+  std::size_t set;
 
-// The problem on the faces `faces` (increasing), each starting with label_of(i), a candidate; the
-// other faces around them are fixed at label_of(j).
-template <typename LabelOf>
+  std::size_t operator()(std::size_t j) const
+  {
+    return contested[j] && set_of[j] == set ? rank[j] : Label_problem::fixed;
+  }
+};
+
+// The problem on the faces `faces` (increasing; `rank_of(j)`: the rank of j in `faces`, or
+// Label_problem::fixed), each starting with label_of(i), a candidate; the other faces around them
+// are fixed at label_of(j).
+template <typename RankOf, typename LabelOf>
 Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
                            const std::vector<int>& orientation, double edge_scale,
-                           const std::vector<std::size_t>& faces, const LabelOf& label_of)
+                           const std::vector<std::size_t>& faces, const RankOf& rank_of, const LabelOf& label_of)
 {
   Label_problem p;
   for(std::size_t m = 0; m < faces.size(); ++m)
@@ -114,7 +124,7 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
       const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
       if(j == Face_adjacency::no_face || j == i) continue;
       const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
-      const std::size_t r = rank_in(faces, j);
+      const std::size_t r = rank_of(j);
       p.links[m].push_back({r, r == Label_problem::fixed ? label_of(j) : -1, w});
     }
   }
@@ -173,18 +183,23 @@ inline std::size_t local_clusters(const std::vector<std::size_t>& faces, const s
 template <typename LabelOf>
 Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
                               const std::vector<int>& orientation, double edge_scale,
-                              const std::vector<std::size_t>& faces, const std::vector<std::size_t>& local,
-                              std::size_t number_of_clusters, const LabelOf& label_of)
+                              const std::vector<std::size_t>& faces, const Set_ranks& rank_of,
+                              const std::vector<std::size_t>& local, std::size_t number_of_clusters,
+                              const LabelOf& label_of)
 {
-  std::vector<std::vector<std::size_t> > members(number_of_clusters);
-  for(std::size_t m = 0; m < faces.size(); ++m) members[local[m]].push_back(faces[m]);
+  std::vector<std::size_t> start, member; // the members of cluster c: faces[member[start[c] .. start[c + 1])]
+  group_indices(faces.size(), number_of_clusters, [&](std::size_t m) { return local[m]; },
+                [](std::size_t) { return true; }, start, member);
   Label_problem p;
   std::vector<std::int32_t> labels;
-  for(const std::vector<std::size_t>& c : members)
+  for(std::size_t c = 0; c < number_of_clusters; ++c)
   {
     labels.clear();
-    for(std::size_t i : c)
+    for(std::size_t s = start[c]; s < start[c + 1]; ++s)
+    {
+      const std::size_t i = faces[member[s]];
       for(int k = 0; k < candidates.size(i); ++k) labels.push_back(candidates.label[i][std::size_t(k)]);
+    }
     std::sort(labels.begin(), labels.end());
     labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
     std::int32_t cheapest = labels.front();
@@ -192,8 +207,9 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
     for(std::int32_t l : labels)
     {
       double sum = 0.;
-      for(std::size_t i : c)
+      for(std::size_t s = start[c]; s < start[c + 1]; ++s)
       {
+        const std::size_t i = faces[member[s]];
         const int k = candidates.find(i, l);
         sum += k < 0 ? candidates.excluded[i] : candidates.cost[i][std::size_t(k)];
       }
@@ -207,7 +223,7 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
     {
       const std::size_t i = faces[m], j = adj.neighbor[3 * i + std::size_t(k)];
       if(j == Face_adjacency::no_face || j == i) continue;
-      const std::size_t r = rank_in(faces, j);
+      const std::size_t r = rank_of(j);
       if(r != Label_problem::fixed && local[r] == local[m]) continue;
       const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
       p.links[local[m]].push_back(r == Label_problem::fixed ? Label_problem::Link{r, label_of(j), w}
@@ -223,7 +239,7 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
 // the clusters next to a cut only (the cut moves within them), the rest fixed at its cluster's label.
 inline void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
                                 const Face_candidates& candidates, const std::vector<int>& orientation,
-                                double edge_scale, const std::vector<std::size_t>& faces,
+                                double edge_scale, const std::vector<std::size_t>& faces, const Set_ranks& rank_of,
                                 const std::vector<std::size_t>& cluster, const std::vector<std::int32_t>& initial,
                                 std::vector<std::int32_t>& face_label)
 {
@@ -232,12 +248,12 @@ inline void label_contested_set(const Face_adjacency& adj, const Face_corners& c
   const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters(faces, cluster, local);
   if(2 * number_of_clusters > faces.size())
   {
-    Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, initial_label);
+    Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, rank_of, initial_label);
     minimize_labels(p);
     for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
     return;
   }
-  Label_problem coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, local,
+  Label_problem coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, rank_of, local,
                                          number_of_clusters, initial_label);
   minimize_labels(coarse);
   // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
@@ -249,7 +265,7 @@ inline void label_contested_set(const Face_adjacency& adj, const Face_corners& c
     projected[m] = candidates.find(i, coarse.label[local[m]]) < 0 ? candidates.label[i][0] : coarse.label[local[m]];
   }
   const auto label_of = [&](std::size_t j) {
-    const std::size_t r = rank_in(faces, j);
+    const std::size_t r = rank_of(j);
     return r == Label_problem::fixed ? initial[j] : projected[r];
   };
   for(std::size_t m = 0; m < faces.size(); ++m)
@@ -258,10 +274,18 @@ inline void label_contested_set(const Face_adjacency& adj, const Face_corners& c
       const std::size_t j = adj.neighbor[3 * faces[m] + std::size_t(k)];
       if(j != Face_adjacency::no_face && label_of(j) != projected[m]) refine[local[m]] = 1;
     }
-  std::vector<std::size_t> band;
+  std::vector<std::size_t> band, band_rank(faces.size(), Label_problem::fixed);
   for(std::size_t m = 0; m < faces.size(); ++m)
-    if(refine[local[m]]) band.push_back(faces[m]);
-  Label_problem fine = face_problem(adj, corners, candidates, orientation, edge_scale, band, label_of);
+    if(refine[local[m]])
+    {
+      band_rank[m] = band.size();
+      band.push_back(faces[m]);
+    }
+  const auto rank_in_band = [&](std::size_t j) {
+    const std::size_t r = rank_of(j);
+    return r == Label_problem::fixed ? r : band_rank[r];
+  };
+  Label_problem fine = face_problem(adj, corners, candidates, orientation, edge_scale, band, rank_in_band, label_of);
   minimize_labels(fine);
   for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = projected[m];
   for(std::size_t b = 0; b < band.size(); ++b) face_label[band[b]] = fine.label[b];
@@ -298,6 +322,9 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     if(start[c] < start[c + 1]) sets.push_back(c);
   const std::vector<std::size_t> cluster =
       cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
+  std::vector<std::size_t> rank(nf, 0); // of each contested face in its set
+  for(std::size_t c : sets)
+    for(std::size_t s = start[c]; s < start[c + 1]; ++s) rank[order[s]] = s - start[c];
   const std::vector<std::int32_t> initial(face_label); // read by all, each set writes its own faces
   for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
     std::vector<std::size_t> faces;
@@ -305,7 +332,9 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     {
       const std::size_t c = sets[s];
       faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
-      label_contested_set(adj, corners, candidates, orientation, edge_scale, faces, cluster, initial, face_label);
+      const Set_ranks rank_of{component, contested, rank, c};
+      label_contested_set(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster, initial,
+                          face_label);
     }
   }, 1);
   return face_label;
