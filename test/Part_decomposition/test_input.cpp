@@ -7,6 +7,7 @@
 #include <CGAL/Part_decomposition/IO/write_parts_gltf.h>
 #include <CGAL/Part_decomposition/Voxel_grid.h>
 #include <CGAL/Part_decomposition/internal/io/oriented_manifold_soup.h>
+#include <CGAL/Part_decomposition/internal/io/oriented_soup_to_mesh.h>
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -232,6 +233,68 @@ TEST_CASE("the oriented-manifold check lets only clean soups skip the orienter",
   // a closed fan (cycle) around vertex 0 and a cycle with a dangling fan at the same vertex
   CHECK(is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}}, 4));
   CHECK(!is_oriented_manifold_soup(Triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 1}}, {{1, 3, 2}}, {{0, 4, 5}}}, 6));
+}
+
+namespace {
+
+// The connectivity of every element, in index order: equal lists are equal meshes.
+std::vector<std::size_t> connectivity(const Mesh& m)
+{
+  std::vector<std::size_t> out;
+  for(auto h : halfedges(m))
+    for(std::size_t x : {std::size_t(next(h, m)), std::size_t(prev(h, m)), std::size_t(target(h, m)),
+                         is_border(h, m) ? std::size_t(-1) : std::size_t(face(h, m))})
+      out.push_back(x);
+  for(auto v : vertices(m)) out.push_back(std::size_t(halfedge(v, m)));
+  for(auto f : faces(m)) out.push_back(std::size_t(halfedge(f, m)));
+  return out;
+}
+
+// Builds `triangles` with the reader's builder for an oriented manifold soup: the general one
+// (one element at a time, any mesh) or the one of Surface_mesh (in parallel).
+Mesh build_soup(const std::vector<std::array<std::size_t, 3> >& triangles, std::size_t n, bool general)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> vmap;
+  for(std::size_t i = 0; i < n; ++i) vmap.push_back(m.add_vertex(Point(double(i), 0, 0)));
+  const std::vector<std::size_t> reverse = PD::internal::soup_reverse_corners(triangles, n);
+  if(general) PD::internal::add_oriented_manifold_triangles<Mesh>(triangles, vmap, reverse, m);
+  else PD::internal::add_oriented_manifold_triangles(triangles, vmap, reverse, m);
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("the reader's builders make the mesh of add_face() on closed and open soups", "[io]")
+{
+  typedef std::vector<std::array<std::size_t, 3> > Triangles;
+  const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
+  Triangles closed;
+  for(auto f : faces(sphere))
+  {
+    std::array<std::size_t, 3> t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, sphere), sphere)) t[k++] = std::size_t(v);
+    closed.push_back(t);
+  }
+  Triangles open; // two holes
+  for(std::size_t t = 0; t < closed.size(); ++t)
+    if(t != 3 && t != closed.size() / 2) open.push_back(closed[t]);
+  const std::size_t n = num_vertices(sphere);
+  REQUIRE(PD::internal::is_oriented_manifold_soup(open, n));
+  for(const Triangles* soup : {&closed, &open})
+  {
+    Mesh expected;
+    for(std::size_t i = 0; i < n; ++i) expected.add_vertex(Point(double(i), 0, 0));
+    for(const auto& t : *soup)
+      REQUIRE(CGAL::Euler::add_face(std::array<Mesh::Vertex_index, 3>{{Mesh::Vertex_index(Mesh::size_type(t[0])),
+                                                                        Mesh::Vertex_index(Mesh::size_type(t[1])),
+                                                                        Mesh::Vertex_index(Mesh::size_type(t[2]))}},
+                                    expected) != Mesh::null_face());
+    CHECK(connectivity(build_soup(*soup, n, true)) == connectivity(expected));
+    CHECK(connectivity(build_soup(*soup, n, false)) == connectivity(expected));
+    CHECK(build_soup(*soup, n, false).is_valid(false));
+  }
 }
 
 // ---- glTF

@@ -338,6 +338,23 @@ inline std::size_t weld_soup_points(File_soup& soup, double relative_tolerance)
   return welded;
 }
 
+// Welds the border points (`weld_soup_points()`) when an edge belongs to one triangle only (the
+// search of the points to weld is then skipped on closed meshes); `reverse` receives the reverse
+// of each corner of the triangles as they are then. Returns the number of points welded.
+inline std::size_t weld_open_soup(File_soup& soup, double weld_tolerance, std::vector<std::size_t>& reverse)
+{
+  const Soup_corners corners{soup.triangles};
+  bool open = false;
+  {
+    const Corner_rows rows(corners, soup.points.size());
+    reverse = reverse_corners(corners, rows);
+    open = has_edge_of_one_triangle(corners, rows, reverse);
+  }
+  const std::size_t welded = open ? weld_soup_points(soup, weld_tolerance) : 0;
+  if(welded > 0) reverse = soup_reverse_corners(soup.triangles, soup.points.size());
+  return welded;
+}
+
 // Adds the points the triangles use to `tm`, in the order the triangles reach them; returns the
 // vertex of each point (null if unused).
 template <typename TriangleMesh, typename Point>
@@ -578,7 +595,8 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   info.number_of_triangulated_faces = triangulate_polygons(soup);
   if(soup.triangles.empty())
     throw Invalid_input(Input_error::NO_FACES, name + " has no face with three distinct vertices");
-  info.number_of_welded_vertices = weld_soup_points(soup, weld_tolerance);
+  std::vector<std::size_t> reverse;
+  info.number_of_welded_vertices = weld_open_soup(soup, weld_tolerance, reverse);
 
   // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
   std::vector<std::size_t> triangle_of_point(soup.points.size(), std::size_t(-1));
@@ -594,6 +612,7 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   {
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
     oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
+    if(oriented_manifold) reverse = soup_reverse_corners(soup.triangles, soup_points.size());
   }
   info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
@@ -603,7 +622,8 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   const auto vmap = add_used_points(soup_points, soup.triangles, tm);
   // the mesh add_face() would build, without its searches, when the soup is a clean one
   const std::vector<typename GT::face_descriptor> triangle_face =
-    oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, tm) : add_triangles(soup.triangles, vmap, tm);
+    oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, reverse, tm)
+                      : add_triangles(soup.triangles, vmap, tm);
   drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
     throw Invalid_input(Input_error::NO_FACES, name + " gives no valid triangle");

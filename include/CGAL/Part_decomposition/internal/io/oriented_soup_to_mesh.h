@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/tags.h>
 
@@ -32,35 +33,71 @@ struct Soup_corners
   std::size_t target(std::size_t c) const { return triangles[c / 3][(c % 3 + 1) % 3]; }
 };
 
-// The reverse of each corner (target(c) -> source(c)), `std::size_t(-1)` if none, of a soup of
-// `number_of_points` points. It is found in the row of the corners leaving target(c) (compressed
-// rows holding each corner's target, so that a row is scanned without reading the triangles).
-inline std::vector<std::size_t> reverse_corners(const Soup_corners& corners, std::size_t number_of_points)
+// The corners of a soup grouped by source point in compressed rows: row p is [start[p],
+// start[p + 1]) of `corner` and of `target` (each corner's target, so that a row is scanned
+// without reading the triangles).
+struct Corner_rows
 {
-  const std::size_t nc = corners.size(), np = number_of_points, none = std::size_t(-1);
-  std::vector<std::size_t> start(np + 1, 0), row_corner(nc), row_target(nc);
-  for(std::size_t c = 0; c < nc; ++c) ++start[corners.source(c) + 1];
-  for(std::size_t p = 0; p < np; ++p) start[p + 1] += start[p];
+  std::vector<std::size_t> start, corner, target;
+
+  Corner_rows(const Soup_corners& corners, std::size_t number_of_points)
+    : start(number_of_points + 1, 0), corner(corners.size()), target(corners.size())
   {
+    const std::size_t nc = corners.size();
+    for(std::size_t c = 0; c < nc; ++c) ++start[corners.source(c) + 1];
+    for(std::size_t p = 0; p < number_of_points; ++p) start[p + 1] += start[p];
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for(std::size_t c = 0; c < nc; ++c)
     {
-      row_corner[fill[corners.source(c)]] = c;
-      row_target[fill[corners.source(c)]++] = corners.target(c);
+      corner[fill[corners.source(c)]] = c;
+      target[fill[corners.source(c)]++] = corners.target(c);
     }
   }
+};
+
+constexpr std::size_t no_corner = std::size_t(-1);
+
+// The reverse of each corner (target(c) -> source(c)), `no_corner` if none: the last one in the
+// row of target(c).
+inline std::vector<std::size_t> reverse_corners(const Soup_corners& corners, const Corner_rows& rows)
+{
   // each corner on its own: in parallel when TBB is there (the search misses the cache at
   // every corner)
-  std::vector<std::size_t> reverse(nc, none);
-  for_each_range<CGAL::Parallel_if_available_tag>(nc, [&](std::size_t first, std::size_t last) {
+  std::vector<std::size_t> reverse(corners.size(), no_corner);
+  for_each_range<CGAL::Parallel_if_available_tag>(corners.size(), [&](std::size_t first, std::size_t last) {
     for(std::size_t c = first; c < last; ++c)
     {
       const std::size_t a = corners.source(c), b = corners.target(c);
-      for(std::size_t k = start[b]; k < start[b + 1]; ++k)
-        if(row_target[k] == a) reverse[c] = row_corner[k];
+      for(std::size_t k = rows.start[b]; k < rows.start[b + 1]; ++k)
+        if(rows.target[k] == a) reverse[c] = rows.corner[k];
     }
   }, 4096);
   return reverse;
+}
+
+// The reverse of each corner of the soup's triangles (`reverse_corners()`).
+inline std::vector<std::size_t> soup_reverse_corners(const std::vector<std::array<std::size_t, 3> >& triangles,
+                                                      std::size_t number_of_points)
+{
+  const Soup_corners corners{triangles};
+  return reverse_corners(corners, Corner_rows(corners, number_of_points));
+}
+
+// Whether an edge of the soup belongs to one triangle only: a corner with no reverse and no other
+// corner in its direction. If not, the soup has no border point to weld.
+inline bool has_edge_of_one_triangle(const Soup_corners& corners, const Corner_rows& rows,
+                                     const std::vector<std::size_t>& reverse)
+{
+  for(std::size_t c = 0; c < corners.size(); ++c)
+  {
+    if(reverse[c] != no_corner) continue;
+    const std::size_t a = corners.source(c), b = corners.target(c);
+    bool twin = false;
+    for(std::size_t k = rows.start[a]; k < rows.start[a + 1] && !twin; ++k)
+      twin = rows.target[k] == b && rows.corner[k] != c;
+    if(!twin) return true;
+  }
+  return false;
 }
 
 // Links the border halfedges, the opposites of the corners without reverse (from target(c) to
@@ -73,7 +110,7 @@ void link_border_halfedges(const Soup_corners& corners, const std::vector<std::s
                            TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
-  const std::size_t nc = corners.size(), none = std::size_t(-1);
+  const std::size_t nc = corners.size(), none = no_corner;
   std::vector<typename GT::halfedge_descriptor> border_from(vmap.size(), GT::null_halfedge());
   for(std::size_t c = 0; c < nc; ++c)
     if(reverse[c] == none) border_from[corners.target(c)] = opposite(h[c], tm);
@@ -101,18 +138,18 @@ What add_face() leaves, triangle t = (v0, v1, v2) being face t:
 - halfedge(v) of an inner vertex is the halfedge into v of the last triangle holding v: before
   that triangle closed the fan of v, halfedge(v) was the border halfedge it covers, and add_face()
   keeps it when no border halfedge is left around v.
+`reverse`: the reverse of each corner (`reverse_corners()`).
 */
 template <typename TriangleMesh>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
 add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& triangles,
                                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap,
-                                TriangleMesh& tm)
+                                const std::vector<std::size_t>& reverse, TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   const Soup_corners corners{triangles};
-  const std::size_t nc = corners.size(), np = vmap.size(), none = std::size_t(-1);
-  const std::vector<std::size_t> reverse = reverse_corners(corners, np);
+  const std::size_t nc = corners.size(), np = vmap.size(), none = no_corner;
 
   std::vector<halfedge_descriptor> h(nc);
   std::vector<typename GT::face_descriptor> face_of(triangles.size());
@@ -144,6 +181,59 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
   }
   for(std::size_t p = 0; p < np; ++p)
     if(last_into[p] != none) set_halfedge(vmap[p], h[last_into[p]], tm);
+  link_border_halfedges(corners, reverse, vmap, h, tm);
+  return face_of;
+}
+
+// The same structure in a `Surface_mesh` without faces or edges, written in parallel: its elements
+// are indices, so edge e (numbered by the corner that creates it) is halfedges 2e and 2e + 1 and
+// face t is triangle t, and each corner writes its own halfedges (a third of the time of reading
+// a large mesh, one by one).
+template <typename P>
+std::vector<typename Surface_mesh<P>::Face_index>
+add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& triangles,
+                                const std::vector<typename Surface_mesh<P>::Vertex_index>& vmap,
+                                const std::vector<std::size_t>& reverse, Surface_mesh<P>& tm)
+{
+  typedef Surface_mesh<P> Mesh;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  typedef typename Mesh::Face_index Face_index;
+  if(tm.number_of_edges() != 0 || tm.number_of_faces() != 0 || tm.has_garbage())
+    return add_oriented_manifold_triangles<Mesh>(triangles, vmap, reverse, tm);
+  const Soup_corners corners{triangles};
+  const std::size_t nc = corners.size(), nt = triangles.size();
+  const auto creates_edge = [&](std::size_t c) { return reverse[c] == no_corner || reverse[c] > c; };
+  std::vector<std::size_t> edge(nc);
+  std::size_t ne = 0;
+  for(std::size_t c = 0; c < nc; ++c) edge[c] = creates_edge(c) ? ne++ : edge[reverse[c]];
+  const auto halfedge_of = [&](std::size_t c) { return Halfedge_index(typename Mesh::size_type(2 * edge[c] + (creates_edge(c) ? 0 : 1))); };
+  tm.resize(tm.number_of_vertices(), typename Mesh::size_type(ne), typename Mesh::size_type(nt));
+  std::vector<Face_index> face_of(nt);
+  for_each_range<CGAL::Parallel_if_available_tag>(nt, [&](std::size_t first, std::size_t last) {
+    for(std::size_t t = first; t < last; ++t)
+    {
+      face_of[t] = Face_index(typename Mesh::size_type(t));
+      tm.set_halfedge(face_of[t], halfedge_of(3 * t + 2));
+      for(std::size_t c = 3 * t; c < 3 * t + 3; ++c)
+      {
+        const Halfedge_index h = halfedge_of(c);
+        tm.set_target(h, vmap[corners.target(c)]);
+        tm.set_face(h, face_of[t]);
+        tm.set_next(h, halfedge_of(c + 1 < 3 * t + 3 ? c + 1 : 3 * t));
+        if(reverse[c] == no_corner)
+        {
+          tm.set_target(tm.opposite(h), vmap[corners.source(c)]);
+          tm.set_face(tm.opposite(h), Mesh::null_face());
+        }
+      }
+    }
+  }, 4096);
+  std::vector<std::size_t> last_into(vmap.size(), no_corner); // as in the general version
+  for(std::size_t c = 0; c < nc; ++c) last_into[corners.target(c)] = c;
+  for(std::size_t p = 0; p < vmap.size(); ++p)
+    if(last_into[p] != no_corner) tm.set_halfedge(vmap[p], halfedge_of(last_into[p]));
+  std::vector<Halfedge_index> h(nc);
+  for(std::size_t c = 0; c < nc; ++c) h[c] = halfedge_of(c);
   link_border_halfedges(corners, reverse, vmap, h, tm);
   return face_of;
 }
