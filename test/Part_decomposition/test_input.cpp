@@ -257,7 +257,7 @@ Mesh build_soup(const std::vector<std::array<std::size_t, 3> >& triangles, std::
   Mesh m;
   std::vector<Mesh::Vertex_index> vmap;
   for(std::size_t i = 0; i < n; ++i) vmap.push_back(m.add_vertex(Point(double(i), 0, 0)));
-  const std::vector<std::size_t> reverse = PD::internal::soup_reverse_corners(triangles, n);
+  const std::vector<std::size_t> reverse = PD::internal::soup_topology(triangles, n).reverse;
   if(general) PD::internal::add_oriented_manifold_triangles<Mesh>(triangles, vmap, reverse, m);
   else PD::internal::add_oriented_manifold_triangles(triangles, vmap, reverse, m);
   return m;

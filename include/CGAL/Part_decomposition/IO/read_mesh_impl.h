@@ -338,23 +338,6 @@ inline std::size_t weld_soup_points(File_soup& soup, double relative_tolerance)
   return welded;
 }
 
-// Welds the border points (`weld_soup_points()`) when an edge belongs to one triangle only (the
-// search of the points to weld is then skipped on closed meshes); `reverse` receives the reverse
-// of each corner of the triangles as they are then. Returns the number of points welded.
-inline std::size_t weld_open_soup(File_soup& soup, double weld_tolerance, std::vector<std::size_t>& reverse)
-{
-  const Soup_corners corners{soup.triangles};
-  bool open = false;
-  {
-    const Corner_rows rows(corners, soup.points.size());
-    reverse = reverse_corners(corners, rows);
-    open = has_edge_of_one_triangle(corners, rows, reverse);
-  }
-  const std::size_t welded = open ? weld_soup_points(soup, weld_tolerance) : 0;
-  if(welded > 0) reverse = soup_reverse_corners(soup.triangles, soup.points.size());
-  return welded;
-}
-
 // Adds the points the triangles use to `tm`, in the order the triangles reach them; returns the
 // vertex of each point (null if unused).
 template <typename TriangleMesh, typename Point>
@@ -487,23 +470,35 @@ std::size_t orient_closed_components_outward(TriangleMesh& tm, const FaceIndexMa
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  // per face, six times the signed volume of its tetrahedron with the origin, and whether it has a
+  // border edge
+  std::vector<double> det(face_list.size());
+  std::vector<char> on_border(face_list.size(), 0);
+  for_each_range<CGAL::Parallel_if_available_tag>(face_list.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      std::array<std::array<double, 3>, 3> p;
+      auto h = halfedge(face_list[i], tm);
+      for(int k = 0; k < 3; ++k, h = next(h, tm))
+      {
+        const Point& q = get(vpm, target(h, tm));
+        p[k] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+        if(is_border(opposite(h, tm), tm)) on_border[i] = 1;
+      }
+      det[i] = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    }
+  }, 4096);
+  // the sums in face order, whatever the number of threads
   std::vector<double> volume(ncc, 0.);
   std::vector<char> closed(ncc, 1);
-  const auto vpm = get(CGAL::vertex_point, tm);
-  for(face_descriptor f : faces(tm))
+  for(std::size_t i = 0; i < face_list.size(); ++i)
   {
-    const std::size_t c = fcc[get(findex, f)];
-    std::array<std::array<double, 3>, 3> p;
-    auto h = halfedge(f, tm);
-    for(int k = 0; k < 3; ++k, h = next(h, tm))
-    {
-      const Point& q = get(vpm, target(h, tm));
-      p[k] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-      if(is_border(opposite(h, tm), tm)) closed[c] = 0;
-    }
-    volume[c] += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1])
-               - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0])
-               + p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    const std::size_t c = fcc[get(findex, face_list[i])];
+    if(on_border[i]) closed[c] = 0;
+    volume[c] += det[i];
   }
   std::vector<face_descriptor> to_reverse;
   for(face_descriptor f : faces(tm))
@@ -595,8 +590,10 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   info.number_of_triangulated_faces = triangulate_polygons(soup);
   if(soup.triangles.empty())
     throw Invalid_input(Input_error::NO_FACES, name + " has no face with three distinct vertices");
-  std::vector<std::size_t> reverse;
-  info.number_of_welded_vertices = weld_open_soup(soup, weld_tolerance, reverse);
+  // a soup whose every edge has two triangles has no border point to weld
+  Soup_topology topology = soup_topology(soup.triangles, soup.points.size());
+  info.number_of_welded_vertices = topology.has_edge_of_one_triangle ? weld_soup_points(soup, weld_tolerance) : 0;
+  if(info.number_of_welded_vertices > 0) topology = soup_topology(soup.triangles, soup.points.size());
 
   // The first triangle incident to each merged point, to give dropped faces a neighbour's result.
   std::vector<std::size_t> triangle_of_point(soup.points.size(), std::size_t(-1));
@@ -607,12 +604,10 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   std::vector<Point> soup_points;
   soup_points.reserve(soup.points.size());
   for(const std::array<double, 3>& c : soup.points) soup_points.push_back(Point(c[0], c[1], c[2]));
-  bool oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
-  if(!oriented_manifold)
+  if(!topology.oriented_manifold)
   {
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup.triangles);
-    oriented_manifold = is_oriented_manifold_soup(soup.triangles, soup_points.size());
-    if(oriented_manifold) reverse = soup_reverse_corners(soup.triangles, soup_points.size());
+    topology = soup_topology(soup.triangles, soup_points.size());
   }
   info.number_of_duplicated_vertices = soup_points.size() - soup.points.size();
 
@@ -622,8 +617,8 @@ IO::Mesh_file_info build_triangle_mesh(File_soup& soup, const std::string& name,
   const auto vmap = add_used_points(soup_points, soup.triangles, tm);
   // the mesh add_face() would build, without its searches, when the soup is a clean one
   const std::vector<typename GT::face_descriptor> triangle_face =
-    oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, reverse, tm)
-                      : add_triangles(soup.triangles, vmap, tm);
+    topology.oriented_manifold ? add_oriented_manifold_triangles(soup.triangles, vmap, topology.reverse, tm)
+                               : add_triangles(soup.triangles, vmap, tm);
   drop_faces_of_refused_triangles<TriangleMesh>(triangle_face, soup);
   if(faces(tm).begin() == faces(tm).end())
     throw Invalid_input(Input_error::NO_FACES, name + " gives no valid triangle");

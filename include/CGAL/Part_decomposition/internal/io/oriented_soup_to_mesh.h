@@ -8,12 +8,14 @@
 #ifndef CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
 #define CGAL_PART_DECOMPOSITION_INTERNAL_ORIENTED_SOUP_TO_MESH_H
 
+#include <CGAL/Part_decomposition/internal/io/oriented_manifold_soup.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -21,39 +23,6 @@
 namespace CGAL {
 namespace Part_decomposition {
 namespace internal {
-
-// The corners of a triangle soup: corner c = 3t + k is the directed edge from vertex k of triangle
-// t to the next vertex of t.
-struct Soup_corners
-{
-  const std::vector<std::array<std::size_t, 3> >& triangles;
-
-  std::size_t size() const { return 3 * triangles.size(); }
-  std::size_t source(std::size_t c) const { return triangles[c / 3][c % 3]; }
-  std::size_t target(std::size_t c) const { return triangles[c / 3][(c % 3 + 1) % 3]; }
-};
-
-// The corners of a soup grouped by source point in compressed rows: row p is [start[p],
-// start[p + 1]) of `corner` and of `target` (each corner's target, so that a row is scanned
-// without reading the triangles).
-struct Corner_rows
-{
-  std::vector<std::size_t> start, corner, target;
-
-  Corner_rows(const Soup_corners& corners, std::size_t number_of_points)
-    : start(number_of_points + 1, 0), corner(corners.size()), target(corners.size())
-  {
-    const std::size_t nc = corners.size();
-    for(std::size_t c = 0; c < nc; ++c) ++start[corners.source(c) + 1];
-    for(std::size_t p = 0; p < number_of_points; ++p) start[p + 1] += start[p];
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for(std::size_t c = 0; c < nc; ++c)
-    {
-      corner[fill[corners.source(c)]] = c;
-      target[fill[corners.source(c)]++] = corners.target(c);
-    }
-  }
-};
 
 constexpr std::size_t no_corner = std::size_t(-1);
 
@@ -75,14 +44,6 @@ inline std::vector<std::size_t> reverse_corners(const Soup_corners& corners, con
   return reverse;
 }
 
-// The reverse of each corner of the soup's triangles (`reverse_corners()`).
-inline std::vector<std::size_t> soup_reverse_corners(const std::vector<std::array<std::size_t, 3> >& triangles,
-                                                      std::size_t number_of_points)
-{
-  const Soup_corners corners{triangles};
-  return reverse_corners(corners, Corner_rows(corners, number_of_points));
-}
-
 // Whether an edge of the soup belongs to one triangle only: a corner with no reverse and no other
 // corner in its direction. If not, the soup has no border point to weld.
 inline bool has_edge_of_one_triangle(const Soup_corners& corners, const Corner_rows& rows,
@@ -100,25 +61,46 @@ inline bool has_edge_of_one_triangle(const Soup_corners& corners, const Corner_r
   return false;
 }
 
+// What the reader needs to know of a soup's corners: their reverses (`reverse_corners()`), whether
+// an edge belongs to one triangle only (then border points may need a weld) and whether the
+// triangles form an oriented manifold (`is_oriented_manifold_soup()`).
+struct Soup_topology
+{
+  std::vector<std::size_t> reverse;
+  bool has_edge_of_one_triangle = false;
+  bool oriented_manifold = false;
+};
+
+inline Soup_topology soup_topology(const std::vector<std::array<std::size_t, 3> >& triangles,
+                                   std::size_t number_of_points)
+{
+  const Soup_corners corners{triangles};
+  const Corner_rows rows(corners, number_of_points);
+  Soup_topology t;
+  t.reverse = reverse_corners(corners, rows);
+  t.has_edge_of_one_triangle = has_edge_of_one_triangle(corners, rows, t.reverse);
+  t.oriented_manifold = is_oriented_manifold_soup<CGAL::Parallel_if_available_tag>(corners, rows);
+  return t;
+}
+
 // Links the border halfedges, the opposites of the corners without reverse (from target(c) to
-// source(c)), to each other and makes each the halfedge of its target, as add_face() does; `h`:
-// the halfedge of each corner.
-template <typename TriangleMesh>
+// source(c)), to each other and makes each the halfedge of its target, as add_face() does;
+// `h(c)`: the halfedge of corner c.
+template <typename TriangleMesh, typename HalfedgeOfCorner>
 void link_border_halfedges(const Soup_corners& corners, const std::vector<std::size_t>& reverse,
                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap,
-                           const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& h,
-                           TriangleMesh& tm)
+                           const HalfedgeOfCorner& h, TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   const std::size_t nc = corners.size(), none = no_corner;
   std::vector<typename GT::halfedge_descriptor> border_from(vmap.size(), GT::null_halfedge());
   for(std::size_t c = 0; c < nc; ++c)
-    if(reverse[c] == none) border_from[corners.target(c)] = opposite(h[c], tm);
+    if(reverse[c] == none) border_from[corners.target(c)] = opposite(h(c), tm);
   for(std::size_t c = 0; c < nc; ++c)
     if(reverse[c] == none)
     {
-      set_next(opposite(h[c], tm), border_from[corners.source(c)], tm);
-      set_halfedge(vmap[corners.source(c)], opposite(h[c], tm), tm);
+      set_next(opposite(h(c), tm), border_from[corners.source(c)], tm);
+      set_halfedge(vmap[corners.source(c)], opposite(h(c), tm), tm);
     }
 }
 
@@ -181,7 +163,7 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
   }
   for(std::size_t p = 0; p < np; ++p)
     if(last_into[p] != none) set_halfedge(vmap[p], h[last_into[p]], tm);
-  link_border_halfedges(corners, reverse, vmap, h, tm);
+  link_border_halfedges(corners, reverse, vmap, [&](std::size_t c) { return h[c]; }, tm);
   return face_of;
 }
 
@@ -232,9 +214,8 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
   for(std::size_t c = 0; c < nc; ++c) last_into[corners.target(c)] = c;
   for(std::size_t p = 0; p < vmap.size(); ++p)
     if(last_into[p] != no_corner) tm.set_halfedge(vmap[p], halfedge_of(last_into[p]));
-  std::vector<Halfedge_index> h(nc);
-  for(std::size_t c = 0; c < nc; ++c) h[c] = halfedge_of(c);
-  link_border_halfedges(corners, reverse, vmap, h, tm);
+  if(std::find(reverse.begin(), reverse.end(), no_corner) != reverse.end())
+    link_border_halfedges(corners, reverse, vmap, halfedge_of, tm);
   return face_of;
 }
 

@@ -10,12 +10,16 @@
 
 #include <CGAL/Part_decomposition/internal/io/polygon_soup.h>
 #include <CGAL/Part_decomposition/internal/io/read_error.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
+
+#include <CGAL/tags.h>
 
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -110,19 +114,107 @@ public:
     take_count(t, nf, "the number of faces");
     // the edge count, when present, is ignored
 
-    for(std::size_t i = 0; i < nv; ++i)
-    {
-      if(!next_line()) fail(m_end, "expected vertex " + of(i, nv) + ", got the end of the file");
-      read_vertex(soup);
-    }
-    for(std::size_t i = 0; i < nf; ++i)
-    {
-      if(!next_line()) fail(m_end, "expected face " + of(i, nf) + ", got the end of the file");
-      read_face(soup, nv);
-    }
+    read_body(soup, nv, nf);
   }
 
 private:
+  // The text after the header in blocks of whole lines, of about this many bytes: the blocks do
+  // not depend on the number of threads.
+  static constexpr std::size_t block_bytes = std::size_t(1) << 20;
+
+  // The lines of vertex i (i < nv), then of face i - nv (i < nv + nf), parsed from m_pos: in
+  // blocks, in parallel when TBB is there (parsing numbers is most of the time of reading a large
+  // mesh). Each block counts its lines with tokens, then parses them into its own soup; the soups
+  // are appended in file order and the first failure in file order is thrown.
+  void read_body(Polygon_soup_arrays& soup, std::size_t nv, std::size_t nf)
+  {
+    std::vector<const char*> cut(1, m_pos);
+    while(cut.back() != m_end)
+    {
+      const char* b = cut.back();
+      const char* e = std::size_t(m_end - b) <= block_bytes ? m_end : b + block_bytes;
+      const char* eol = e == m_end ? nullptr : static_cast<const char*>(std::memchr(e, '\n', std::size_t(m_end - e)));
+      cut.push_back(eol ? eol + 1 : m_end);
+    }
+    const std::size_t nb = cut.size() - 1;
+    std::vector<std::size_t> first_line(nb + 1, 0);
+    for_each_range<CGAL::Parallel_if_available_tag>(nb, [&](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) first_line[k + 1] = block_reader(cut[k], cut[k + 1]).count_lines();
+    });
+    for(std::size_t k = 0; k < nb; ++k) first_line[k + 1] += first_line[k];
+    std::vector<Polygon_soup_arrays> part(nb);
+    std::vector<std::exception_ptr> failure(nb);
+    for_each_range<CGAL::Parallel_if_available_tag>(nb, [&](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e && first_line[k] < nv + nf; ++k)
+        try
+        {
+          block_reader(cut[k], cut[k + 1]).read_lines(part[k], first_line[k], nv, nf);
+        }
+        catch(...)
+        {
+          failure[k] = std::current_exception();
+        }
+    });
+    for(const std::exception_ptr& f : failure)
+      if(f) std::rethrow_exception(f);
+    const std::size_t lines = first_line[nb];
+    if(lines < nv) fail(m_end, "expected vertex " + of(lines, nv) + ", got the end of the file");
+    if(lines < nv + nf) fail(m_end, "expected face " + of(lines - nv, nf) + ", got the end of the file");
+    append_soups(part, soup);
+  }
+
+  // A reader of the lines in [b, e) of the same file, with the header's settings.
+  Off_soup_reader block_reader(const char* b, const char* e) const
+  {
+    Off_soup_reader r(m_begin, e);
+    r.m_pos = b;
+    r.m_homogeneous = m_homogeneous;
+    return r;
+  }
+
+  // The number of lines with tokens (as next_line() finds them, without splitting them).
+  std::size_t count_lines() const
+  {
+    std::size_t n = 0;
+    for(const char* p = m_pos; p != m_end;)
+    {
+      while(p != m_end && *p != '\n' && is_space(*p)) ++p;
+      if(p != m_end && *p != '\n' && *p != '#') ++n;
+      const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(m_end - p)));
+      p = eol ? eol + 1 : m_end;
+    }
+    return n;
+  }
+
+  // Parses the lines with tokens, the first being line `line` of the body, until line nv + nf.
+  void read_lines(Polygon_soup_arrays& soup, std::size_t line, std::size_t nv, std::size_t nf)
+  {
+    for(; line < nv + nf && next_line(); ++line)
+      if(line < nv) read_vertex(soup);
+      else read_face(soup, nv);
+  }
+
+  static void append_soups(const std::vector<Polygon_soup_arrays>& parts, Polygon_soup_arrays& soup)
+  {
+    std::size_t points = soup.points.size(), polygons = soup.polygon_start.size(), indices = soup.polygon_vertices.size();
+    for(const Polygon_soup_arrays& p : parts)
+    {
+      points += p.points.size();
+      polygons += p.number_of_polygons();
+      indices += p.polygon_vertices.size();
+    }
+    soup.points.reserve(points);
+    soup.polygon_start.reserve(polygons);
+    soup.polygon_vertices.reserve(indices);
+    for(const Polygon_soup_arrays& p : parts)
+    {
+      soup.points.insert(soup.points.end(), p.points.begin(), p.points.end());
+      const std::size_t offset = soup.polygon_vertices.size();
+      soup.polygon_vertices.insert(soup.polygon_vertices.end(), p.polygon_vertices.begin(), p.polygon_vertices.end());
+      for(std::size_t f = 1; f < p.polygon_start.size(); ++f) soup.polygon_start.push_back(offset + p.polygon_start[f]);
+    }
+  }
+
   const char* m_begin;
   const char* m_pos;
   const char* m_end;

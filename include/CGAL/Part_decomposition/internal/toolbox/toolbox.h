@@ -31,6 +31,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -143,6 +144,16 @@ void for_each_block(std::size_t n, std::size_t block_size, const F& f)
   else
 #endif
     blocks(0, number_of_blocks);
+}
+
+// The number of threads the parallel loops of `ConcurrencyTag` may use.
+template <typename ConcurrencyTag>
+std::size_t concurrency()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(is_parallel_tag<ConcurrencyTag>()) return std::size_t((std::max)(tbb::this_task_arena::max_concurrency(), 1));
+#endif
+  return 1;
 }
 
 // Runs `f` and `g`, as two tasks when `ConcurrencyTag` is parallel (each may run parallel loops:
