@@ -208,7 +208,7 @@ double mean_surface_distance(const Superquadric<GeomTraits>& sq, const std::vect
 // part's faces; parts that share one (a part cut by the regions of the pieces, a thin plate the
 // fitter saw as one with its neighbour), parts without one and parts thinner than the fitting
 // grid get that box.
-template <typename GeomTraits, typename TriangleMesh, typename VPM, typename FIM>
+template <typename ConcurrencyTag, typename GeomTraits, typename TriangleMesh, typename VPM, typename FIM>
 std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, const VPM& vpm, const FIM& fim,
                                                        const std::vector<std::size_t>& part,
                                                        const std::vector<std::size_t>& part_to_primitive,
@@ -218,22 +218,25 @@ std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, c
   std::vector<std::size_t> users(P, 0);
   for(std::size_t k = 0; k < K; ++k)
     if(part_to_primitive[k] < P) ++users[part_to_primitive[k]];
-  std::vector<std::vector<std::array<double, 3> > > points(K);
-  for(auto f : faces(tm))
-  {
-    const std::size_t k = part[std::size_t(get(fim, f))];
-    if(k >= K) continue;
-    for(auto v : vertices_around_face(halfedge(f, tm), tm)) points[k].push_back(vec3_of(get(vpm, v)));
-  }
-  std::vector<Superquadric<GeomTraits> > result;
-  for(std::size_t k = 0; k < K; ++k)
-  {
-    const Superquadric<GeomTraits> box = bounding_superquadric<GeomTraits>(points[k]);
-    const std::size_t q = part_to_primitive[k];
-    const bool own = q < P && users[q] == 1;
-    result.push_back(own && mean_surface_distance(fitted[q], points[k]) <= mean_surface_distance(box, points[k])
-                       ? fitted[q] : box);
-  }
+  // the faces of each part in the order of faces(tm), then one part at a time
+  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  const auto part_of = [&](std::size_t r) { return part[std::size_t(get(fim, face_list[r]))]; };
+  std::vector<std::size_t> start, order;
+  group_indices(face_list.size(), K, part_of, [&](std::size_t r) { return part_of(r) < K; }, start, order);
+  std::vector<Superquadric<GeomTraits> > result(K);
+  for_each_range<ConcurrencyTag>(K, [&](std::size_t b, std::size_t e) {
+    std::vector<std::array<double, 3> > points;
+    for(std::size_t k = b; k < e; ++k)
+    {
+      points.clear();
+      for(std::size_t s = start[k]; s < start[k + 1]; ++s)
+        for(auto v : vertices_around_face(halfedge(face_list[order[s]], tm), tm)) points.push_back(vec3_of(get(vpm, v)));
+      const Superquadric<GeomTraits> box = bounding_superquadric<GeomTraits>(points);
+      const std::size_t q = part_to_primitive[k];
+      const bool own = q < P && users[q] == 1;
+      result[k] = own && mean_surface_distance(fitted[q], points) <= mean_surface_distance(box, points) ? fitted[q] : box;
+    }
+  });
   return result;
 }
 
@@ -500,7 +503,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
     face_area = internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np)->area;
   }
   c.part_primitives =
-    internal::part_primitives<GeomTraits>(tm, maps.vpm, maps.fim, c.parts, c.part_to_primitive, fitting.input_primitives);
+    internal::part_primitives<ConcurrencyTag, GeomTraits>(tm, maps.vpm, maps.fim, c.parts, c.part_to_primitive, fitting.input_primitives);
   c.residual_parts = internal::residual_part_flags(face_area, c.parts, c.number_of_parts(), parts.residual_faces);
   const bool patches = has_volume && !parts.patches.empty();
   internal::finest_parts<ConcurrencyTag>(volume_part, p.use_pieces ? pieces.region : std::vector<std::size_t>(), [&](std::size_t i) {

@@ -79,16 +79,21 @@ std::vector<Part_box> leaf_boxes(std::size_t number_of_faces, const Corner& corn
                                  std::size_t number_of_leaves, const Eigen::Vector3d& origin)
 {
   std::vector<Part_box> box(number_of_leaves);
-  std::vector<std::vector<Eigen::Vector3d> > points(number_of_leaves);
-  for(std::size_t i = 0; i < number_of_faces; ++i)
-  {
-    add_triangle_moments(box[leaf[i]], corner(i, 0) - origin, corner(i, 1) - origin, corner(i, 2) - origin);
-    for(int k = 0; k < 3; ++k) points[leaf[i]].push_back(corner(i, k) - origin);
-  }
+  // the faces of each leaf in increasing order, then one leaf at a time: one buffer of points
+  std::vector<std::size_t> start, order;
+  group_indices(number_of_faces, number_of_leaves, [&](std::size_t i) { return leaf[i]; },
+                [](std::size_t) { return true; }, start, order);
+  std::vector<Eigen::Vector3d> points;
   for(std::size_t l = 0; l < number_of_leaves; ++l)
   {
-    fit_box_to_points(box[l], points[l]);
-    std::vector<Eigen::Vector3d>().swap(points[l]);
+    points.clear();
+    for(std::size_t s = start[l]; s < start[l + 1]; ++s)
+    {
+      const std::size_t i = order[s];
+      add_triangle_moments(box[l], corner(i, 0) - origin, corner(i, 1) - origin, corner(i, 2) - origin);
+      for(int k = 0; k < 3; ++k) points.push_back(corner(i, k) - origin);
+    }
+    fit_box_to_points(box[l], points);
   }
   return box;
 }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Part_decomposition/internal/grid/triangle_distance.h>
 #include <CGAL/Part_decomposition/internal/grid/winding_number.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Bbox_3.h>
@@ -127,48 +128,66 @@ class Triangle_soup_aabb_tree
 public:
   explicit Triangle_soup_aabb_tree(const std::vector<Triangle_points>& soup)
   {
+    typedef CGAL::Parallel_if_available_tag Tag;
     const std::size_t n = soup.size();
-    std::vector<Vec3> centroid(n);
+    const auto centroid = [&](std::size_t i, int a) { return (soup[i][0][a] + soup[i][1][a] + soup[i][2][a]) / 3.; };
+    // the box of the centroids: a min and a max per block, the same whatever the blocks
+    constexpr std::size_t block = 1 << 16;
+    std::vector<std::array<Vec3, 2> > box((n + block - 1) / block);
+    for_each_block<Tag>(n, block, [&](std::size_t b, std::size_t e) {
+      Vec3 lo, hi;
+      lo.fill(std::numeric_limits<double>::infinity());
+      hi.fill(-std::numeric_limits<double>::infinity());
+      for(std::size_t i = b; i < e; ++i)
+        for(int a = 0; a < 3; ++a)
+        {
+          lo[a] = (std::min)(lo[a], centroid(i, a));
+          hi[a] = (std::max)(hi[a], centroid(i, a));
+        }
+      box[b / block] = {{lo, hi}};
+    });
     Vec3 lo, hi;
     lo.fill(std::numeric_limits<double>::infinity());
     hi.fill(-std::numeric_limits<double>::infinity());
-    for(std::size_t i = 0; i < n; ++i)
+    for(const std::array<Vec3, 2>& b : box)
       for(int a = 0; a < 3; ++a)
       {
-        centroid[i][a] = (soup[i][0][a] + soup[i][1][a] + soup[i][2][a]) / 3.;
-        lo[a] = (std::min)(lo[a], centroid[i][a]);
-        hi[a] = (std::max)(hi[a], centroid[i][a]);
+        lo[a] = (std::min)(lo[a], b[0][a]);
+        hi[a] = (std::max)(hi[a], b[1][a]);
       }
     // 21 bits per axis of the centroid's cell, interleaved; ties keep the soup order.
     const double cells = double(1u << 21);
     std::vector<std::pair<std::uint64_t, std::uint32_t> > key(n);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      std::uint32_t q[3];
-      for(int a = 0; a < 3; ++a)
+    for_each_range<Tag>(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i)
       {
-        const double t = hi[a] > lo[a] ? (centroid[i][a] - lo[a]) / (hi[a] - lo[a]) * cells : 0.;
-        q[a] = std::uint32_t((std::min)((std::max)(t, 0.), cells - 1.));
+        std::uint32_t q[3];
+        for(int a = 0; a < 3; ++a)
+        {
+          const double t = hi[a] > lo[a] ? (centroid(i, a) - lo[a]) / (hi[a] - lo[a]) * cells : 0.;
+          q[a] = std::uint32_t((std::min)((std::max)(t, 0.), cells - 1.));
+        }
+        std::uint64_t code = 0;
+        for(int bit = 20; bit >= 0; --bit)
+          for(int a = 0; a < 3; ++a) code = (code << 1) | ((q[a] >> bit) & 1u);
+        key[i] = std::make_pair(code, std::uint32_t(i));
       }
-      std::uint64_t code = 0;
-      for(int b = 20; b >= 0; --b)
-        for(int a = 0; a < 3; ++a) code = (code << 1) | ((q[a] >> b) & 1u);
-      key[i] = std::make_pair(code, std::uint32_t(i));
-    }
-    std::vector<Vec3>().swap(centroid); // freed before the tree's nodes are allocated
-    std::sort(key.begin(), key.end());
+    }, 4096);
+    sort_distinct<Tag>(key.begin(), key.end());
 
-    auto point = [](const Vec3& p) { return Aabb_kernel::Point_3(p[0], p[1], p[2]); };
-    m_triangles.reserve(n);
-    m_soup_index.reserve(n);
+    m_triangles.resize(n);
+    m_soup_index.resize(n);
     m_position.resize(n);
-    for(const auto& k : key)
-    {
-      const Triangle_points& t = soup[k.second];
-      m_position[k.second] = std::uint32_t(m_triangles.size());
-      m_triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
-      m_soup_index.push_back(k.second);
-    }
+    for_each_range<Tag>(n, [&](std::size_t b, std::size_t e) {
+      auto point = [](const Vec3& p) { return Aabb_kernel::Point_3(p[0], p[1], p[2]); };
+      for(std::size_t r = b; r < e; ++r)
+      {
+        const Triangle_points& t = soup[key[r].second];
+        m_position[key[r].second] = std::uint32_t(r);
+        m_triangles[r] = Aabb_kernel::Triangle_3(point(t[0]), point(t[1]), point(t[2]));
+        m_soup_index[r] = key[r].second;
+      }
+    }, 4096);
     std::vector<std::pair<std::uint64_t, std::uint32_t> >().swap(key);
     m_tree.insert(m_triangles.begin(), m_triangles.end());
     m_tree.build();
