@@ -317,7 +317,7 @@ std::vector<std::uint8_t> splittable_pieces(const TriangleMesh& tm, const Piece_
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
   const internal::Face_adjacency& adj = *graph;
-  return internal::splittable_solid_pieces(adj, internal::Face_corners(tm, maps.fim, maps.vpm), pieces,
+  return internal::splittable_solid_pieces(adj, internal::Face_corners(tm, maps.fim, maps.vpm, ConcurrencyTag()), pieces,
                                           internal::read_piece_parameters(np));
 }
 
@@ -351,7 +351,7 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
   const internal::Face_adjacency& adj = *graph;
-  const internal::Face_corners corners(tm, maps.fim, maps.vpm);
+  const internal::Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
   std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
   // the triangles by face index, in the unit frame of the field
   std::vector<internal::Triangle_points> triangles(num_faces(tm));
@@ -486,7 +486,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
       internal::keep_volume_parts_in_their_regions(adj, pieces.region, volume_part, no_primitive);
     }
     const std::vector<std::size_t> source =
-      internal::compose_parts(adj, internal::Face_corners(tm, maps.fim, maps.vpm), pieces.region, pieces.piece,
+      internal::compose_parts(adj, internal::Face_corners(tm, maps.fim, maps.vpm, ConcurrencyTag()), pieces.region, pieces.piece,
                               pieces.orientation, volume_part, p.minimum_part_area * pieces.area, c.parts, no_primitive);
     c.part_to_primitive.assign(source.size(), no_primitive);
     for(std::size_t k = 0; k < source.size(); ++k)

@@ -131,7 +131,7 @@ void decompose_once(Decomposer& d, const TriangleMesh& tm, const NamedParameters
   if(fitted || !read_piece_parameters(np).use_pieces)
     return cut_hierarchy(tm, np, d.pieces(), d.composed_parts(), out, timings);
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_corners corners(tm, maps.fim, maps.vpm);
+  const Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
   std::vector<std::uint8_t> sheet;
   if(!decomposes_inflated_sheets(tm, d.pieces(), corners, np, sheet))
     return cut_hierarchy(tm, np, d.pieces(), d.composed_parts(), out, timings);

@@ -245,7 +245,7 @@ std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const Fac
                                                const Normalization& normalization,
                                                const Assignment_parameters& p)
 {
-  const Face_corners corners(tm, fim, vpm);
+  const Face_corners corners(tm, fim, vpm, ConcurrencyTag());
   const Face_candidates candidates = face_candidates<ConcurrencyTag>(
       corners, search, normalization, h, p.vote_temperature * h, candidate_margin * h);
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area

@@ -56,22 +56,33 @@ struct Face_corners
   std::vector<Eigen::Vector3d> point; // per vertex
   std::vector<std::size_t> vertex;    // three per face
 
-  template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
-  Face_corners(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm)
+  // in parallel when `ConcurrencyTag` is (each element writes its own entries)
+  template <typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+            typename ConcurrencyTag = CGAL::Sequential_tag>
+  Face_corners(const TriangleMesh& tm, const FaceIndexMap& fim, const VertexPointMap& vpm,
+               ConcurrencyTag = ConcurrencyTag())
   {
     const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    typedef boost::graph_traits<TriangleMesh> GT;
+    const std::vector<typename GT::vertex_descriptor> vs(vertices(tm).begin(), vertices(tm).end());
     point.resize(num_vertices(tm));
-    for(auto v : vertices(tm))
-    {
-      const auto& p = get(vpm, v);
-      point[std::size_t(get(vim, v))] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    }
+    for_each_range<ConcurrencyTag>(vs.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t r = b; r < e; ++r)
+      {
+        const auto& p = get(vpm, vs[r]);
+        point[std::size_t(get(vim, vs[r]))] =
+          Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      }
+    }, 4096);
+    const std::vector<typename GT::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
     vertex.resize(3 * num_faces(tm));
-    for(auto f : faces(tm))
-    {
-      std::size_t k = 3 * std::size_t(get(fim, f));
-      for(auto v : vertices_around_face(halfedge(f, tm), tm)) vertex[k++] = std::size_t(get(vim, v));
-    }
+    for_each_range<ConcurrencyTag>(fs.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t r = b; r < e; ++r)
+      {
+        std::size_t k = 3 * std::size_t(get(fim, fs[r]));
+        for(auto v : vertices_around_face(halfedge(fs[r], tm), tm)) vertex[k++] = std::size_t(get(vim, v));
+      }
+    }, 4096);
   }
 
   const Eigen::Vector3d& operator()(std::size_t face, int k) const { return point[vertex[3 * face + std::size_t(k)]]; }
