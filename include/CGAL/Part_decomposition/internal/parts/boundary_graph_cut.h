@@ -176,24 +176,46 @@ inline std::size_t local_clusters(const std::vector<std::size_t>& faces, const s
   return ids.size();
 }
 
+// The links of cluster c of `faces` (its members: faces[member[start[c] .. start[c + 1])],
+// increasing): its cut edges to other clusters and to fixed faces, those to one cluster or one
+// fixed label summed.
+template <typename LabelOf>
+void cluster_links(const Face_adjacency& adj, const Face_corners& corners, const std::vector<int>& orientation,
+                   double edge_scale, const std::vector<std::size_t>& faces, const Set_ranks& rank_of,
+                   const std::vector<std::size_t>& local, const LabelOf& label_of, const std::vector<std::size_t>& start,
+                   const std::vector<std::size_t>& member, std::size_t c, std::vector<Label_problem::Link>& links)
+{
+  for(std::size_t s = start[c]; s < start[c + 1]; ++s)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t m = member[s], i = faces[m], j = adj.neighbor[3 * i + std::size_t(k)];
+      if(j == Face_adjacency::no_face || j == i) continue;
+      const std::size_t r = rank_of(j);
+      if(r != Label_problem::fixed && local[r] == c) continue;
+      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+      links.push_back(r == Label_problem::fixed ? Label_problem::Link{r, label_of(j), w}
+                                                : Label_problem::Link{local[r], -1, w});
+    }
+  merge_parallel_links(links);
+}
+
 // The problem on the C clusters of `faces` (increasing), `local` the cluster of each face: a
 // cluster may take any candidate of its faces, at the sum of their costs (a face without that
 // candidate adds its `excluded` cost), and starts with its cheapest; a cut between two clusters
 // costs the cut edges between them.
-template <typename LabelOf>
+template <typename ConcurrencyTag, typename LabelOf>
 Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
                               const std::vector<int>& orientation, double edge_scale,
                               const std::vector<std::size_t>& faces, const Set_ranks& rank_of,
                               const std::vector<std::size_t>& local, std::size_t number_of_clusters,
                               const LabelOf& label_of)
 {
+  const std::size_t C = number_of_clusters;
   std::vector<std::size_t> start, member; // the members of cluster c: faces[member[start[c] .. start[c + 1])]
-  group_indices(faces.size(), number_of_clusters, [&](std::size_t m) { return local[m]; },
-                [](std::size_t) { return true; }, start, member);
-  Label_problem p;
-  std::vector<std::int32_t> labels;
-  for(std::size_t c = 0; c < number_of_clusters; ++c)
-  {
+  group_indices(faces.size(), C, [&](std::size_t m) { return local[m]; }, [](std::size_t) { return true; }, start,
+                member);
+  // the candidates of the faces of cluster c, sorted, without repeats
+  const auto cluster_labels = [&](std::size_t c, std::vector<std::int32_t>& labels) {
     labels.clear();
     for(std::size_t s = start[c]; s < start[c + 1]; ++s)
     {
@@ -202,34 +224,46 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
     }
     std::sort(labels.begin(), labels.end());
     labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
-    std::int32_t cheapest = labels.front();
-    double least = std::numeric_limits<double>::infinity();
-    for(std::int32_t l : labels)
+  };
+  Label_problem p;
+  p.first.assign(C + 1, 0);
+  for_each_range<ConcurrencyTag>(C, [&](std::size_t b, std::size_t e) {
+    std::vector<std::int32_t> labels;
+    for(std::size_t c = b; c < e; ++c)
     {
-      double sum = 0.;
-      for(std::size_t s = start[c]; s < start[c + 1]; ++s)
+      cluster_labels(c, labels);
+      p.first[c + 1] = labels.size();
+    }
+  }, 256);
+  for(std::size_t c = 0; c < C; ++c) p.first[c + 1] += p.first[c];
+  p.option.resize(p.first[C]);
+  p.option_cost.resize(p.first[C]);
+  p.label.resize(C);
+  p.links.resize(C);
+  for_each_range<ConcurrencyTag>(C, [&](std::size_t b, std::size_t e) {
+    std::vector<std::int32_t> labels;
+    for(std::size_t c = b; c < e; ++c)
+    {
+      cluster_labels(c, labels);
+      double least = std::numeric_limits<double>::infinity();
+      p.label[c] = labels.front();
+      for(std::size_t o = 0; o < labels.size(); ++o)
       {
-        const std::size_t i = faces[member[s]];
-        const int k = candidates.find(i, l);
-        sum += k < 0 ? candidates.excluded[i] : candidates.cost[i][std::size_t(k)];
+        double sum = 0.;
+        for(std::size_t s = start[c]; s < start[c + 1]; ++s)
+        {
+          const std::size_t i = faces[member[s]];
+          const int k = candidates.find(i, labels[o]);
+          sum += k < 0 ? candidates.excluded[i] : candidates.cost[i][std::size_t(k)];
+        }
+        p.option[p.first[c] + o] = labels[o];
+        p.option_cost[p.first[c] + o] = sum;
+        if(sum < least) { least = sum; p.label[c] = labels[o]; }
       }
-      p.add_option(l, sum);
-      if(sum < least) { least = sum; cheapest = l; }
+      cluster_links(adj, corners, orientation, edge_scale, faces, rank_of, local, label_of, start, member, c,
+                    p.links[c]);
     }
-    p.add_member(cheapest);
-  }
-  for(std::size_t m = 0; m < faces.size(); ++m)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t i = faces[m], j = adj.neighbor[3 * i + std::size_t(k)];
-      if(j == Face_adjacency::no_face || j == i) continue;
-      const std::size_t r = rank_of(j);
-      if(r != Label_problem::fixed && local[r] == local[m]) continue;
-      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
-      p.links[local[m]].push_back(r == Label_problem::fixed ? Label_problem::Link{r, label_of(j), w}
-                                                             : Label_problem::Link{local[r], -1, w});
-    }
-  for(std::vector<Label_problem::Link>& links : p.links) merge_parallel_links(links);
+  }, 256);
   return p;
 }
 
@@ -237,7 +271,8 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
 // `initial`. A set with far fewer clusters than faces is labelled in two levels, because a max-flow
 // on a fine mesh follows paths across the whole set: its clusters first, then again face by face,
 // the clusters next to a cut only (the cut moves within them), the rest fixed at its cluster's label.
-inline void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
+template <typename ConcurrencyTag>
+void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
                                 const Face_candidates& candidates, const std::vector<int>& orientation,
                                 double edge_scale, const std::vector<std::size_t>& faces, const Set_ranks& rank_of,
                                 const std::vector<std::size_t>& cluster, const std::vector<std::int32_t>& initial,
@@ -253,8 +288,8 @@ inline void label_contested_set(const Face_adjacency& adj, const Face_corners& c
     for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
     return;
   }
-  Label_problem coarse = cluster_problem(adj, corners, candidates, orientation, edge_scale, faces, rank_of, local,
-                                         number_of_clusters, initial_label);
+  Label_problem coarse = cluster_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces,
+                                                         rank_of, local, number_of_clusters, initial_label);
   minimize_labels(coarse);
   // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
   std::vector<std::int32_t> projected(faces.size());
@@ -333,8 +368,8 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
       const std::size_t c = sets[s];
       faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
       const Set_ranks rank_of{component, contested, rank, c};
-      label_contested_set(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster, initial,
-                          face_label);
+      label_contested_set<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster,
+                                          initial, face_label);
     }
   }, 1);
   return face_label;
