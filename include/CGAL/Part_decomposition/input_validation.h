@@ -81,6 +81,37 @@ private:
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// The bounding box [lo, hi] of the vertices of `tm` incident to a face (vertex by vertex: a face
+// loop visits each vertex six times); throws if one has a non-finite coordinate. Returns false if
+// `tm` has no face.
+template <typename FaceGraph, typename VertexPointMap>
+bool face_vertex_box(const FaceGraph& tm, const VertexPointMap& vpm, double lo[3], double hi[3])
+{
+  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
+  bool any = false;
+  for(auto v : vertices(tm))
+  {
+    const auto h = halfedge(v, tm);
+    if(h == boost::graph_traits<FaceGraph>::null_halfedge()) continue;
+    bool on_face = false;
+    for(auto g : halfedges_around_target(h, tm))
+      if(!is_border(g, tm)) { on_face = true; break; }
+    if(!on_face) continue;
+    const auto& p = get(vpm, v);
+    const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    for(int a = 0; a < 3; ++a)
+    {
+      if(!std::isfinite(c[a]))
+        throw Invalid_input(Input_error::NON_FINITE_COORDINATES, "a vertex has a non-finite coordinate");
+      lo[a] = (std::min)(lo[a], c[a]);
+      hi[a] = (std::max)(hi[a], c[a]);
+    }
+    any = true;
+  }
+  return any;
+}
+
 // The bounding box [lo, hi] of finite coordinates must have an extent and lie in the range where
 // squared lengths neither overflow nor underflow.
 inline void check_extent(const double lo[3], const double hi[3])
@@ -216,22 +247,7 @@ void check_input(const TriangleMesh& tm, const NamedParameters& np = CGAL::param
   }
 
   double lo[3], hi[3];
-  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-  for(auto f : faces(tm))
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
-    {
-      const auto& p = get(vpm, v);
-      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      for(int a = 0; a < 3; ++a)
-      {
-        if(!std::isfinite(c[a]))
-          throw Invalid_input(Input_error::NON_FINITE_COORDINATES,
-                              "a vertex has a non-finite coordinate");
-        lo[a] = (std::min)(lo[a], c[a]);
-        hi[a] = (std::max)(hi[a], c[a]);
-      }
-    }
+  internal::face_vertex_box(tm, vpm, lo, hi);
   internal::check_extent(lo, hi);
 }
 

@@ -141,24 +141,7 @@ Normalization compute_normalization(const FaceListGraph& tm,
   const double margin = internal::read_normalization_parameters(np).margin;
 
   double lo[3], hi[3];
-  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-  bool any = false;
-  for(auto f : faces(tm))
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
-    {
-      const auto& p = get(vpm, v);
-      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      for(int a = 0; a < 3; ++a)
-      {
-        if(!std::isfinite(c[a]))
-          throw Invalid_input(Input_error::NON_FINITE_COORDINATES, "a vertex has a non-finite coordinate");
-        lo[a] = (std::min)(lo[a], c[a]);
-        hi[a] = (std::max)(hi[a], c[a]);
-      }
-      any = true;
-    }
-  if(!any)
+  if(!internal::face_vertex_box(tm, vpm, lo, hi))
     throw Invalid_input(Input_error::NO_FACES, "the mesh has no face");
   internal::check_extent(lo, hi);
 
