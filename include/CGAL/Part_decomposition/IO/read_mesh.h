@@ -152,9 +152,10 @@ sizes from the origin) and the smallest gap between distinct border vertices in 
 (\f$4 \cdot 10^{-5}\f$); see the user manual. A mesh stored in float32 far from the origin (more
 than about ten times its size) has a larger round-off and needs a larger tolerance.
 
-The file is read into memory at once and parsed in place by the package's own parsers; a broken
-or hostile file gives `Invalid_input` (`UNREADABLE_FILE`) with the line (the byte of binary data)
-and what was expected, e.g.\ `cannot parse 'x.obj' as OBJ: line 12: expected a vertex index after
+The file is read into memory at once and parsed in place by the package's own parsers (an ASCII
+OFF file in blocks of lines, and the halfedges of a `CGAL::Surface_mesh`, in parallel when TBB is
+available); a broken or hostile file gives `Invalid_input` (`UNREADABLE_FILE`) with the line (the
+byte of binary data) and what was expected, e.g.\ `cannot parse 'x.obj' as OBJ: line 12: expected a vertex index after
 'f', got 'abc'`. OBJ: vertices and faces (`f`, corners `i`, `i/t`, `i//n`, `i/t/n`, negative
 indices, a trailing backslash continuing the line) are read, every other statement skipped. ASCII
 PLY: an element is one line, and values after the properties its header declares (MeshLab writes
@@ -181,8 +182,8 @@ the distinct corners, so that `Mesh_file_info::number_of_input_vertices` counts 
 \returns the correspondence between the faces of `tm` and those of the file.
 
 \par Complexity
-\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices, a sort, and the
-search of the border vertices to weld), plus the ear
+\f$O(n \log n)\f$ for a file of size \f$n\f$ (the merging of equal vertices, a sort, and, when an
+edge has one triangle only, the search of the border vertices to weld), plus the ear
 clipping of the polygons, quadratic in the number of vertices of each polygon, and the orientation
 of the soup by `CGAL::Polygon_mesh_processing::orient_polygon_soup()`, which is skipped when the
 triangles already form a consistently oriented manifold (checked in linear time).
