@@ -202,19 +202,30 @@ TEST_CASE("unreadable or broken files give a clear error", "[io]")
         PD::Input_error::NO_FACES);
 }
 
+namespace {
+
+// The triangles of a mesh as vertex indices.
+std::vector<std::array<std::size_t, 3> > soup_of(const Mesh& m)
+{
+  std::vector<std::array<std::size_t, 3> > soup;
+  for(auto f : faces(m))
+  {
+    std::array<std::size_t, 3> t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) t[std::size_t(k++)] = std::size_t(v);
+    soup.push_back(t);
+  }
+  return soup;
+}
+
+} // namespace
+
 TEST_CASE("the oriented-manifold check lets only clean soups skip the orienter", "[io]")
 {
   using PD::internal::is_oriented_manifold_soup;
   typedef std::vector<std::array<std::size_t, 3> > Triangles;
   const Mesh box = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 3);
-  Triangles tris;
-  for(auto f : faces(box))
-  {
-    std::array<std::size_t, 3> t;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, box), box)) t[k++] = std::size_t(v);
-    tris.push_back(t);
-  }
+  const Triangles tris = soup_of(box);
   const std::size_t n = num_vertices(box);
   CHECK(is_oriented_manifold_soup(tris, n));
 
@@ -269,20 +280,13 @@ TEST_CASE("the reader's builders make the mesh of add_face() on closed and open 
 {
   typedef std::vector<std::array<std::size_t, 3> > Triangles;
   const Mesh sphere = test_shapes::make_sphere(Point(0, 0, 0), 1., 3);
-  Triangles closed;
-  for(auto f : faces(sphere))
-  {
-    std::array<std::size_t, 3> t;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, sphere), sphere)) t[k++] = std::size_t(v);
-    closed.push_back(t);
-  }
+  const Triangles closed = soup_of(sphere);
   Triangles open; // two holes
   for(std::size_t t = 0; t < closed.size(); ++t)
     if(t != 3 && t != closed.size() / 2) open.push_back(closed[t]);
   const std::size_t n = num_vertices(sphere);
   REQUIRE(PD::internal::is_oriented_manifold_soup(open, n));
-  for(const Triangles* soup : {&closed, &open})
+  for(const Triangles* soup : {&closed, static_cast<const Triangles*>(&open)})
   {
     Mesh expected;
     for(std::size_t i = 0; i < n; ++i) expected.add_vertex(Point(double(i), 0, 0));

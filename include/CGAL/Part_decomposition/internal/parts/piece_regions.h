@@ -402,7 +402,7 @@ std::vector<double> junction_length_fractions(const Face_adjacency& adj, const C
                                               const std::vector<std::size_t>& piece, std::size_t number_of_pieces)
 {
   std::vector<double> junction(number_of_pieces, 0.), total(number_of_pieces, 0.);
-  if(adj.junction.empty()) return junction;
+  if(std::find(adj.junction.begin(), adj.junction.end(), std::uint8_t(1)) == adj.junction.end()) return junction;
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> chain;
   std::vector<double> chain_length;
