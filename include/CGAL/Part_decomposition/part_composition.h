@@ -266,12 +266,12 @@ void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector
 {
   const std::size_t nf = c.parts.size();
   std::vector<std::array<std::size_t, 4> > key(nf);
-  for(std::size_t i = 0; i < nf; ++i)
-    key[i] = {{c.parts[i], volume_part.empty() ? 0 : volume_part[i], region.empty() ? 0 : region[i], patch_of_face(i)}};
-  index_of_keys<ConcurrencyTag>(key, c.finest_parts);
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      key[i] = {{c.parts[i], volume_part.empty() ? 0 : volume_part[i], region.empty() ? 0 : region[i], patch_of_face(i)}};
+  }, 4096);
+  index_of_keys<ConcurrencyTag>(key, 2, c.finest_parts, c.part_groups);
   c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
-  for(auto& k : key) k[2] = k[3] = 0;
-  index_of_keys<ConcurrencyTag>(key, c.part_groups);
 }
 
 // Per piece: 1 if it is splittable (`splittable_pieces(adj, ...)`) and not an assembly of sheets,

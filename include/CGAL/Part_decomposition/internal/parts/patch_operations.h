@@ -12,6 +12,7 @@
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -163,24 +164,32 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
   return renumber_by_first_face(label);
 }
 
-// The rank of each key among the distinct keys (`index`), and their number: the keys sorted with
-// their indices, ranked in one pass.
-template <typename ConcurrencyTag, typename Key>
-std::size_t index_of_keys(const std::vector<Key>& key, std::vector<std::size_t>& index)
+// The rank of each key among the distinct keys (`index`) and the rank of its first
+// `prefix_length` entries among the distinct prefixes (`prefix_index`): one sort of the keys with
+// their indices (lexicographic, so equal prefixes are consecutive), ranked in one pass.
+template <typename ConcurrencyTag, typename T, std::size_t N>
+void index_of_keys(const std::vector<std::array<T, N> >& key, std::size_t prefix_length,
+                   std::vector<std::size_t>& index, std::vector<std::size_t>& prefix_index)
 {
-  std::vector<std::pair<Key, std::size_t> > sorted(key.size());
+  std::vector<std::pair<std::array<T, N>, std::size_t> > sorted(key.size());
   for_each_range<ConcurrencyTag>(key.size(), [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i) sorted[i] = std::make_pair(key[i], i);
   }, 4096);
   sort_distinct<ConcurrencyTag>(sorted.begin(), sorted.end());
   index.resize(key.size());
-  std::size_t rank = 0;
+  prefix_index.resize(key.size());
+  std::size_t rank = 0, prefix_rank = 0;
   for(std::size_t s = 0; s < sorted.size(); ++s)
   {
-    if(s > 0 && sorted[s].first != sorted[s - 1].first) ++rank;
+    if(s > 0 && sorted[s].first != sorted[s - 1].first)
+    {
+      ++rank;
+      if(!std::equal(sorted[s].first.begin(), sorted[s].first.begin() + prefix_length, sorted[s - 1].first.begin()))
+        ++prefix_rank;
+    }
     index[sorted[s].second] = rank;
+    prefix_index[sorted[s].second] = prefix_rank;
   }
-  return sorted.empty() ? 0 : rank + 1;
 }
 
 // Merges every patch whose area is below `min_area` into the neighbouring patch across its
