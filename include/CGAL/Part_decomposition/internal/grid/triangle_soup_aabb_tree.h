@@ -173,7 +173,7 @@ public:
         key[i] = std::make_pair(code, std::uint32_t(i));
       }
     }, 4096);
-    sort_distinct<Tag>(key.begin(), key.end());
+    sort_values<Tag>(key.begin(), key.end());
 
     m_triangles.resize(n);
     m_soup_index.resize(n);

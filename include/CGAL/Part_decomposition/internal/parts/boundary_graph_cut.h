@@ -163,16 +163,21 @@ inline void merge_parallel_links(std::vector<Label_problem::Link>& links)
 }
 
 // The cluster of each face of `faces` numbered 0..C-1 in increasing cluster id; returns C.
-inline std::size_t local_clusters(const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
-                                  std::vector<std::size_t>& local)
+template <typename ConcurrencyTag>
+std::size_t local_clusters(const std::vector<std::size_t>& faces, const std::vector<std::size_t>& cluster,
+                           std::vector<std::size_t>& local)
 {
-  std::vector<std::size_t> ids;
-  for(std::size_t i : faces) ids.push_back(cluster[i]);
-  std::sort(ids.begin(), ids.end());
+  std::vector<std::size_t> ids(faces.size());
+  for_each_range<ConcurrencyTag>(faces.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t m = b; m < e; ++m) ids[m] = cluster[faces[m]];
+  }, 4096);
+  sort_values<ConcurrencyTag>(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   local.resize(faces.size());
-  for(std::size_t m = 0; m < faces.size(); ++m)
-    local[m] = std::size_t(std::lower_bound(ids.begin(), ids.end(), cluster[faces[m]]) - ids.begin());
+  for_each_range<ConcurrencyTag>(faces.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t m = b; m < e; ++m)
+      local[m] = std::size_t(std::lower_bound(ids.begin(), ids.end(), cluster[faces[m]]) - ids.begin());
+  }, 4096);
   return ids.size();
 }
 
@@ -280,7 +285,7 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
 {
   const auto initial_label = [&](std::size_t j) { return initial[j]; };
   std::vector<std::size_t> local;
-  const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters(faces, cluster, local);
+  const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters<ConcurrencyTag>(faces, cluster, local);
   if(2 * number_of_clusters > faces.size())
   {
     Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, rank_of, initial_label);
@@ -293,22 +298,30 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
   minimize_labels(coarse);
   // each face takes its cluster's label, or its cheapest candidate if that is not one of its own
   std::vector<std::int32_t> projected(faces.size());
-  std::vector<std::uint8_t> refine(coarse.size(), 0);
-  for(std::size_t m = 0; m < faces.size(); ++m)
-  {
-    const std::size_t i = faces[m];
-    projected[m] = candidates.find(i, coarse.label[local[m]]) < 0 ? candidates.label[i][0] : coarse.label[local[m]];
-  }
+  for_each_range<ConcurrencyTag>(faces.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t m = b; m < e; ++m)
+    {
+      const std::size_t i = faces[m];
+      const std::int32_t l = coarse.label[local[m]];
+      projected[m] = candidates.find(i, l) < 0 ? candidates.label[i][0] : l;
+    }
+  }, 4096);
   const auto label_of = [&](std::size_t j) {
     const std::size_t r = rank_of(j);
     return r == Label_problem::fixed ? initial[j] : projected[r];
   };
+  // the clusters with a face next to another label
+  std::vector<std::uint8_t> next_to_cut(faces.size(), 0), refine(coarse.size(), 0);
+  for_each_range<ConcurrencyTag>(faces.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t m = b; m < e; ++m)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * faces[m] + std::size_t(k)];
+        if(j != Face_adjacency::no_face && label_of(j) != projected[m]) next_to_cut[m] = 1;
+      }
+  }, 4096);
   for(std::size_t m = 0; m < faces.size(); ++m)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t j = adj.neighbor[3 * faces[m] + std::size_t(k)];
-      if(j != Face_adjacency::no_face && label_of(j) != projected[m]) refine[local[m]] = 1;
-    }
+    if(next_to_cut[m]) refine[local[m]] = 1;
   std::vector<std::size_t> band, band_rank(faces.size(), Label_problem::fixed);
   for(std::size_t m = 0; m < faces.size(); ++m)
     if(refine[local[m]])

@@ -97,7 +97,7 @@ std::vector<std::uint64_t> uncut_edges_by_angle(const Face_adjacency& adj, const
       }
     }
   }
-  sort_distinct<ConcurrencyTag>(edges.begin(), edges.end());
+  sort_values<ConcurrencyTag>(edges.begin(), edges.end());
   return edges;
 }
 
@@ -175,7 +175,7 @@ void index_of_keys(const std::vector<std::array<T, N> >& key, std::size_t prefix
   for_each_range<ConcurrencyTag>(key.size(), [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i) sorted[i] = std::make_pair(key[i], i);
   }, 4096);
-  sort_distinct<ConcurrencyTag>(sorted.begin(), sorted.end());
+  sort_values<ConcurrencyTag>(sorted.begin(), sorted.end());
   index.resize(key.size());
   prefix_index.resize(key.size());
   std::size_t rank = 0, prefix_rank = 0;

@@ -69,7 +69,7 @@ void find_twin_faces(const Corners& corners, Face_adjacency& adj)
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i) hashed[i] = std::make_pair(hash_of_points(sorted_corners(i)[0].data(), 9), i);
   }, 4096);
-  sort_distinct<ConcurrencyTag>(hashed.begin(), hashed.end());
+  sort_values<ConcurrencyTag>(hashed.begin(), hashed.end());
   adj.twin.assign(nf, Face_adjacency::no_face);
   std::vector<std::pair<C, std::size_t> > group;
   for(std::size_t s = 0; s < nf;)

@@ -210,9 +210,10 @@ decltype(auto) add_seconds(double& total, const F& f)
 }
 
 // Sorts [first, last) with `less`, with TBB when `ConcurrencyTag` is parallel: only for ranges in
-// which no two elements compare equal, so that the order does not depend on the sort.
+// which elements that compare equal are identical (all distinct, or plain numbers), so that the
+// result does not depend on the sort.
 template <typename ConcurrencyTag, typename Iterator, typename Less = std::less<> >
-void sort_distinct(Iterator first, Iterator last, const Less& less = Less())
+void sort_values(Iterator first, Iterator last, const Less& less = Less())
 {
   static_check_concurrency_tag<ConcurrencyTag>();
 #ifdef CGAL_LINKED_WITH_TBB
