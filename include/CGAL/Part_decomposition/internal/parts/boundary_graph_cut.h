@@ -107,27 +107,39 @@ struct Set_ranks
 // The problem on the faces `faces` (increasing; `rank_of(j)`: the rank of j in `faces`, or
 // Label_problem::fixed), each starting with label_of(i), a candidate; the other faces around them
 // are fixed at label_of(j).
-template <typename RankOf, typename LabelOf>
+template <typename ConcurrencyTag, typename RankOf, typename LabelOf>
 Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
                            const std::vector<int>& orientation, double edge_scale,
                            const std::vector<std::size_t>& faces, const RankOf& rank_of, const LabelOf& label_of)
 {
+  const std::size_t n = faces.size();
   Label_problem p;
-  for(std::size_t m = 0; m < faces.size(); ++m)
-  {
-    const std::size_t i = faces[m];
-    for(int c = 0; c < candidates.size(i); ++c)
-      p.add_option(candidates.label[i][std::size_t(c)], candidates.cost[i][std::size_t(c)]);
-    p.add_member(label_of(i));
-    for(int k = 0; k < 3; ++k)
+  p.first.assign(n + 1, 0);
+  for(std::size_t m = 0; m < n; ++m) p.first[m + 1] = p.first[m] + std::size_t(candidates.size(faces[m]));
+  p.option.resize(p.first[n]);
+  p.option_cost.resize(p.first[n]);
+  p.label.resize(n);
+  p.links.resize(n);
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+    for(std::size_t m = b; m < e; ++m)
     {
-      const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
-      if(j == Face_adjacency::no_face || j == i) continue;
-      const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
-      const std::size_t r = rank_of(j);
-      p.links[m].push_back({r, r == Label_problem::fixed ? label_of(j) : -1, w});
+      const std::size_t i = faces[m];
+      for(int c = 0; c < candidates.size(i); ++c)
+      {
+        p.option[p.first[m] + std::size_t(c)] = candidates.label[i][std::size_t(c)];
+        p.option_cost[p.first[m] + std::size_t(c)] = candidates.cost[i][std::size_t(c)];
+      }
+      p.label[m] = label_of(i);
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
+        if(j == Face_adjacency::no_face || j == i) continue;
+        const double w = slot_cut_cost(adj, corners, orientation, i, k, edge_scale);
+        const std::size_t r = rank_of(j);
+        p.links[m].push_back({r, r == Label_problem::fixed ? label_of(j) : -1, w});
+      }
     }
-  }
+  }, 1024);
   return p;
 }
 
@@ -288,7 +300,8 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
   const std::size_t number_of_clusters = cluster.empty() ? faces.size() : local_clusters<ConcurrencyTag>(faces, cluster, local);
   if(2 * number_of_clusters > faces.size())
   {
-    Label_problem p = face_problem(adj, corners, candidates, orientation, edge_scale, faces, rank_of, initial_label);
+    Label_problem p = face_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of,
+                                                   initial_label);
     minimize_labels(p);
     for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
     return;
@@ -333,7 +346,8 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
     const std::size_t r = rank_of(j);
     return r == Label_problem::fixed ? r : band_rank[r];
   };
-  Label_problem fine = face_problem(adj, corners, candidates, orientation, edge_scale, band, rank_in_band, label_of);
+  Label_problem fine =
+    face_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, band, rank_in_band, label_of);
   minimize_labels(fine);
   for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = projected[m];
   for(std::size_t b = 0; b < band.size(); ++b) face_label[band[b]] = fine.label[b];
