@@ -145,18 +145,19 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
 
 // Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
 // a grid of spacing `cell` (a face elsewhere is alone).
-inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
-                                              double cell)
+template <typename ConcurrencyTag>
+std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
+                                       double cell)
 {
-  const auto same_cell = [&](std::size_t i, std::size_t j) {
-    for(std::size_t a = 0; a < 3; ++a)
-      if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
-    return true;
-  };
+  std::vector<std::array<double, 3> > cell_of(adj.number_of_faces);
+  for_each_range<ConcurrencyTag>(adj.number_of_faces, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      for(std::size_t a = 0; a < 3; ++a) cell_of[i][a] = std::floor(adj.centroid[3 * i + a] / cell);
+  }, 4096);
   std::vector<std::size_t> cluster;
   face_components(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
-    return contested[i] && contested[j] && same_cell(i, j);
+    return contested[i] && contested[j] && cell_of[i] == cell_of[j];
   }, cluster);
   return cluster;
 }
@@ -365,16 +366,24 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
   const std::size_t nf = adj.number_of_faces;
   std::vector<std::int32_t> face_label(nf);
   std::vector<std::uint8_t> contested(nf, 0);
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    face_label[i] = candidates.label[i][0];
-    contested[i] = candidates.size(i) > 1;
-  }
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      face_label[i] = candidates.label[i][0];
+      contested[i] = candidates.size(i) > 1;
+    }
+  }, 4096);
   if(edge_scale <= 0.) return face_label;
-  std::vector<std::size_t> component;
-  const std::size_t nc = face_components(adj, [&](std::size_t i, int k) {
-    return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
-  }, component);
+  // the contested sets, and the clusters of the two-level labelling
+  std::vector<std::size_t> component, cluster;
+  std::size_t nc = 0;
+  run_side_by_side<ConcurrencyTag>(
+    [&] {
+      nc = face_components(adj, [&](std::size_t i, int k) {
+        return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
+      }, component);
+    },
+    [&] { if(cluster_cell > 0.) cluster = face_clusters<ConcurrencyTag>(adj, contested, cluster_cell); });
   // the contested faces of each component, by increasing face index
   std::vector<std::size_t> start, order;
   group_indices(nf, nc, [&](std::size_t i) { return component[i]; }, [&](std::size_t i) { return contested[i] != 0; },
@@ -382,11 +391,10 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
   std::vector<std::size_t> sets; // the components with contested faces
   for(std::size_t c = 0; c < nc; ++c)
     if(start[c] < start[c + 1]) sets.push_back(c);
-  const std::vector<std::size_t> cluster =
-      cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
   std::vector<std::size_t> rank(nf, 0); // of each contested face in its set
-  for(std::size_t c : sets)
-    for(std::size_t s = start[c]; s < start[c + 1]; ++s) rank[order[s]] = s - start[c];
+  for_each_range<ConcurrencyTag>(order.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t s = b; s < e; ++s) rank[order[s]] = s - start[component[order[s]]];
+  }, 4096);
   const std::vector<std::int32_t> initial(face_label); // read by all, each set writes its own faces
   for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
     std::vector<std::size_t> faces;
