@@ -145,19 +145,20 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
 
 // Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
 // a grid of spacing `cell` (a face elsewhere is alone).
-template <typename ConcurrencyTag>
-std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
-                                       double cell)
+inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
+                                              double cell)
 {
-  std::vector<std::array<double, 3> > cell_of(adj.number_of_faces);
-  for_each_range<ConcurrencyTag>(adj.number_of_faces, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i)
-      for(std::size_t a = 0; a < 3; ++a) cell_of[i][a] = std::floor(adj.centroid[3 * i + a] / cell);
-  }, 4096);
+  // the cells are compared edge by edge: kept per face, they would raise the peak memory of a
+  // large mesh, which this step reaches
+  const auto same_cell = [&](std::size_t i, std::size_t j) {
+    for(std::size_t a = 0; a < 3; ++a)
+      if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
+    return true;
+  };
   std::vector<std::size_t> cluster;
   face_components(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
-    return contested[i] && contested[j] && cell_of[i] == cell_of[j];
+    return contested[i] && contested[j] && same_cell(i, j);
   }, cluster);
   return cluster;
 }
@@ -374,16 +375,14 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     }
   }, 4096);
   if(edge_scale <= 0.) return face_label;
-  // the contested sets, and the clusters of the two-level labelling
-  std::vector<std::size_t> component, cluster;
-  std::size_t nc = 0;
-  run_side_by_side<ConcurrencyTag>(
-    [&] {
-      nc = face_components(adj, [&](std::size_t i, int k) {
-        return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
-      }, component);
-    },
-    [&] { if(cluster_cell > 0.) cluster = face_clusters<ConcurrencyTag>(adj, contested, cluster_cell); });
+  // the contested sets, then the clusters of the two-level labelling (one after the other: this
+  // step holds the peak memory of a large mesh)
+  std::vector<std::size_t> component;
+  const std::size_t nc = face_components(adj, [&](std::size_t i, int k) {
+    return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
+  }, component);
+  const std::vector<std::size_t> cluster =
+    cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
   // the contested faces of each component, by increasing face index
   std::vector<std::size_t> start, order;
   group_indices(nf, nc, [&](std::size_t i) { return component[i]; }, [&](std::size_t i) { return contested[i] != 0; },
