@@ -132,7 +132,7 @@ bool glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
       if(std::binary_search(border.begin(), border.end(), edge(c, k))) edges.emplace_back(edge(c, k), 3 * i + std::size_t(k));
   }
   std::sort(edges.begin(), edges.end());
-  adj.junction.assign(adj.neighbor.size(), 0);
+  adj.junction.clear(); // allocated at the first junction: empty means none
   bool glued = false;
   for(std::size_t s = 0; s < edges.size();)
   {
@@ -145,7 +145,11 @@ bool glue_coincident_border_edges(const TriangleMesh& tm, const FaceIndexMap& fi
       const std::size_t j = edges[t + 1 < e ? t + 1 : s].second / 3;
       adj.neighbor[slot] = j;
       glued = true;
-      adj.junction[slot] = e - s > 2;
+      if(e - s > 2)
+      {
+        if(adj.junction.empty()) adj.junction.assign(adj.neighbor.size(), 0);
+        adj.junction[slot] = 1;
+      }
       adj.angle[slot] = dihedral_angle(adj, i, j);
     }
     s = e;
@@ -402,7 +406,7 @@ std::vector<double> junction_length_fractions(const Face_adjacency& adj, const C
                                               const std::vector<std::size_t>& piece, std::size_t number_of_pieces)
 {
   std::vector<double> junction(number_of_pieces, 0.), total(number_of_pieces, 0.);
-  if(std::find(adj.junction.begin(), adj.junction.end(), std::uint8_t(1)) == adj.junction.end()) return junction;
+  if(adj.junction.empty()) return junction;
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> chain;
   std::vector<double> chain_length;

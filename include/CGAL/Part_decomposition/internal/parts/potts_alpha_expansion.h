@@ -46,18 +46,6 @@ struct Label_problem
   std::vector<std::vector<Link> > links;
 
   std::size_t size() const { return label.size(); }
-  void add_option(std::int32_t l, double cost)
-  {
-    option.push_back(l);
-    option_cost.push_back(cost);
-  }
-  // closes the options of the next member
-  void add_member(std::int32_t initial)
-  {
-    first.push_back(option.size());
-    label.push_back(initial);
-    links.emplace_back();
-  }
   // the cost of label l for member m, or -1 if l is not among its options
   double cost(std::size_t m, std::int32_t l) const
   {
