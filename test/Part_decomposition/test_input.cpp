@@ -222,8 +222,11 @@ std::vector<std::array<std::size_t, 3> > soup_of(const Mesh& m)
 
 TEST_CASE("the oriented-manifold check lets only clean soups skip the orienter", "[io]")
 {
-  using PD::internal::is_oriented_manifold_soup;
   typedef std::vector<std::array<std::size_t, 3> > Triangles;
+  // the check the reader runs
+  const auto is_oriented_manifold_soup = [](const Triangles& triangles, std::size_t number_of_points) {
+    return PD::internal::soup_topology(triangles, number_of_points).oriented_manifold;
+  };
   const Mesh box = test_shapes::make_box(Point(0, 0, 0), Point(1, 1, 1), 3);
   const Triangles tris = soup_of(box);
   const std::size_t n = num_vertices(box);
@@ -285,7 +288,7 @@ TEST_CASE("the reader's builders make the mesh of add_face() on closed and open 
   for(std::size_t t = 0; t < closed.size(); ++t)
     if(t != 3 && t != closed.size() / 2) open.push_back(closed[t]);
   const std::size_t n = num_vertices(sphere);
-  REQUIRE(PD::internal::is_oriented_manifold_soup(open, n));
+  REQUIRE(PD::internal::soup_topology(open, n).oriented_manifold);
   for(const Triangles* soup : {&closed, static_cast<const Triangles*>(&open)})
   {
     Mesh expected;

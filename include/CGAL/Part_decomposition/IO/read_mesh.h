@@ -155,10 +155,10 @@ than about ten times its size) has a larger round-off and needs a larger toleran
 The file is read into memory at once and parsed in place by the package's own parsers (an ASCII
 OFF file in blocks of lines, and the halfedges of a `CGAL::Surface_mesh`, in parallel when TBB is
 available); a broken or hostile file gives `Invalid_input` (`UNREADABLE_FILE`) with the line (the
-byte of binary data) and what was expected, e.g.\ `cannot parse 'x.obj' as OBJ: line 12: expected a vertex index after
-'f', got 'abc'`. OBJ: vertices and faces (`f`, corners `i`, `i/t`, `i//n`, `i/t/n`, negative
-indices, a trailing backslash continuing the line) are read, every other statement skipped. ASCII
-PLY: an element is one line, and values after the properties its header declares (MeshLab writes
+byte of binary data) and what was expected, e.g.\ `cannot parse 'x.obj' as OBJ: line 12: expected
+a vertex index after 'f', got 'abc'`. OBJ: vertices and faces (`f`, corners `i`, `i/t`, `i//n`,
+`i/t/n`, negative indices, a trailing backslash continuing the line) are read, every other
+statement skipped. ASCII PLY: an element is one line, and values after the properties its header declares (MeshLab writes
 lists its header does not declare) are ignored and counted
 (`Mesh_file_info::number_of_ignored_values`); a line with fewer values is an error naming it. A
 UTF-8 byte-order mark before an OFF, OBJ or PLY file is skipped. glTF: every triangle primitive

@@ -23,6 +23,7 @@
 #include <CGAL/Part_decomposition/internal/io/oriented_soup_to_mesh.h>
 #include <CGAL/Part_decomposition/internal/io/triangulate_polygon.h>
 #include <CGAL/Part_decomposition/internal/io/weld_border_points.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/IO/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -33,10 +34,6 @@
 #include <CGAL/Dynamic_property_map.h>
 
 #include <cstring>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_sort.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -242,11 +239,7 @@ inline void merge_equal_points(File_soup& soup)
     }
     return a.i < b.i;
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_sort(order.begin(), order.end(), less);
-#else
-  std::sort(order.begin(), order.end(), less);
-#endif
+  sort_values<CGAL::Parallel_if_available_tag>(order.begin(), order.end(), less);
   std::vector<std::size_t> first(n);
   for(std::size_t i = 0; i < n; ++i)
     first[order[i].i] = (i > 0 && order[i].c == order[i - 1].c) ? first[order[i - 1].i] : order[i].i;
@@ -394,34 +387,27 @@ void drop_faces_of_refused_triangles(
 }
 
 // The edge-connected components of the triangles of `tm`, numbered in the order of faces(tm)
-// (a union-find over the face indices: CGAL's connected_components() is several times slower on
+// (disjoint sets of the face indices: CGAL's connected_components() is several times slower on
 // a million faces). Returns their number.
 template <typename TriangleMesh, typename FaceIndexMap>
 std::size_t face_components(const TriangleMesh& tm, const FaceIndexMap& index, std::vector<std::size_t>& component)
 {
   const std::size_t n = component.size();
-  std::vector<std::size_t> parent(n);
-  for(std::size_t i = 0; i < n; ++i) parent[i] = i;
-  auto root = [&](std::size_t i) {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  Index_sets sets(n);
   for(auto f : faces(tm))
   {
     auto h = halfedge(f, tm);
     for(int k = 0; k < 3; ++k, h = next(h, tm))
     {
       const auto g = face(opposite(h, tm), tm);
-      if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
-      const std::size_t a = root(get(index, f)), b = root(get(index, g));
-      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+      if(g != boost::graph_traits<TriangleMesh>::null_face()) sets.unite(get(index, f), get(index, g));
     }
   }
   std::size_t count = 0;
   std::vector<std::size_t> id_of_root(n, std::size_t(-1));
   for(auto f : faces(tm))
   {
-    const std::size_t r = root(get(index, f));
+    const std::size_t r = sets.find(get(index, f));
     if(id_of_root[r] == std::size_t(-1)) id_of_root[r] = count++;
     component[get(index, f)] = id_of_root[r];
   }
@@ -430,31 +416,22 @@ std::size_t face_components(const TriangleMesh& tm, const FaceIndexMap& index, s
 
 // The components of the triangles of an oriented manifold soup (what orient_polygon_soup()
 // returns, or a soup that needed no orientation), each triangle added as a face: triangles that
-// share a point share an edge, since the triangles around each point form one fan. A union-find
-// over the points, whose array is smaller and read in a more local order than the faces of the
-// mesh. `fcc` is indexed by the index of the face of each triangle.
+// share a point share an edge, since the triangles around each point form one fan. Disjoint sets
+// of the points, fewer and read in a more local order than the faces of the mesh. `fcc` is indexed
+// by the index of the face of each triangle.
 template <typename FaceIndexMap, typename FaceDescriptor>
 std::size_t soup_components(const std::vector<std::array<std::size_t, 3> >& triangles, std::size_t number_of_points,
                             const std::vector<FaceDescriptor>& triangle_face, const FaceIndexMap& findex,
                             std::vector<std::size_t>& fcc)
 {
-  std::vector<std::size_t> parent(number_of_points);
-  for(std::size_t i = 0; i < number_of_points; ++i) parent[i] = i;
-  auto root = [&](std::size_t i) {
-    while(parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  Index_sets sets(number_of_points);
   for(const std::array<std::size_t, 3>& t : triangles)
-    for(int k = 1; k < 3; ++k)
-    {
-      const std::size_t a = root(t[0]), b = root(t[k]);
-      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-    }
+    for(int k = 1; k < 3; ++k) sets.unite(t[0], t[k]);
   std::size_t count = 0;
   std::vector<std::size_t> id_of_root(number_of_points, std::size_t(-1));
   for(std::size_t t = 0; t < triangles.size(); ++t)
   {
-    const std::size_t r = root(triangles[t][0]);
+    const std::size_t r = sets.find(triangles[t][0]);
     if(id_of_root[r] == std::size_t(-1)) id_of_root[r] = count++;
     fcc[get(findex, triangle_face[t])] = id_of_root[r];
   }
@@ -501,7 +478,7 @@ std::size_t orient_closed_components_outward(TriangleMesh& tm, const FaceIndexMa
     volume[c] += det[i];
   }
   std::vector<face_descriptor> to_reverse;
-  for(face_descriptor f : faces(tm))
+  for(face_descriptor f : face_list)
     if(closed[fcc[get(findex, f)]] && volume[fcc[get(findex, f)]] < 0.) to_reverse.push_back(f);
   std::size_t reversed = 0;
   for(std::size_t c = 0; c < ncc; ++c)

@@ -153,14 +153,6 @@ bool is_oriented_manifold_soup(const Soup_corners& corners, const Corner_rows& r
   return manifold;
 }
 
-// The same for a soup of `number_of_points` points, sequentially.
-template <typename TriangleRange>
-bool is_oriented_manifold_soup(const TriangleRange& triangles, std::size_t number_of_points)
-{
-  const Soup_corners corners{triangles};
-  return is_oriented_manifold_soup<CGAL::Sequential_tag>(corners, Corner_rows(corners, number_of_points));
-}
-
 } // namespace internal
 } // namespace Part_decomposition
 } // namespace CGAL

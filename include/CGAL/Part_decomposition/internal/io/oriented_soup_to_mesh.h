@@ -83,6 +83,20 @@ inline Soup_topology soup_topology(const std::vector<std::array<std::size_t, 3> 
   return t;
 }
 
+// Makes the halfedge of each point's vertex that of the last corner into the point, as add_face()
+// leaves an inner vertex (link_border_halfedges() then gives border vertices theirs); `h(c)`: the
+// halfedge of corner c.
+template <typename TriangleMesh, typename HalfedgeOfCorner>
+void set_vertex_halfedges(const Soup_corners& corners,
+                          const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vmap,
+                          const HalfedgeOfCorner& h, TriangleMesh& tm)
+{
+  std::vector<std::size_t> last_into(vmap.size(), no_corner);
+  for(std::size_t c = 0; c < corners.size(); ++c) last_into[corners.target(c)] = c;
+  for(std::size_t p = 0; p < vmap.size(); ++p)
+    if(last_into[p] != no_corner) set_halfedge(vmap[p], h(last_into[p]), tm);
+}
+
 // Links the border halfedges, the opposites of the corners without reverse (from target(c) to
 // source(c)), to each other and makes each the halfedge of its target, as add_face() does;
 // `h(c)`: the halfedge of corner c.
@@ -92,12 +106,13 @@ void link_border_halfedges(const Soup_corners& corners, const std::vector<std::s
                            const HalfedgeOfCorner& h, TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
-  const std::size_t nc = corners.size(), none = no_corner;
+  if(std::find(reverse.begin(), reverse.end(), no_corner) == reverse.end()) return; // closed
+  const std::size_t nc = corners.size();
   std::vector<typename GT::halfedge_descriptor> border_from(vmap.size(), GT::null_halfedge());
   for(std::size_t c = 0; c < nc; ++c)
-    if(reverse[c] == none) border_from[corners.target(c)] = opposite(h(c), tm);
+    if(reverse[c] == no_corner) border_from[corners.target(c)] = opposite(h(c), tm);
   for(std::size_t c = 0; c < nc; ++c)
-    if(reverse[c] == none)
+    if(reverse[c] == no_corner)
     {
       set_next(opposite(h(c), tm), border_from[corners.source(c)], tm);
       set_halfedge(vmap[corners.source(c)], opposite(h(c), tm), tm);
@@ -131,17 +146,14 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   const Soup_corners corners{triangles};
-  const std::size_t nc = corners.size(), np = vmap.size(), none = no_corner;
-
-  std::vector<halfedge_descriptor> h(nc);
+  std::vector<halfedge_descriptor> h(corners.size());
   std::vector<typename GT::face_descriptor> face_of(triangles.size());
-  std::vector<std::size_t> last_into(np, none); // the corner into each point of its last triangle
   for(std::size_t t = 0; t < triangles.size(); ++t)
   {
     for(std::size_t c = 3 * t; c < 3 * t + 3; ++c)
     {
       const std::size_t r = reverse[c];
-      if(r != none && r < c)
+      if(r != no_corner && r < c)
       {
         h[c] = opposite(h[r], tm);
         continue;
@@ -158,12 +170,11 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
     {
       set_face(h[c], f, tm);
       set_next(h[c], h[c + 1 < 3 * t + 3 ? c + 1 : 3 * t], tm);
-      last_into[corners.target(c)] = c;
     }
   }
-  for(std::size_t p = 0; p < np; ++p)
-    if(last_into[p] != none) set_halfedge(vmap[p], h[last_into[p]], tm);
-  link_border_halfedges(corners, reverse, vmap, [&](std::size_t c) { return h[c]; }, tm);
+  const auto halfedge_of = [&](std::size_t c) { return h[c]; };
+  set_vertex_halfedges(corners, vmap, halfedge_of, tm);
+  link_border_halfedges(corners, reverse, vmap, halfedge_of, tm);
   return face_of;
 }
 
@@ -188,7 +199,9 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
   std::vector<std::size_t> edge(nc);
   std::size_t ne = 0;
   for(std::size_t c = 0; c < nc; ++c) edge[c] = creates_edge(c) ? ne++ : edge[reverse[c]];
-  const auto halfedge_of = [&](std::size_t c) { return Halfedge_index(typename Mesh::size_type(2 * edge[c] + (creates_edge(c) ? 0 : 1))); };
+  const auto halfedge_of = [&](std::size_t c) {
+    return Halfedge_index(typename Mesh::size_type(2 * edge[c] + (creates_edge(c) ? 0 : 1)));
+  };
   tm.resize(tm.number_of_vertices(), typename Mesh::size_type(ne), typename Mesh::size_type(nt));
   std::vector<Face_index> face_of(nt);
   for_each_range<CGAL::Parallel_if_available_tag>(nt, [&](std::size_t first, std::size_t last) {
@@ -210,12 +223,8 @@ add_oriented_manifold_triangles(const std::vector<std::array<std::size_t, 3> >& 
       }
     }
   }, 4096);
-  std::vector<std::size_t> last_into(vmap.size(), no_corner); // as in the general version
-  for(std::size_t c = 0; c < nc; ++c) last_into[corners.target(c)] = c;
-  for(std::size_t p = 0; p < vmap.size(); ++p)
-    if(last_into[p] != no_corner) tm.set_halfedge(vmap[p], halfedge_of(last_into[p]));
-  if(std::find(reverse.begin(), reverse.end(), no_corner) != reverse.end())
-    link_border_halfedges(corners, reverse, vmap, halfedge_of, tm);
+  set_vertex_halfedges(corners, vmap, halfedge_of, tm);
+  link_border_halfedges(corners, reverse, vmap, halfedge_of, tm);
   return face_of;
 }
 
