@@ -8,6 +8,7 @@
 #include <CGAL/Part_decomposition/decompose.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Random.h>
 
 #include "sha256.h"
 #include "method_switches.h"
@@ -28,6 +29,8 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <random>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -700,6 +703,47 @@ TEST_CASE("the fit refuses a distance field of other voxel resolutions than the 
   const PD::Truncated_signed_distance_field tsdf32 =
     PD::compute_tsdf(m, PDP::voxel_resolutions(std::vector<int>{32}));
   CHECK(error_of([&] { PD::fit_superquadrics(prior, tsdf32); }) == PD::Input_error::INVALID_PARAMETER);
+}
+
+TEST_CASE("sets joined by several threads at once are the connected components, rooted at their smallest index",
+          "[robustness][determinism]")
+{
+  // 97 chains over shuffled indices: chain c holds the indices i with i % 97 == c; each link is
+  // given twice, in both directions, so that threads race on the same roots
+  const std::size_t n = 200000, chains = 97;
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  CGAL::Random rng(5);
+  std::shuffle(order.begin(), order.end(), std::mt19937(rng.get_int(0, 1 << 30)));
+  std::vector<std::pair<std::size_t, std::size_t> > links;
+  std::vector<std::size_t> last(chains, n);
+  for(std::size_t i : order)
+  {
+    if(last[i % chains] != n)
+    {
+      links.emplace_back(i, last[i % chains]);
+      links.emplace_back(last[i % chains], i);
+    }
+    last[i % chains] = i;
+  }
+  const auto check = [&](auto tag) {
+    CGAL::Part_decomposition::internal::Shared_index_sets sets(n, tag);
+    CGAL::Part_decomposition::internal::for_each_range<decltype(tag)>(links.size(), [&](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) sets.unite(links[k].first, links[k].second);
+    }, 64);
+    std::size_t wrong = 0;
+    for(std::size_t i = 0; i < n; ++i) wrong += sets.find(i) != i % chains;
+    CHECK(wrong == 0u);
+  };
+  check(CGAL::Sequential_tag());
+#ifdef CGAL_LINKED_WITH_TBB
+  for(std::size_t threads : {2, 3})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    CAPTURE(threads);
+    check(CGAL::Parallel_tag());
+  }
+#endif
 }
 
 TEST_CASE("the labels are the same run after run and for any number of threads", "[robustness][determinism][data]")

@@ -880,6 +880,20 @@ TEST_CASE("Point-triangle distance and the AABB-tree closest-triangle search mat
     for(const auto& t : few) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
     CHECK(small.closest(p).second == best);
   }
+  // A soup large enough to be held in two trees (each triangle 4 times or more): the nearest of both.
+  std::vector<PDI::Triangle_points> many;
+  for(std::size_t i = 0; many.size() < (std::size_t(1) << 17); ++i) many.push_back(tris[i % tris.size()]);
+  const PDI::Triangle_soup_aabb_tree large(many);
+  for(int i = 0; i < 300; ++i)
+  {
+    const PDI::Vec3 p = rnd(0.6);
+    double best = std::numeric_limits<double>::infinity();
+    for(const auto& t : tris) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+    const std::pair<std::uint32_t, double> got = large.closest(p);
+    CHECK(got.second == best);
+    const auto& t = many[got.first];
+    CHECK(PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]) == got.second);
+  }
 }
 
 TEST_CASE("The grid builder splits a cell while its centre is nearer the surface than its side, down to the surface's depth", "[tsdf][grid]")

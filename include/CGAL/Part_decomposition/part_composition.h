@@ -132,13 +132,14 @@ std::vector<std::uint8_t> residual_faces(const Face_adjacency& adj, const Face_c
 
 // Moves each edge-connected set of residual faces to a part of its own, appended after the
 // existing parts with no primitive; returns the number of parts added.
-inline std::size_t split_residual_parts(const Face_adjacency& adj, const std::vector<std::uint8_t>& residual,
+template <typename ConcurrencyTag>
+std::size_t split_residual_parts(const Face_adjacency& adj, const std::vector<std::uint8_t>& residual,
                                         std::vector<std::size_t>& part, std::vector<std::size_t>& part_to_primitive,
                                         std::size_t no_primitive)
 {
   std::vector<std::size_t> component;
-  face_components(adj, [&](std::size_t i, int k) { return residual[i] && residual[adj.neighbor[3 * i + k]]; },
-                  component);
+  face_components<ConcurrencyTag>(
+    adj, [&](std::size_t i, int k) { return residual[i] && residual[adj.neighbor[3 * i + k]]; }, component);
   const std::size_t first = part_to_primitive.size();
   std::vector<std::size_t> id_of(adj.number_of_faces, no_primitive);
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
@@ -376,7 +377,7 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   }
   if(reoriented)
     pieces.number_of_regions =
-      internal::crease_regions(adj, pieces.piece, pieces.orientation, p.crease_angle, pieces.region);
+      internal::crease_regions<ConcurrencyTag>(adj, pieces.piece, pieces.orientation, p.crease_angle, pieces.region);
   return volumetric;
 }
 
@@ -417,7 +418,7 @@ void separate_residual_patches(const TriangleMesh& tm, Volumetric_parts& parts, 
   parts.residual_faces = internal::residual_faces<GeomTraits>(
     adj, corners, parts.patches, number_of_patches, parts.parts, parts.part_to_primitive, fitting.primitives,
     prior.classes, fitting.normalization, tolerance / double(prior.classes.resolution()));
-  internal::split_residual_parts(adj, parts.residual_faces, parts.parts, parts.part_to_primitive, no_primitive);
+  internal::split_residual_parts<CGAL::Sequential_tag>(adj, parts.residual_faces, parts.parts, parts.part_to_primitive, no_primitive);
 }
 
 /*!
@@ -486,7 +487,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
       internal::keep_volume_parts_in_their_regions(adj, pieces.region, volume_part, no_primitive);
     }
     const std::vector<std::size_t> source =
-      internal::compose_parts(adj, internal::Face_corners(tm, maps.fim, maps.vpm, ConcurrencyTag()), pieces.region, pieces.piece,
+      internal::compose_parts<ConcurrencyTag>(adj, internal::Face_corners(tm, maps.fim, maps.vpm, ConcurrencyTag()), pieces.region, pieces.piece,
                               pieces.orientation, volume_part, p.minimum_part_area * pieces.area, c.parts, no_primitive);
     c.part_to_primitive.assign(source.size(), no_primitive);
     for(std::size_t k = 0; k < source.size(); ++k)
@@ -545,7 +546,7 @@ Part_hierarchy<GeomTraits> build_part_hierarchy(const TriangleMesh& tm, const Pi
   const auto graph = internal::shared_face_adjacency<CGAL::Sequential_tag>(tm, maps.fim, np);
   const internal::Face_adjacency& adj = *graph;
   std::vector<std::size_t> piece;
-  const std::vector<int> orientation(internal::label_pieces(adj, piece), 1);
+  const std::vector<int> orientation(internal::label_pieces<CGAL::Sequential_tag>(adj, piece), 1);
   return internal::hierarchy_of_leaves<GeomTraits>(adj, corners, parts.finest_parts, parts.number_of_finest_parts,
                                                    parts.part_groups, parts.parts, parts.part_primitives, piece,
                                                    orientation, maximum_merge_cost);

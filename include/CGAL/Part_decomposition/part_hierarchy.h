@@ -391,7 +391,7 @@ build_part_hierarchy(const TriangleMesh& tm, FacePartMap face_part_map,
                                                       get_const_property_map(CGAL::vertex_point, tm));
   const auto graph = internal::shared_piece_adjacency<CGAL::Sequential_tag>(tm, fim, vpm, np);
   const internal::Face_adjacency& adj = *graph;
-  const Piece_segmentation pieces = internal::segment_pieces_of_graph(adj, internal::Piece_parameters());
+  const Piece_segmentation pieces = internal::segment_pieces_of_graph<CGAL::Sequential_tag>(adj, internal::Piece_parameters());
   std::vector<std::size_t> leaf(adj.number_of_faces, 0);
   std::size_t number_of_leaves = 0;
   for(auto f : faces(tm))

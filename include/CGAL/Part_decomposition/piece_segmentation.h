@@ -49,13 +49,14 @@ Piece_parameters read_piece_parameters(const NamedParameters& np)
 }
 
 // `segment_pieces()` on the face graph `adj`.
-inline Piece_segmentation segment_pieces_of_graph(const Face_adjacency& adj, const Piece_parameters& p)
+template <typename ConcurrencyTag>
+Piece_segmentation segment_pieces_of_graph(const Face_adjacency& adj, const Piece_parameters& p)
 {
   Piece_segmentation s;
-  s.number_of_pieces = label_pieces(adj, s.piece);
+  s.number_of_pieces = label_pieces<ConcurrencyTag>(adj, s.piece);
   s.closed = closed_pieces(adj, s.piece, s.number_of_pieces);
   s.orientation = piece_orientations(adj, s.piece, s.closed, p.crease_angle);
-  s.number_of_regions = crease_regions(adj, s.piece, s.orientation, p.crease_angle, s.region);
+  s.number_of_regions = crease_regions<ConcurrencyTag>(adj, s.piece, s.orientation, p.crease_angle, s.region);
   for(double a : adj.area) s.area += a;
   return s;
 }
@@ -123,7 +124,7 @@ Piece_segmentation segment_pieces(const TriangleMesh& tm,
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
-  return internal::segment_pieces_of_graph(*internal::shared_piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np), p);
+  return internal::segment_pieces_of_graph<ConcurrencyTag>(*internal::shared_piece_adjacency<ConcurrencyTag>(tm, fim, vpm, np), p);
 }
 
 } // namespace Part_decomposition

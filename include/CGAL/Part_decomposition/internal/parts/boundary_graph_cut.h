@@ -145,7 +145,8 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
 
 // Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
 // a grid of spacing `cell` (a face elsewhere is alone).
-inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
+template <typename ConcurrencyTag>
+std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
                                               double cell)
 {
   // the cells are compared edge by edge: kept per face, they would raise the peak memory of a
@@ -156,7 +157,7 @@ inline std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const s
     return true;
   };
   std::vector<std::size_t> cluster;
-  face_components(adj, [&](std::size_t i, int k) {
+  face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
     return contested[i] && contested[j] && same_cell(i, j);
   }, cluster);
@@ -378,11 +379,11 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
   // the contested sets, then the clusters of the two-level labelling (one after the other: this
   // step holds the peak memory of a large mesh)
   std::vector<std::size_t> component;
-  const std::size_t nc = face_components(adj, [&](std::size_t i, int k) {
+  const std::size_t nc = face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     return contested[i] && contested[adj.neighbor[3 * i + std::size_t(k)]];
   }, component);
   const std::vector<std::size_t> cluster =
-    cluster_cell > 0. ? face_clusters(adj, contested, cluster_cell) : std::vector<std::size_t>();
+    cluster_cell > 0. ? face_clusters<ConcurrencyTag>(adj, contested, cluster_cell) : std::vector<std::size_t>();
   // the contested faces of each component, by increasing face index
   std::vector<std::size_t> start, order;
   group_indices(nf, nc, [&](std::size_t i) { return component[i]; }, [&](std::size_t i) { return contested[i] != 0; },

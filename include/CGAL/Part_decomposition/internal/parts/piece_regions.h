@@ -204,30 +204,37 @@ inline bool is_junction(const Face_adjacency& adj, std::size_t s)
 
 // Per face index: its connected component across the slots (i, k) with a neighbour for which
 // `join(i, k)` holds, faces with the same three corners always together (they are one
-// surface), numbered by first face; returns the number of components.
-template <typename Join>
+// surface), numbered by first face; returns the number of components. `join` is called from
+// several threads with `CGAL::Parallel_tag`.
+template <typename ConcurrencyTag, typename Join>
 std::size_t face_components(const Face_adjacency& adj, const Join& join, std::vector<std::size_t>& label)
 {
   const std::size_t nf = adj.number_of_faces;
-  Index_sets sets(nf);
-  for(std::size_t i = 0; i < nf; ++i)
-    for(int k = 0; k < 3; ++k)
+  Shared_index_sets sets(nf, ConcurrencyTag());
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
     {
-      const std::size_t j = adj.neighbor[3 * i + k];
-      if(j != Face_adjacency::no_face && join(i, k)) sets.unite(i, j);
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * i + k];
+        if(j != Face_adjacency::no_face && join(i, k)) sets.unite(i, j);
+      }
+      if(i < adj.twin.size() && adj.twin[i] != Face_adjacency::no_face) sets.unite(i, adj.twin[i]);
     }
-  for(std::size_t i = 0; i < adj.twin.size(); ++i)
-    if(adj.twin[i] != Face_adjacency::no_face) sets.unite(i, adj.twin[i]);
+  }, 4096);
   label.resize(nf);
-  for(std::size_t i = 0; i < nf; ++i) label[i] = sets.find(i);
+  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) label[i] = sets.find(i);
+  }, 4096);
   return renumber_by_first_face(label);
 }
 
 // Per face index: the id of its edge-connected component, numbered by first face; returns the
 // number of components.
-inline std::size_t label_pieces(const Face_adjacency& adj, std::vector<std::size_t>& piece)
+template <typename ConcurrencyTag>
+std::size_t label_pieces(const Face_adjacency& adj, std::vector<std::size_t>& piece)
 {
-  return face_components(adj, [](std::size_t, int) { return true; }, piece);
+  return face_components<ConcurrencyTag>(adj, [](std::size_t, int) { return true; }, piece);
 }
 
 // Per piece: 1 if every edge of its faces has exactly two faces (no border, no junction).
@@ -287,11 +294,12 @@ inline std::vector<int> piece_orientations(const Face_adjacency& adj, const std:
 // Per face index: the region of its piece between concave creases of at least `crease_angle`
 // degrees and junctions of three faces or more (an edge of a face of zero area is never a
 // crease), numbered by first face; returns the number of regions.
-inline std::size_t crease_regions(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
+template <typename ConcurrencyTag>
+std::size_t crease_regions(const Face_adjacency& adj, const std::vector<std::size_t>& piece,
                                   const std::vector<int>& orientation, double crease_angle,
                                   std::vector<std::size_t>& region)
 {
-  return face_components(adj, [&](std::size_t i, int k) {
+  return face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + k];
     // a face of zero area has no normal: no evidence of a crease
     const bool concave = is_junction(adj, 3 * i + k) ||
@@ -515,7 +523,7 @@ std::vector<std::size_t> stretch_owners(const Face_adjacency& adj, const Corner&
 // then merged into a neighbour (`merge_small_patches()`), and all are numbered by smallest face
 // index. `part` receives the part of each face; returns, per part, the volumetric part covering
 // most of its area (smallest id on a tie), or `none`.
-template <typename Corner>
+template <typename ConcurrencyTag, typename Corner>
 std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const Corner& corner,
                                        const std::vector<std::size_t>& region, const std::vector<std::size_t>& piece,
                                        const std::vector<int>& orientation, const std::vector<std::size_t>& volume_part,
@@ -527,7 +535,8 @@ std::vector<std::size_t> compose_parts(const Face_adjacency& adj, const Corner& 
   for(std::size_t i = 0; i < nf; ++i)
     key[i] = std::make_pair(region[i], volumetric && volume_part[i] != none ? volume_part[i] + 1 : 0);
   const std::size_t number_of_stretches =
-    face_components(adj, [&](std::size_t i, int k) { return key[i] == key[adj.neighbor[3 * i + k]]; }, part);
+    face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) { return key[i] == key[adj.neighbor[3 * i + k]]; },
+                                    part);
   const std::vector<std::size_t> owner = stretch_owners(adj, corner, key, part, number_of_stretches, piece, orientation);
   for(std::size_t& p : part) p = owner[p];
   merge_small_patches(adj, part, number_of_stretches, min_area);

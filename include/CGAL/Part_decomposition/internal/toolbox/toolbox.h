@@ -19,11 +19,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <numeric>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -251,6 +253,50 @@ public:
 private:
   std::vector<std::size_t> m_rank, m_parent;
   boost::disjoint_sets<std::size_t*, std::size_t*> m_sets;
+};
+
+// Disjoint sets of the indices [0, n) that several threads may join at once, which neither CGAL
+// nor Boost offers: a root is linked below a smaller root by compare-and-swap, and paths are
+// halved on the way up. Parents only ever decrease, so the root of a set is its smallest index.
+class Shared_index_sets
+{
+public:
+  template <typename ConcurrencyTag>
+  Shared_index_sets(std::size_t n, ConcurrencyTag) : m_parent(n)
+  {
+    for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+      for(std::size_t i = b; i < e; ++i) m_parent[i].store(i, std::memory_order_relaxed);
+    }, 4096);
+  }
+
+  // the smallest index of the set of i
+  std::size_t find(std::size_t i)
+  {
+    for(;;)
+    {
+      std::size_t p = m_parent[i].load(std::memory_order_relaxed);
+      if(p == i) return i;
+      const std::size_t g = m_parent[p].load(std::memory_order_relaxed);
+      if(g != p) m_parent[i].compare_exchange_weak(p, g, std::memory_order_relaxed);
+      i = g;
+    }
+  }
+
+  void unite(std::size_t i, std::size_t j)
+  {
+    for(;;)
+    {
+      i = find(i);
+      j = find(j);
+      if(i == j) return;
+      if(i < j) std::swap(i, j);
+      std::size_t root = i;
+      if(m_parent[i].compare_exchange_strong(root, j, std::memory_order_relaxed)) return;
+    }
+  }
+
+private:
+  std::vector<std::atomic<std::size_t> > m_parent;
 };
 
 // Writes `values` (indexed by `fim`) to a caller's face property map: the one conversion from the
