@@ -383,13 +383,15 @@ public:
   level `part_primitives().size()` of the tree. `decompose()` goes on from that level with
   `Part_hierarchy::level_below_cost()` (named parameter `maximum_merge_cost`), from which merges
   are ordered by size first.
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the tree is the same
   */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
   const Part_hierarchy<Geom_traits>& build_hierarchy(double maximum_merge_cost = defaults::maximum_merge_cost)
   {
     internal::check_non_negative(maximum_merge_cost, "maximum_merge_cost");
-    if(!has(PARTS)) compose_parts(boost::dummy_property_map());
+    if(!has(PARTS)) compose_parts<ConcurrencyTag>(boost::dummy_property_map());
     internal::add_seconds(m_timings.hierarchy, [&] {
-      m_s.hierarchy = build_part_hierarchy(m_tm, m_s.pieces, m_s.composed,
+      m_s.hierarchy = build_part_hierarchy<ConcurrencyTag>(m_tm, m_s.pieces, m_s.composed,
                                            with_mesh(parameters::combine(parameters::method_variant(m_switches),
                                                                          parameters::maximum_merge_cost(maximum_merge_cost))));
     });

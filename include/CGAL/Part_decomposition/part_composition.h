@@ -522,6 +522,7 @@ inside a part come first, so that the composed parts are a level of the tree (le
 superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_below_cost()`
 (named parameter `maximum_merge_cost`), from which cost on the merges are ordered by size first.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the result is the same
 \param tm the mesh
 \param pieces the pieces given to `compose_parts()` (ignored with `use_pieces = false`)
 \param parts the result of `compose_parts()`
@@ -529,25 +530,25 @@ superquadric. `decompose()` goes on from that level with `Part_hierarchy::level_
 (\ref PD_MeshParameters) and `method_variant` given to `compose_parts()`, and `maximum_merge_cost`
 (\ref PD_ParameterTable; see `build_part_hierarchy(tm, face_part_map, np)`)
 */
-template <typename TriangleMesh, typename GeomTraits,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename GeomTraits,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Part_hierarchy<GeomTraits> build_part_hierarchy(const TriangleMesh& tm, const Piece_segmentation& pieces,
                                                 const Composed_parts<GeomTraits>& parts,
                                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const internal::Face_corners corners(tm, maps.fim, maps.vpm);
+  const internal::Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
   const double maximum_merge_cost = internal::read_hierarchy_parameters(np).maximum_merge_cost;
   if(internal::read_piece_parameters(np).use_pieces)
-    return internal::hierarchy_of_leaves<GeomTraits>(
-      *internal::shared_piece_adjacency<CGAL::Sequential_tag>(tm, maps.fim, maps.vpm, np), corners, parts.finest_parts,
+    return internal::hierarchy_of_leaves<ConcurrencyTag, GeomTraits>(
+      *internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np), corners, parts.finest_parts,
       parts.number_of_finest_parts, parts.part_groups, parts.parts, parts.part_primitives, pieces.piece,
       pieces.orientation, maximum_merge_cost);
-  const auto graph = internal::shared_face_adjacency<CGAL::Sequential_tag>(tm, maps.fim, np);
+  const auto graph = internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np);
   const internal::Face_adjacency& adj = *graph;
   std::vector<std::size_t> piece;
-  const std::vector<int> orientation(internal::label_pieces<CGAL::Sequential_tag>(adj, piece), 1);
-  return internal::hierarchy_of_leaves<GeomTraits>(adj, corners, parts.finest_parts, parts.number_of_finest_parts,
+  const std::vector<int> orientation(internal::label_pieces<ConcurrencyTag>(adj, piece), 1);
+  return internal::hierarchy_of_leaves<ConcurrencyTag, GeomTraits>(adj, corners, parts.finest_parts, parts.number_of_finest_parts,
                                                    parts.part_groups, parts.parts, parts.part_primitives, piece,
                                                    orientation, maximum_merge_cost);
 }

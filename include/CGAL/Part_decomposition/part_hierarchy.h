@@ -73,28 +73,30 @@ constexpr double merge_attachment_weight = 10.;
 // part counts: 2.5 to 3.5 equal, 2 and 4 below; see the archive of RESULTS.md).
 constexpr double merge_within_piece_limit = 3.;
 
-// The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`.
-template <typename Corner>
+// The leaf boxes: the corners of each leaf's faces, boxed by `fit_box_to_points()`, leaf by leaf.
+template <typename ConcurrencyTag, typename Corner>
 std::vector<Part_box> leaf_boxes(std::size_t number_of_faces, const Corner& corner, const std::vector<std::size_t>& leaf,
                                  std::size_t number_of_leaves, const Eigen::Vector3d& origin)
 {
   std::vector<Part_box> box(number_of_leaves);
-  // the faces of each leaf in increasing order, then one leaf at a time: one buffer of points
+  // the faces of each leaf in increasing order
   std::vector<std::size_t> start, order;
   group_indices(number_of_faces, number_of_leaves, [&](std::size_t i) { return leaf[i]; },
                 [](std::size_t) { return true; }, start, order);
-  std::vector<Eigen::Vector3d> points;
-  for(std::size_t l = 0; l < number_of_leaves; ++l)
-  {
-    points.clear();
-    for(std::size_t s = start[l]; s < start[l + 1]; ++s)
+  for_each_range<ConcurrencyTag>(number_of_leaves, [&](std::size_t first, std::size_t last) {
+    std::vector<Eigen::Vector3d> points;
+    for(std::size_t l = first; l < last; ++l)
     {
-      const std::size_t i = order[s];
-      add_triangle_moments(box[l], corner(i, 0) - origin, corner(i, 1) - origin, corner(i, 2) - origin);
-      for(int k = 0; k < 3; ++k) points.push_back(corner(i, k) - origin);
+      points.clear();
+      for(std::size_t s = start[l]; s < start[l + 1]; ++s)
+      {
+        const std::size_t i = order[s];
+        add_triangle_moments(box[l], corner(i, 0) - origin, corner(i, 1) - origin, corner(i, 2) - origin);
+        for(int k = 0; k < 3; ++k) points.push_back(corner(i, k) - origin);
+      }
+      fit_box_to_points(box[l], points);
     }
-    fit_box_to_points(box[l], points);
-  }
+  });
   return box;
 }
 
@@ -116,7 +118,7 @@ inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& 
 // Groups crumbs and repeated pieces with the piece they sit on (`grouped_pieces()`): `leaf_piece`
 // (per leaf its piece, `none` if several) becomes the piece of the group's root, and `attached`
 // flags the leaves of grouped pieces that are not roots. `touching`: the touching leaves.
-template <typename Corner>
+template <typename ConcurrencyTag, typename Corner>
 void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, const std::vector<std::size_t>& piece,
                            const std::vector<std::pair<std::size_t, std::size_t> >& touching, const Eigen::Vector3d& origin,
                            std::vector<std::size_t>& leaf_piece, std::vector<std::uint8_t>& attached)
@@ -135,7 +137,7 @@ void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, co
   std::sort(contacts.begin(), contacts.end());
   contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
   const std::vector<std::size_t> root =
-    grouped_pieces(leaf_boxes(number_of_faces, corner, piece, number_of_pieces, origin), faces, contacts);
+    grouped_pieces(leaf_boxes<ConcurrencyTag>(number_of_faces, corner, piece, number_of_pieces, origin), faces, contacts);
   for(std::size_t l = 0; l < leaf_piece.size(); ++l)
     if(leaf_piece[l] != none && root[leaf_piece[l]] != leaf_piece[l])
     {
@@ -164,21 +166,27 @@ inline Merge_parameters hierarchy_merge_parameters(const Eigen::Vector3d& lo, co
 
 // Links the leaves that share an edge, once per pair, with the length of their common boundary and
 // that length weighted by its concavity.
-template <typename Corner>
+template <typename ConcurrencyTag, typename Corner>
 void link_leaves_sharing_edges(const Face_adjacency& adj, const Corner& corner, const std::vector<std::size_t>& leaf,
                                const std::vector<std::size_t>& piece, const std::vector<int>& orientation,
                                Part_agglomeration& agglomeration)
 {
-  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::array<double, 2> > > shared;
-  for(std::size_t i = 0; i < adj.number_of_faces; ++i)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t j = adj.neighbor[3 * i + k];
-      if(j == Face_adjacency::no_face || leaf[j] <= leaf[i]) continue; // each edge once, from one side
-      const double length = slot_length(corner, i, k);
-      const double weight = edge_concavity(adj, i, k, orientation[piece[i]]);
-      shared.push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
-    }
+  typedef std::pair<std::pair<std::size_t, std::size_t>, std::array<double, 2> > Shared_edge;
+  constexpr std::size_t block = std::size_t(1) << 16;
+  std::vector<std::vector<Shared_edge> > found((adj.number_of_faces + block - 1) / block);
+  for_each_block<ConcurrencyTag>(adj.number_of_faces, block, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t j = adj.neighbor[3 * i + k];
+        if(j == Face_adjacency::no_face || leaf[j] <= leaf[i]) continue; // each edge once, from one side
+        const double length = slot_length(corner, i, k);
+        const double weight = edge_concavity(adj, i, k, orientation[piece[i]]);
+        found[b / block].push_back({{leaf[i], leaf[j]}, {{length, length * weight}}});
+      }
+  });
+  std::vector<Shared_edge> shared;
+  for(const std::vector<Shared_edge>& f : found) shared.insert(shared.end(), f.begin(), f.end());
   // sorted, the edges of a pair of leaves follow each other and are summed in a fixed order
   std::sort(shared.begin(), shared.end());
   for(std::size_t e = 0; e < shared.size();)
@@ -258,7 +266,7 @@ void fill_merged_nodes(const Part_agglomeration& agglomeration, const std::vecto
 // (`corner(i, k)`, input coordinates). `group` (per face, may be empty) is a coarser partition
 // whose parts are unions of leaves, each explained by `group_primitive`; `piece` is per face;
 // merges from `maximum_merge_cost` on are ordered by size first.
-template <typename GeomTraits, typename Corner>
+template <typename ConcurrencyTag, typename GeomTraits, typename Corner>
 Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const Corner& corner,
                                                const std::vector<std::size_t>& leaf, std::size_t number_of_leaves,
                                                const std::vector<std::size_t>& subgroup,
@@ -275,9 +283,15 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
 
   // the scale: the bounding box of the corners
   const Eigen::Vector3d origin = corner(0, 0);
+  constexpr std::size_t block = std::size_t(1) << 16;
+  std::vector<std::array<Eigen::Vector3d, 2> > block_box((nf + block - 1) / block, {{origin, origin}});
+  for_each_block<ConcurrencyTag>(nf, block, [&](std::size_t b, std::size_t e) {
+    std::array<Eigen::Vector3d, 2>& box = block_box[b / block];
+    for(std::size_t i = b; i < e; ++i)
+      for(int k = 0; k < 3; ++k) { box[0] = box[0].cwiseMin(corner(i, k)); box[1] = box[1].cwiseMax(corner(i, k)); }
+  });
   Eigen::Vector3d lo = origin, hi = origin;
-  for(std::size_t i = 0; i < nf; ++i)
-    for(int k = 0; k < 3; ++k) { lo = lo.cwiseMin(corner(i, k)); hi = hi.cwiseMax(corner(i, k)); }
+  for(const std::array<Eigen::Vector3d, 2>& box : block_box) { lo = lo.cwiseMin(box[0]); hi = hi.cwiseMax(box[1]); }
   double total_volume = 1.;
   const Merge_parameters p = hierarchy_merge_parameters(lo, hi, maximum_merge_cost, total_volume);
 
@@ -291,12 +305,12 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     touching = touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance);
   std::vector<std::size_t> host_piece = leaf_piece;
   std::vector<std::uint8_t> attached(number_of_leaves, 0);
-  group_attached_leaves(nf, corner, piece, touching, origin, host_piece, attached);
-  Part_agglomeration agglomeration(leaf_boxes(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
+  group_attached_leaves<ConcurrencyTag>(nf, corner, piece, touching, origin, host_piece, attached);
+  Part_agglomeration agglomeration(leaf_boxes<ConcurrencyTag>(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
                                    host_piece, attached, p, total_volume);
 
   // links: leaves sharing an edge, and leaves of different pieces whose surfaces touch
-  link_leaves_sharing_edges(adj, corner, leaf, piece, orientation, agglomeration);
+  link_leaves_sharing_edges<ConcurrencyTag>(adj, corner, leaf, piece, orientation, agglomeration);
   // a grouped piece touches its group alone: screws do not glue a leg to the panel they hold
   for(const auto& e : touching)
     if(host_piece[e.first] == host_piece[e.second] || !(attached[e.first] || attached[e.second]))
@@ -402,7 +416,7 @@ build_part_hierarchy(const TriangleMesh& tm, FacePartMap face_part_map,
     number_of_leaves = (std::max)(number_of_leaves, k + 1);
   }
   const internal::Face_corners corners(tm, fim, vpm);
-  return internal::hierarchy_of_leaves<GT>(adj, corners, leaf, number_of_leaves, std::vector<std::size_t>(),
+  return internal::hierarchy_of_leaves<CGAL::Sequential_tag, GT>(adj, corners, leaf, number_of_leaves, std::vector<std::size_t>(),
                                            std::vector<std::size_t>(), std::vector<Superquadric<GT> >(), pieces.piece,
                                            pieces.orientation, internal::read_hierarchy_parameters(np).maximum_merge_cost);
 }

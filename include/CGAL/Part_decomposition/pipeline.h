@@ -35,7 +35,7 @@ namespace internal {
 
 // The hierarchy when it is asked for or its cheap merges may go on, and the parts of its level if
 // it is not that of the composed parts.
-template <typename GT, typename TriangleMesh, typename NamedParameters>
+template <typename ConcurrencyTag, typename GT, typename TriangleMesh, typename NamedParameters>
 void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, const Piece_segmentation& pieces,
                    const Composed_parts<GT>& composed_parts, Decomposition_pass<GT>& out, Stage_timings& t)
 {
@@ -50,7 +50,7 @@ void cut_hierarchy(const TriangleMesh& tm, const NamedParameters& np, const Piec
   Part_hierarchy<GT> hierarchy;
   if(hp.has_number_of_parts || hierarchy_out != nullptr || (hp.maximum_merge_cost > 0. && composed > 1))
     add_seconds(t.hierarchy, [&] {
-      hierarchy = build_part_hierarchy(tm, pieces, composed_parts, np);
+      hierarchy = build_part_hierarchy<ConcurrencyTag>(tm, pieces, composed_parts, np);
       out.default_number_of_parts = hierarchy.level_below_cost(composed, hp.maximum_merge_cost);
       K = hp.has_number_of_parts ? hp.number_of_parts : out.default_number_of_parts;
       if(hierarchy_out != nullptr)
@@ -129,19 +129,19 @@ void decompose_once(Decomposer& d, const TriangleMesh& tm, const NamedParameters
   timings.overlapping = is_parallel_tag<ConcurrencyTag>();
   const bool fitted = compose_with<ConcurrencyTag>(d, np, timings);
   if(fitted || !read_piece_parameters(np).use_pieces)
-    return cut_hierarchy(tm, np, d.pieces(), d.composed_parts(), out, timings);
+    return cut_hierarchy<ConcurrencyTag>(tm, np, d.pieces(), d.composed_parts(), out, timings);
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
   std::vector<std::uint8_t> sheet;
   if(!decomposes_inflated_sheets(tm, d.pieces(), corners, np, sheet))
-    return cut_hierarchy(tm, np, d.pieces(), d.composed_parts(), out, timings);
+    return cut_hierarchy<ConcurrencyTag>(tm, np, d.pieces(), d.composed_parts(), out, timings);
   // the hierarchy measures the boxes of the sheets' parts on the solid's side of their normals: a
   // flat part has no volume, so that every merge of flat parts would be cheap
   Composed_parts<GT> composed;
   const std::vector<typename GT::Point_3> raised =
     compose_inflated_sheets<ConcurrencyTag>(tm, np, corners, sheet, composed, timings);
   const auto raised_map = boost::make_iterator_property_map(raised.begin(), CGAL::get_initialized_vertex_index_map(tm));
-  cut_hierarchy(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map), face_graphs_parameter(nullptr)),
+  cut_hierarchy<ConcurrencyTag>(tm, parameters::combine(np, CGAL::parameters::vertex_point_map(raised_map), face_graphs_parameter(nullptr)),
                 d.pieces(), composed, out, timings);
 }
 
