@@ -11,6 +11,8 @@
 #include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +21,8 @@
 #include <cstring>
 #include <functional>
 #include <queue>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -165,31 +169,43 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
 }
 
 // The rank of each key among the distinct keys (`index`) and the rank of its first
-// `prefix_length` entries among the distinct prefixes (`prefix_index`): one sort of the keys with
-// their indices (lexicographic, so equal prefixes are consecutive), ranked in one pass.
+// `prefix_length` entries among the distinct prefixes (`prefix_index`), in lexicographic order. The
+// keys repeat over many faces: only the distinct ones are sorted (each block of keys is reduced
+// to its distinct ones in parallel), and each key finds its ranks in a hash table.
 template <typename ConcurrencyTag, typename T, std::size_t N>
 void index_of_keys(const std::vector<std::array<T, N> >& key, std::size_t prefix_length,
                    std::vector<std::size_t>& index, std::vector<std::size_t>& prefix_index)
 {
-  std::vector<std::pair<std::array<T, N>, std::size_t> > sorted(key.size());
-  for_each_range<ConcurrencyTag>(key.size(), [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i) sorted[i] = std::make_pair(key[i], i);
-  }, 4096);
-  sort_values<ConcurrencyTag>(sorted.begin(), sorted.end());
+  typedef std::array<T, N> Key;
+  typedef std::unordered_map<Key, std::pair<std::size_t, std::size_t>, boost::hash<Key> > Rank_table;
+  constexpr std::size_t block = std::size_t(1) << 16;
+  std::vector<std::vector<Key> > found((key.size() + block - 1) / block);
+  for_each_block<ConcurrencyTag>(key.size(), block, [&](std::size_t b, std::size_t e) {
+    const std::unordered_set<Key, boost::hash<Key> > seen(key.begin() + std::ptrdiff_t(b), key.begin() + std::ptrdiff_t(e));
+    found[b / block].assign(seen.begin(), seen.end());
+  });
+  std::vector<Key> distinct;
+  for(const std::vector<Key>& f : found) distinct.insert(distinct.end(), f.begin(), f.end());
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  Rank_table rank(distinct.size());
+  std::size_t prefix_rank = 0;
+  for(std::size_t r = 0; r < distinct.size(); ++r)
+  {
+    if(r > 0 && !std::equal(distinct[r].begin(), distinct[r].begin() + prefix_length, distinct[r - 1].begin()))
+      ++prefix_rank;
+    rank.emplace(distinct[r], std::make_pair(r, prefix_rank));
+  }
   index.resize(key.size());
   prefix_index.resize(key.size());
-  std::size_t rank = 0, prefix_rank = 0;
-  for(std::size_t s = 0; s < sorted.size(); ++s)
-  {
-    if(s > 0 && sorted[s].first != sorted[s - 1].first)
+  for_each_range<ConcurrencyTag>(key.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
     {
-      ++rank;
-      if(!std::equal(sorted[s].first.begin(), sorted[s].first.begin() + prefix_length, sorted[s - 1].first.begin()))
-        ++prefix_rank;
+      const std::pair<std::size_t, std::size_t>& r = rank.find(key[i])->second;
+      index[i] = r.first;
+      prefix_index[i] = r.second;
     }
-    index[sorted[s].second] = rank;
-    prefix_index[sorted[s].second] = prefix_rank;
-  }
+  }, 4096);
 }
 
 // Merges every patch whose area is below `min_area` into the neighbouring patch across its
