@@ -352,7 +352,8 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
   const auto graph = internal::shared_piece_adjacency<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
   const internal::Face_adjacency& adj = *graph;
-  const internal::Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
+  const auto shared_corners = internal::shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const internal::Face_corners& corners = *shared_corners;
   std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
   // the triangles by face index, in the unit frame of the field
   std::vector<internal::Triangle_points> triangles(num_faces(tm));
@@ -487,7 +488,7 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
       internal::keep_volume_parts_in_their_regions(adj, pieces.region, volume_part, no_primitive);
     }
     const std::vector<std::size_t> source =
-      internal::compose_parts<ConcurrencyTag>(adj, internal::Face_corners(tm, maps.fim, maps.vpm, ConcurrencyTag()), pieces.region, pieces.piece,
+      internal::compose_parts<ConcurrencyTag>(adj, *internal::shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np), pieces.region, pieces.piece,
                               pieces.orientation, volume_part, p.minimum_part_area * pieces.area, c.parts, no_primitive);
     c.part_to_primitive.assign(source.size(), no_primitive);
     for(std::size_t k = 0; k < source.size(); ++k)
@@ -537,7 +538,8 @@ Part_hierarchy<GeomTraits> build_part_hierarchy(const TriangleMesh& tm, const Pi
                                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   const internal::Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const internal::Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
+  const auto shared_corners = internal::shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const internal::Face_corners& corners = *shared_corners;
   const double maximum_merge_cost = internal::read_hierarchy_parameters(np).maximum_merge_cost;
   if(internal::read_piece_parameters(np).use_pieces)
     return internal::hierarchy_of_leaves<ConcurrencyTag, GeomTraits>(

@@ -131,7 +131,8 @@ void decompose_once(Decomposer& d, const TriangleMesh& tm, const NamedParameters
   if(fitted || !read_piece_parameters(np).use_pieces)
     return cut_hierarchy<ConcurrencyTag>(tm, np, d.pieces(), d.composed_parts(), out, timings);
   const Mesh_maps<TriangleMesh, NamedParameters> maps(tm, np);
-  const Face_corners corners(tm, maps.fim, maps.vpm, ConcurrencyTag());
+  const auto shared_corners = shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
+  const Face_corners& corners = *shared_corners;
   std::vector<std::uint8_t> sheet;
   if(!decomposes_inflated_sheets(tm, d.pieces(), corners, np, sheet))
     return cut_hierarchy<ConcurrencyTag>(tm, np, d.pieces(), d.composed_parts(), out, timings);

@@ -238,14 +238,12 @@ constexpr double cluster_cell = 0.5;
 
 // The final labelling of `cut_face_labels()`: the primitive of each face index; `h` is the voxel
 // of the finest prior resolution, the unit of lengths.
-template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
-std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
-                                               const VertexPointMap& vpm, const Face_adjacency& adj,
+template <typename ConcurrencyTag>
+std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, const Face_adjacency& adj,
                                                const Claimed_leaf_search<Adaptive_grid>& search, double h,
                                                const Normalization& normalization,
                                                const Assignment_parameters& p)
 {
-  const Face_corners corners(tm, fim, vpm, ConcurrencyTag());
   const Face_candidates candidates = face_candidates<ConcurrencyTag>(
       corners, search, normalization, h, p.vote_temperature * h, candidate_margin * h);
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
@@ -257,8 +255,8 @@ std::vector<std::int32_t> cut_primitive_labels(const TriangleMesh& tm, const Fac
 
 // `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of
 // each face (any ids), `part` receives its part; returns the primitive of each part. With a
-// positive `boundary_smoothness`, the faces are labelled by `cut_primitive_labels()` on `adj`
-// instead of the patch vote.
+// positive `boundary_smoothness`, the faces are labelled by `cut_primitive_labels()` on `adj` and
+// `corners` instead of the patch vote (neither is read otherwise).
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                       const VertexPointMap& vpm, std::vector<std::size_t> patch,
@@ -266,7 +264,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
                                                       const Adaptive_grid& grid, double h,
                                                       const Normalization& normalization,
                                                       const Assignment_parameters& p, const Face_adjacency& adj,
-                                                      std::vector<std::size_t>& part)
+                                                      const Face_corners* corners, std::vector<std::size_t>& part)
 {
   Claimed_leaf_search<Adaptive_grid> search;
   search.build<ConcurrencyTag>(grid, claimed_labels, p.boundary_smoothness > 0. ? candidate_window * h : 0.);
@@ -278,7 +276,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
   if(p.boundary_smoothness > 0.)
   {
     const std::vector<std::int32_t> label =
-        cut_primitive_labels<ConcurrencyTag>(tm, fim, vpm, adj, search, h, normalization, p);
+        cut_primitive_labels<ConcurrencyTag>(*corners, adj, search, h, normalization, p);
     std::iota(patch.begin(), patch.end(), std::size_t(0)); // one patch per face
     return parts_of_winners(label, patch, part);
   }
@@ -394,8 +392,11 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
   const auto graph = p.boundary_smoothness > 0. ? internal::shared_face_adjacency<ConcurrencyTag>(tm, fim, np)
                                                 : std::make_shared<const internal::Face_adjacency>();
   const internal::Face_adjacency& adj = *graph;
+  const auto corners = p.boundary_smoothness > 0. ? internal::shared_face_corners<ConcurrencyTag>(tm, fim, vpm, np)
+                                                  : std::shared_ptr<const internal::Face_corners>();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
-      tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj, part);
+      tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj,
+      corners.get(), part);
   internal::put_face_values(tm, fim, part, face_part_map);
   return primitives;
 }

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -255,8 +256,16 @@ Face_adjacency face_adjacency_of(const TriangleMesh& tm, const FaceIndexMap& fim
 // graph costs about 0.5 s per million faces (1 s glued), and nine stages read one.
 struct Face_graphs
 {
+  // the corners of the faces, made by the first stage that asks (shared_face_corners())
+  struct Corners
+  {
+    std::once_flag made;
+    std::shared_ptr<const Face_corners> corners;
+  };
+
   std::shared_ptr<const Face_adjacency> plain;  // face_adjacency_of()
   std::shared_ptr<const Face_adjacency> pieces; // piece_adjacency()
+  std::shared_ptr<Corners> corners = std::make_shared<Corners>();
 };
 
 } // namespace internal
@@ -290,6 +299,21 @@ std::shared_ptr<const Face_adjacency> shared_face_adjacency(const TriangleMesh& 
   const Face_graphs* graphs = face_graphs_of(np);
   if(graphs != nullptr && graphs->plain) return graphs->plain;
   return std::make_shared<const Face_adjacency>(face_adjacency_of<ConcurrencyTag>(tm, fim, np));
+}
+
+// The corners of the faces of `tm`, shared with the other stages of `decompose()`. Only the
+// stages from the distance field on ask for them: a large mesh's memory peaks while the field is
+// computed, without them.
+template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap,
+          typename NamedParameters>
+std::shared_ptr<const Face_corners> shared_face_corners(const TriangleMesh& tm, const FaceIndexMap& fim,
+                                                        const VertexPointMap& vpm, const NamedParameters& np)
+{
+  const Face_graphs* graphs = face_graphs_of(np);
+  if(graphs == nullptr) return std::make_shared<const Face_corners>(tm, fim, vpm, ConcurrencyTag());
+  Face_graphs::Corners& shared = *graphs->corners;
+  std::call_once(shared.made, [&] { shared.corners = std::make_shared<const Face_corners>(tm, fim, vpm, ConcurrencyTag()); });
+  return shared.corners;
 }
 
 } // namespace internal
