@@ -396,17 +396,27 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     for(std::size_t s = b; s < e; ++s) rank[order[s]] = s - start[component[order[s]]];
   }, 4096);
   const std::vector<std::int32_t> initial(face_label); // read by all, each set writes its own faces
-  for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
+  const auto label_set = [&](std::size_t c, std::vector<std::size_t>& faces) {
+    faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
+    const Set_ranks rank_of{component, contested, rank, c};
+    label_contested_set<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster,
+                                        initial, face_label);
+  };
+  if(sets.empty()) return face_label;
+  // the largest set beside all the others: its minimum cuts run on one thread
+  const auto size_of = [&](std::size_t c) { return start[c + 1] - start[c]; };
+  const std::size_t largest = *std::max_element(sets.begin(), sets.end(),
+                                                [&](std::size_t a, std::size_t b) { return size_of(a) < size_of(b); });
+  run_side_by_side<ConcurrencyTag>([&] {
     std::vector<std::size_t> faces;
-    for(std::size_t s = b; s < e; ++s)
-    {
-      const std::size_t c = sets[s];
-      faces.assign(order.begin() + std::ptrdiff_t(start[c]), order.begin() + std::ptrdiff_t(start[c + 1]));
-      const Set_ranks rank_of{component, contested, rank, c};
-      label_contested_set<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster,
-                                          initial, face_label);
-    }
-  }, 1);
+    label_set(largest, faces);
+  }, [&] {
+    for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
+      std::vector<std::size_t> faces;
+      for(std::size_t s = b; s < e; ++s)
+        if(sets[s] != largest) label_set(sets[s], faces);
+    }, 1);
+  });
   return face_label;
 }
 
