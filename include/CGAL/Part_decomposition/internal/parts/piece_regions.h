@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -52,9 +53,52 @@ inline std::uint64_t hash_of_points(const double* x, std::size_t n)
   return h;
 }
 
-// Faces with the same three corners are twins (`adj.twin`: the first of them). Faces are grouped
-// by a hash of their sorted corners and compared exactly within a group: sorting the corners of a
-// million faces costs seconds and a hundred bytes per face.
+// The indices i whose `hash[i]` is also the hash of another index, increasing: the hashes go
+// into a table of at least twice as many slots (open addressing, filled by all threads at once).
+template <typename ConcurrencyTag>
+std::vector<std::size_t> indices_of_repeated_hashes(const std::vector<std::uint64_t>& hash)
+{
+  const std::size_t n = hash.size();
+  std::size_t size = 1;
+  while(size < 2 * n) size *= 2;
+  std::vector<std::atomic<std::uint64_t> > slot(size);
+  std::vector<std::atomic<std::uint8_t> > repeated(size);
+  for_each_range<ConcurrencyTag>(size, [&](std::size_t b, std::size_t e) {
+    for(std::size_t s = b; s < e; ++s)
+    {
+      slot[s].store(0, std::memory_order_relaxed);
+      repeated[s].store(0, std::memory_order_relaxed);
+    }
+  }, 4096);
+  const auto key = [&](std::size_t i) { return hash[i] == 0 ? std::uint64_t(1) : hash[i]; }; // 0: an empty slot
+  // the slot of key k, after storing k there if it is new
+  const auto place = [&](std::uint64_t k) {
+    for(std::size_t s = std::size_t(k) & (size - 1);; s = (s + 1) & (size - 1))
+    {
+      std::uint64_t seen = 0;
+      if(slot[s].compare_exchange_strong(seen, k, std::memory_order_relaxed) || seen == k) return std::make_pair(s, seen == k);
+    }
+  };
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+    {
+      const std::pair<std::size_t, bool> p = place(key(i));
+      if(p.second) repeated[p.first].store(1, std::memory_order_relaxed);
+    }
+  }, 4096);
+  std::vector<std::uint8_t> flag(n, 0);
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) flag[i] = repeated[place(key(i)).first].load(std::memory_order_relaxed);
+  }, 4096);
+  std::vector<std::size_t> out;
+  for(std::size_t i = 0; i < n; ++i)
+    if(flag[i]) out.push_back(i);
+  return out;
+}
+
+// Faces with the same three corners are twins (`adj.twin`: the first of them; empty if none).
+// Faces are grouped by a hash of their sorted corners and compared exactly within a group of two
+// or more: sorting the corners of a million faces costs seconds and a hundred bytes per face.
 template <typename ConcurrencyTag, typename Corners>
 void find_twin_faces(const Corners& corners, Face_adjacency& adj)
 {
@@ -65,27 +109,30 @@ void find_twin_faces(const Corners& corners, Face_adjacency& adj)
     std::sort(c.begin(), c.end());
     return c;
   };
-  std::vector<std::pair<std::uint64_t, std::size_t> > hashed(nf);
+  std::vector<std::uint64_t> hash(nf);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i) hashed[i] = std::make_pair(hash_of_points(sorted_corners(i)[0].data(), 9), i);
+    for(std::size_t i = b; i < e; ++i) hash[i] = hash_of_points(sorted_corners(i)[0].data(), 9);
   }, 4096);
-  sort_values<ConcurrencyTag>(hashed.begin(), hashed.end());
-  adj.twin.assign(nf, Face_adjacency::no_face);
+  // only the faces whose hash repeats are compared, group by group
+  std::vector<std::pair<std::uint64_t, std::size_t> > hashed;
+  for(std::size_t i : indices_of_repeated_hashes<ConcurrencyTag>(hash)) hashed.emplace_back(hash[i], i);
+  std::sort(hashed.begin(), hashed.end());
+  adj.twin.clear(); // allocated at the first twin: empty means none
   std::vector<std::pair<C, std::size_t> > group;
-  for(std::size_t s = 0; s < nf;)
+  for(std::size_t s = 0; s < hashed.size();)
   {
     std::size_t e = s + 1;
-    while(e < nf && hashed[e].first == hashed[s].first) ++e;
-    if(e - s > 1)
-    {
-      group.clear();
-      for(std::size_t t = s; t < e; ++t) group.emplace_back(sorted_corners(hashed[t].second), hashed[t].second);
-      std::sort(group.begin(), group.end());
-      for(std::size_t t = 1; t < group.size(); ++t)
-        if(group[t].first == group[t - 1].first)
-          adj.twin[group[t].second] = adj.twin[group[t - 1].second] != Face_adjacency::no_face
-                                        ? adj.twin[group[t - 1].second] : group[t - 1].second;
-    }
+    while(e < hashed.size() && hashed[e].first == hashed[s].first) ++e;
+    group.clear();
+    for(std::size_t t = s; t < e; ++t) group.emplace_back(sorted_corners(hashed[t].second), hashed[t].second);
+    std::sort(group.begin(), group.end());
+    for(std::size_t t = 1; t < group.size(); ++t)
+      if(group[t].first == group[t - 1].first)
+      {
+        if(adj.twin.empty()) adj.twin.assign(nf, Face_adjacency::no_face);
+        adj.twin[group[t].second] = adj.twin[group[t - 1].second] != Face_adjacency::no_face
+                                      ? adj.twin[group[t - 1].second] : group[t - 1].second;
+      }
     s = e;
   }
 }
