@@ -325,7 +325,7 @@ inline std::vector<int> piece_orientations(const Face_adjacency& adj, const std:
 {
   std::vector<double> vote(closed.size(), 0.);
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
-    for(int k = 0; k < 3; ++k)
+    for(int k = 0; k < 3 && !closed[piece[i]]; ++k) // a closed piece keeps its orientation
     {
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j == Face_adjacency::no_face || adj.angle[3 * i + k] < crease_angle || is_junction(adj, 3 * i + k)) continue;
@@ -372,7 +372,7 @@ inline std::vector<std::uint8_t> splittable_pieces(const Face_adjacency& adj, co
   for(std::size_t i = 0; i < adj.number_of_faces; ++i)
   {
     area[piece[i]] += adj.area[i];
-    for(int k = 0; k < 3; ++k)
+    for(int k = 0; k < 3 && !concave[piece[i]]; ++k)
     {
       const std::size_t j = adj.neighbor[3 * i + k];
       if(j != Face_adjacency::no_face && adj.angle[3 * i + k] >= convexity_tolerance && crease_sign(adj, i, k) < 0)
