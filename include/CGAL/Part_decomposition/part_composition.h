@@ -209,8 +209,8 @@ double mean_surface_distance(const Superquadric<GeomTraits>& sq, const std::vect
 // part's faces; parts that share one (a part cut by the regions of the pieces, a thin plate the
 // fitter saw as one with its neighbour), parts without one and parts thinner than the fitting
 // grid get that box.
-template <typename ConcurrencyTag, typename GeomTraits, typename TriangleMesh, typename VPM, typename FIM>
-std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, const VPM& vpm, const FIM& fim,
+template <typename ConcurrencyTag, typename GeomTraits, typename TriangleMesh, typename FIM>
+std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, const FIM& fim, const Face_corners& corners,
                                                        const std::vector<std::size_t>& part,
                                                        const std::vector<std::size_t>& part_to_primitive,
                                                        const std::vector<Superquadric<GeomTraits> >& fitted)
@@ -229,9 +229,15 @@ std::vector<Superquadric<GeomTraits> > part_primitives(const TriangleMesh& tm, c
     std::vector<std::array<double, 3> > points;
     for(std::size_t k = b; k < e; ++k)
     {
-      points.clear();
-      for(std::size_t s = start[k]; s < start[k + 1]; ++s)
-        for(auto v : vertices_around_face(halfedge(face_list[order[s]], tm), tm)) points.push_back(vec3_of(get(vpm, v)));
+      points.resize(3 * (start[k + 1] - start[k]));
+      for_each_range<ConcurrencyTag>(start[k + 1] - start[k], [&](std::size_t first, std::size_t last) {
+        for(std::size_t s = first; s < last; ++s)
+        {
+          const std::size_t i = std::size_t(get(fim, face_list[order[start[k] + s]]));
+          for(int c = 0; c < 3; ++c)
+            points[3 * s + std::size_t(c)] = {{corners(i, c).x(), corners(i, c).y(), corners(i, c).z()}};
+        }
+      }, 4096);
       const Superquadric<GeomTraits> box = bounding_superquadric<GeomTraits>(points);
       const std::size_t q = part_to_primitive[k];
       const bool own = q < P && users[q] == 1;
@@ -355,16 +361,16 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   const auto shared_corners = internal::shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np);
   const internal::Face_corners& corners = *shared_corners;
   std::vector<std::uint8_t> volumetric = internal::splittable_solid_pieces(adj, corners, pieces, p);
-  // the triangles by face index, in the unit frame of the field
-  std::vector<internal::Triangle_points> triangles(num_faces(tm));
-  internal::for_each_range<ConcurrencyTag>(triangles.size(), [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i)
-      for(int c = 0; c < 3; ++c)
-        triangles[i][std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
-  }, 4096);
+  // the triangle of face i, in the unit frame of the field
+  const auto triangle = [&](std::size_t i) {
+    internal::Triangle_points t;
+    for(int c = 0; c < 3; ++c)
+      t[std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
+    return t;
+  };
   const double depth = internal::bounding_probe_depth * tsdf.voxel_size;
   const internal::Bounding_fractions sides = internal::bounding_area_fractions<ConcurrencyTag>(
-    triangles, pieces.piece, pieces.number_of_pieces, tsdf.grid, tsdf.values, depth);
+    num_faces(tm), triangle, pieces.piece, pieces.number_of_pieces, tsdf.grid, tsdf.values, depth);
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
   {
@@ -505,7 +511,8 @@ Composed_parts<GeomTraits> compose_parts(const TriangleMesh& tm, const Piece_seg
     face_area = internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np)->area;
   }
   c.part_primitives =
-    internal::part_primitives<ConcurrencyTag, GeomTraits>(tm, maps.vpm, maps.fim, c.parts, c.part_to_primitive, fitting.input_primitives);
+    internal::part_primitives<ConcurrencyTag, GeomTraits>(tm, maps.fim, *internal::shared_face_corners<ConcurrencyTag>(tm, maps.fim, maps.vpm, np),
+                                                          c.parts, c.part_to_primitive, fitting.input_primitives);
   c.residual_parts = internal::residual_part_flags(face_area, c.parts, c.number_of_parts(), parts.residual_faces);
   const bool patches = has_volume && !parts.patches.empty();
   internal::finest_parts<ConcurrencyTag>(volume_part, p.use_pieces ? pieces.region : std::vector<std::size_t>(), [&](std::size_t i) {

@@ -10,7 +10,8 @@
 
 // Whether each piece of a mesh bounds a volume of a signed distance field.
 //
-// Inputs: the triangles of the mesh in the normalized cube, by face index; the piece of each
+// Inputs: the triangles of the mesh in the normalized cube, by face index (made one at a time by
+// `triangle(i)`, so that a large mesh's copy is never held); the piece of each
 // face; a signed distance field on a grid of the cube (negative inside). Output: per piece, the
 // fraction of its area whose faces have the field's inside at `depth` on one side and its outside
 // at `depth` on the other, and on which side the outside mostly is.
@@ -91,16 +92,16 @@ int bounding_side(const Triangle_points& t, const Grid& grid, const std::vector<
   return inside_below ? 1 : -1;
 }
 
-template <typename ConcurrencyTag, typename Grid>
-Bounding_fractions bounding_area_fractions(const std::vector<Triangle_points>& triangles,
+template <typename ConcurrencyTag, typename Grid, typename TriangleOf>
+Bounding_fractions bounding_area_fractions(std::size_t number_of_faces, const TriangleOf& triangle,
                                            const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
                                            const Grid& grid, const std::vector<double>& field, double depth)
 {
-  const std::size_t nf = triangles.size();
+  const std::size_t nf = number_of_faces;
   std::vector<double> twice_area(nf);
   std::vector<signed char> side(nf);
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i) side[i] = (signed char)(bounding_side(triangles[i], grid, field, depth, twice_area[i]));
+    for(std::size_t i = b; i < e; ++i) side[i] = (signed char)(bounding_side(triangle(i), grid, field, depth, twice_area[i]));
   }, 1024);
   // the sums in face order, whatever the number of threads
   std::vector<double> area(number_of_pieces, 0.);
