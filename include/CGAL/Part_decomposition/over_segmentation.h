@@ -12,9 +12,9 @@
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parts/patch_operations.h>
+#include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -39,50 +39,6 @@ constexpr double patch_gyration_ratio = 0.2;
 // Angles this close (degrees) to the quantile count as equal to it: rounding must not decide
 // whether a crease of a rotated cube is cut.
 constexpr double dihedral_tie_tolerance = 1e-6;
-
-// Readable edge -> bool map: whether the edge is cut, looked up in a per-slot array.
-template <typename TriangleMesh, typename FaceIndexMap>
-struct Cut_edge_map
-{
-  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor key_type;
-  typedef bool value_type;
-  typedef bool reference;
-  typedef boost::readable_property_map_tag category;
-
-  const TriangleMesh* tm;
-  FaceIndexMap fim;
-  const std::vector<std::uint8_t>* cut;
-
-  friend bool get(const Cut_edge_map& m, const key_type& e)
-  {
-    auto h = halfedge(e, *m.tm);
-    if(is_border(h, *m.tm)) h = opposite(h, *m.tm);
-    const std::size_t i = std::size_t(get(m.fim, face(h, *m.tm)));
-    return (*m.cut)[3 * i + slot_in_face(h, *m.tm)] != 0;
-  }
-};
-
-// Writable face -> std::size_t map into a vector indexed by the face index map.
-template <typename TriangleMesh, typename FaceIndexMap>
-struct Face_vector_map
-{
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor key_type;
-  typedef std::size_t value_type;
-  typedef std::size_t& reference;
-  typedef boost::read_write_property_map_tag category;
-
-  FaceIndexMap fim;
-  std::vector<std::size_t>* values;
-
-  friend std::size_t get(const Face_vector_map& m, const key_type& f)
-  {
-    return (*m.values)[std::size_t(get(m.fim, f))];
-  }
-  friend void put(const Face_vector_map& m, const key_type& f, std::size_t v)
-  {
-    (*m.values)[std::size_t(get(m.fim, f))] = v;
-  }
-};
 
 // Statistics of one over-segmentation, for benchmarks and tests.
 struct Over_segmentation_statistics
@@ -168,12 +124,11 @@ inline std::size_t number_of_cut_edges(const Face_adjacency& adj, const std::vec
   return n;
 }
 
-// The over-segmentation (steps 2 to 8 of `over_segment()`) of the face graph `adj` of `tm`, as
-// one label per face index; returns the number of patches.
-template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap>
-std::size_t over_segment_faces(const TriangleMesh& tm, const FaceIndexMap& fim, const Face_adjacency& adj,
-                               const Over_segmentation_parameters& p, std::vector<std::size_t>& label,
-                               Over_segmentation_statistics* stats = nullptr)
+// The over-segmentation (steps 2 to 8 of `over_segment()`) of the face graph `adj`, as one label
+// per face index; returns the number of patches.
+template <typename ConcurrencyTag>
+std::size_t over_segment_faces(const Face_adjacency& adj, const Over_segmentation_parameters& p,
+                               std::vector<std::size_t>& label, Over_segmentation_statistics* stats = nullptr)
 {
   const std::size_t nf = adj.number_of_faces;
   label.assign(nf, 0);
@@ -181,10 +136,9 @@ std::size_t over_segment_faces(const TriangleMesh& tm, const FaceIndexMap& fim, 
 
   double threshold = 0.;
   const std::vector<std::uint8_t> cut = cut_sharp_edges<ConcurrencyTag>(adj, p.dihedral_percentile, threshold);
-  const Cut_edge_map<TriangleMesh, FaceIndexMap> cut_map{&tm, fim, &cut};
-  const Face_vector_map<TriangleMesh, FaceIndexMap> label_map{fim, &label};
-  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(
-      tm, label_map, CGAL::parameters::edge_is_constrained_map(cut_map).face_index_map(fim));
+  // the flood fill, numbered by first face (the cut of an edge is the same from both faces)
+  const std::size_t components =
+    face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) { return !cut[3 * i + std::size_t(k)]; }, label);
 
   double total_area = 0.;
   for(double a : adj.area) total_area += a;
@@ -224,7 +178,7 @@ std::size_t over_segment_labels(const TriangleMesh& tm, const FaceIndexMap& fim,
   CGAL_precondition(CGAL::is_triangle_mesh(tm));
   const std::shared_ptr<const Face_adjacency> graph = shared_face_adjacency<ConcurrencyTag>(tm, fim, np);
   if(adjacency) *adjacency = *graph;
-  return over_segment_faces<ConcurrencyTag>(tm, fim, *graph, p, label, stats);
+  return over_segment_faces<ConcurrencyTag>(*graph, p, label, stats);
 }
 
 } // namespace internal
@@ -247,8 +201,8 @@ The steps are:
    side, 12 of the 18 edges are creases and the 90-th percentile is 90 degrees), and flat edges
    never are, even when more than `100 - dihedral_percentile` percent of the edges are flat. Edges
    incident to a face of zero area are always cut.
-4. <b>Flood fill.</b> The connected components of the faces across edges that are not cut
-   (`CGAL::Polygon_mesh_processing::connected_components()`); border edges are never crossed.
+4. <b>Flood fill.</b> The connected components of the faces across edges that are not cut; border
+   edges are never crossed.
 5. <b>Size cap.</b> The cuts of a smooth surface are scattered and rarely close a loop, so the
    flood fill alone leaves one patch over most of an organic shape, where the paper reports 200 to
    500 patches. A component larger than `patch_split_size` (\f$a_{max}\f$; 1: no cap) times the
