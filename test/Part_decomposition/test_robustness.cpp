@@ -727,7 +727,7 @@ TEST_CASE("sets joined by several threads at once are the connected components, 
     last[i % chains] = i;
   }
   const auto check = [&](auto tag) {
-    CGAL::Part_decomposition::internal::Shared_index_sets sets(n, tag);
+    CGAL::Part_decomposition::internal::Index_sets sets(n, tag);
     CGAL::Part_decomposition::internal::for_each_range<decltype(tag)>(links.size(), [&](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) sets.unite(links[k].first, links[k].second);
     }, 64);
@@ -736,6 +736,12 @@ TEST_CASE("sets joined by several threads at once are the connected components, 
     CHECK(wrong == 0u);
   };
   check(CGAL::Sequential_tag());
+  // joined by one thread, a union returns the root of the joined set
+  CGAL::Part_decomposition::internal::Index_sets small(4);
+  CHECK(small.unite(3, 1) == 1u);
+  CHECK(small.unite(2, 3) == 1u);
+  CHECK(small.unite(0, 2) == 0u);
+  CHECK(small.find(3) == 0u);
 #ifdef CGAL_LINKED_WITH_TBB
   for(std::size_t threads : {2, 3})
   {

@@ -114,12 +114,7 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
 {
   const std::size_t n = faces.size();
   Label_problem p;
-  p.first.assign(n + 1, 0);
-  for(std::size_t m = 0; m < n; ++m) p.first[m + 1] = p.first[m] + std::size_t(candidates.size(faces[m]));
-  p.option.resize(p.first[n]);
-  p.option_cost.resize(p.first[n]);
-  p.label.resize(n);
-  p.links.resize(n);
+  p.allocate(n, [&](std::size_t m) { return std::size_t(candidates.size(faces[m])); });
   for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
     for(std::size_t m = b; m < e; ++m)
     {
@@ -245,21 +240,17 @@ Label_problem cluster_problem(const Face_adjacency& adj, const Face_corners& cor
     std::sort(labels.begin(), labels.end());
     labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
   };
-  Label_problem p;
-  p.first.assign(C + 1, 0);
+  std::vector<std::size_t> count(C);
   for_each_range<ConcurrencyTag>(C, [&](std::size_t b, std::size_t e) {
     std::vector<std::int32_t> labels;
     for(std::size_t c = b; c < e; ++c)
     {
       cluster_labels(c, labels);
-      p.first[c + 1] = labels.size();
+      count[c] = labels.size();
     }
   }, 256);
-  for(std::size_t c = 0; c < C; ++c) p.first[c + 1] += p.first[c];
-  p.option.resize(p.first[C]);
-  p.option_cost.resize(p.first[C]);
-  p.label.resize(C);
-  p.links.resize(C);
+  Label_problem p;
+  p.allocate(C, [&](std::size_t c) { return count[c]; });
   for_each_range<ConcurrencyTag>(C, [&](std::size_t b, std::size_t e) {
     std::vector<std::int32_t> labels;
     for(std::size_t c = b; c < e; ++c)

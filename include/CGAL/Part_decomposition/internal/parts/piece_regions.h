@@ -257,7 +257,7 @@ template <typename ConcurrencyTag, typename Join>
 std::size_t face_components(const Face_adjacency& adj, const Join& join, std::vector<std::size_t>& label)
 {
   const std::size_t nf = adj.number_of_faces;
-  Shared_index_sets sets(nf, ConcurrencyTag());
+  Index_sets sets(nf, ConcurrencyTag());
   for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
     for(std::size_t i = b; i < e; ++i)
     {

@@ -46,6 +46,18 @@ struct Label_problem
   std::vector<std::vector<Link> > links;
 
   std::size_t size() const { return label.size(); }
+  // sizes the problem for n members, `count(m)` options for member m (the options, labels and
+  // links are then written member by member, by any thread)
+  template <typename Count>
+  void allocate(std::size_t n, const Count& count)
+  {
+    first.assign(n + 1, 0);
+    for(std::size_t m = 0; m < n; ++m) first[m + 1] = first[m] + count(m);
+    option.resize(first[n]);
+    option_cost.resize(first[n]);
+    label.resize(n);
+    links.resize(n);
+  }
   // the cost of label l for member m, or -1 if l is not among its options
   double cost(std::size_t m, std::int32_t l) const
   {

@@ -15,15 +15,12 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
-#include <boost/pending/disjoint_sets.hpp>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -228,41 +225,16 @@ void sort_values(Iterator first, Iterator last, const Less& less = Less())
   std::sort(first, last, less);
 }
 
-// Disjoint sets of the indices [0, n) on two flat arrays (boost::disjoint_sets): CGAL::Union_find
-// allocates a node per element, and following its pointers over millions of faces misses the
-// cache at every step.
+// Disjoint sets of the indices [0, n) on one flat array, which several threads may join at once
+// (neither CGAL nor Boost offers that; CGAL::Union_find also allocates a node per element, whose
+// pointers miss the cache over millions of faces): a root is linked below a smaller root by
+// compare-and-swap, and paths are halved on the way up. Parents only ever decrease, so the root of
+// a set is its smallest index.
 class Index_sets
 {
 public:
-  explicit Index_sets(std::size_t n) : m_rank(n, 0), m_parent(n), m_sets(m_rank.data(), m_parent.data())
-  {
-    std::iota(m_parent.begin(), m_parent.end(), std::size_t(0));
-  }
-  Index_sets(const Index_sets&) = delete;
-  Index_sets& operator=(const Index_sets&) = delete;
-
-  std::size_t find(std::size_t i) { return m_sets.find_set(i); }
-  // joins the sets of i and j; returns the root of the joined set
-  std::size_t unite(std::size_t i, std::size_t j)
-  {
-    const std::size_t a = find(i), b = find(j);
-    if(a != b) m_sets.link(a, b);
-    return find(a);
-  }
-
-private:
-  std::vector<std::size_t> m_rank, m_parent;
-  boost::disjoint_sets<std::size_t*, std::size_t*> m_sets;
-};
-
-// Disjoint sets of the indices [0, n) that several threads may join at once, which neither CGAL
-// nor Boost offers: a root is linked below a smaller root by compare-and-swap, and paths are
-// halved on the way up. Parents only ever decrease, so the root of a set is its smallest index.
-class Shared_index_sets
-{
-public:
-  template <typename ConcurrencyTag>
-  Shared_index_sets(std::size_t n, ConcurrencyTag) : m_parent(n)
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
+  explicit Index_sets(std::size_t n, ConcurrencyTag = ConcurrencyTag()) : m_parent(n)
   {
     for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i) m_parent[i].store(i, std::memory_order_relaxed);
@@ -282,16 +254,18 @@ public:
     }
   }
 
-  void unite(std::size_t i, std::size_t j)
+  // joins the sets of i and j; returns the root of the joined set (exact once no other thread
+  // joins these sets)
+  std::size_t unite(std::size_t i, std::size_t j)
   {
     for(;;)
     {
       i = find(i);
       j = find(j);
-      if(i == j) return;
+      if(i == j) return i;
       if(i < j) std::swap(i, j);
       std::size_t root = i;
-      if(m_parent[i].compare_exchange_strong(root, j, std::memory_order_relaxed)) return;
+      if(m_parent[i].compare_exchange_strong(root, j, std::memory_order_relaxed)) return j;
     }
   }
 
