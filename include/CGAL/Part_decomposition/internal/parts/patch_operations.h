@@ -141,9 +141,21 @@ std::size_t split_large_patches(const Face_adjacency& adj, const std::vector<std
     piece[i] = Piece{a, a * c[0], a * c[1], a * c[2], a * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), i};
   }
   const double max_gyration = gyration_ratio * max_area;
-  for(const std::uint64_t key : edges)
+  const auto slot_of = [&](std::size_t e) { return std::size_t((edges[e] >> 1) & 0x7fffffffu); };
+  constexpr std::size_t ahead = 16; // edges whose faces are fetched before their turn
+  for(std::size_t e = 0; e < edges.size(); ++e)
   {
-    const std::size_t slot = std::size_t((key >> 1) & 0x7fffffffu);
+    if(e + 2 * ahead < edges.size()) prefetch_address(&adj.neighbor[slot_of(e + 2 * ahead)]);
+    if(e + ahead < edges.size())
+    {
+      const std::size_t s = slot_of(e + ahead), f = s / 3, g = adj.neighbor[s];
+      sets.prefetch(f);
+      sets.prefetch(g);
+      prefetch_address(&piece[f]);
+      prefetch_address(&piece[g]);
+    }
+    const std::uint64_t key = edges[e];
+    const std::size_t slot = slot_of(e);
     const bool flat = (key & 1u) != 0;
     const std::size_t a = sets.find(slot / 3), b = sets.find(adj.neighbor[slot]);
     if(a == b) continue;
