@@ -193,7 +193,7 @@ static PD::Truncated_signed_distance_field time_tsdf(const Mesh& mesh, const Opt
   const auto tris = PDI::normalized_triangles(mesh, get(CGAL::vertex_point, mesh), tsdf.normalization);
   const bool closed = PDI::faces_form_closed_surface(mesh);
   std::unique_ptr<PDI::Triangle_soup_aabb_tree> tree;
-  const double t_tree = median_ms(o.runs, [&] { tree.reset(new PDI::Triangle_soup_aabb_tree(tris)); });
+  const double t_tree = median_ms(o.runs, [&] { tree.reset(new PDI::Triangle_soup_aabb_tree(tris, CGAL::Parallel_if_available_tag())); });
   PD::Adaptive_grid grid;
   std::vector<double> distance;
   std::vector<std::uint8_t> crossed;

@@ -183,7 +183,7 @@ Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh&
   std::vector<double> distance;
   std::vector<std::uint8_t> crossed;
   {
-    const Triangle_soup_aabb_tree tree(tris);
+    const Triangle_soup_aabb_tree tree(tris, ConcurrencyTag());
     std::vector<Grid_leaf> leaves = adaptive_grid_leaves<ConcurrencyTag>(tree, rule);
     out.grid = grid_of_leaves(leaves, 1 << rule.finest_depth, distance, crossed);
   }

@@ -129,9 +129,11 @@ private:
 class Triangle_soup_aabb_tree
 {
 public:
-  explicit Triangle_soup_aabb_tree(const std::vector<Triangle_points>& soup)
+  // `ConcurrencyTag`: the threads of the build (the tree is the same either way).
+  template <typename ConcurrencyTag = CGAL::Sequential_tag>
+  explicit Triangle_soup_aabb_tree(const std::vector<Triangle_points>& soup, ConcurrencyTag = ConcurrencyTag())
   {
-    typedef CGAL::Parallel_if_available_tag Tag;
+    typedef ConcurrencyTag Tag;
     const std::size_t n = soup.size();
     const auto centroid = [&](std::size_t i, int a) { return (soup[i][0][a] + soup[i][1][a] + soup[i][2][a]) / 3.; };
     // the box of the centroids: a min and a max per block, the same whatever the blocks
