@@ -850,12 +850,17 @@ TEST_CASE("Point-triangle distance and the AABB-tree closest-triangle search mat
     const double ref = CGAL::to_double(CGAL::squared_distance(Point(p[0], p[1], p[2]), T));
     CHECK(PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]) == Approx(ref).epsilon(1e-9).margin(1e-18));
   }
+  // the squared distance from p to the nearest triangle of a soup, triangle by triangle
+  const auto brute_force = [](const std::vector<PDI::Triangle_points>& soup, const PDI::Vec3& p) {
+    double best = std::numeric_limits<double>::infinity();
+    for(const auto& t : soup) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+    return best;
+  };
   const PDI::Triangle_soup_aabb_tree tree(tris);
   for(int i = 0; i < 3000; ++i)
   {
     const PDI::Vec3 p = rnd(0.6);
-    double best = std::numeric_limits<double>::infinity();
-    for(const auto& t : tris) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+    const double best = brute_force(tris, p);
     const std::pair<std::uint32_t, double> got = tree.closest(p);
     CHECK(std::abs(std::sqrt(got.second) - std::sqrt(best)) <= 1e-12);
     const auto& t = tris[got.first];
@@ -876,23 +881,23 @@ TEST_CASE("Point-triangle distance and the AABB-tree closest-triangle search mat
     const std::vector<PDI::Triangle_points> few(tris.begin() + 4, tris.begin() + 4 + std::ptrdiff_t(n));
     const PDI::Triangle_soup_aabb_tree small(few);
     const PDI::Vec3 p = {{0.1, 0.2, 0.3}};
-    double best = std::numeric_limits<double>::infinity();
-    for(const auto& t : few) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
-    CHECK(small.closest(p).second == best);
+    CHECK(small.closest(p).second == brute_force(few, p));
   }
   // A soup large enough to be held in two trees (each triangle 4 times or more): the nearest of both.
   std::vector<PDI::Triangle_points> many;
   for(std::size_t i = 0; many.size() < (std::size_t(1) << 17); ++i) many.push_back(tris[i % tris.size()]);
+  // built on one thread and, as compute_tsdf() builds it, on several: the same answers
   const PDI::Triangle_soup_aabb_tree large(many);
+  const PDI::Triangle_soup_aabb_tree large_parallel(many, CGAL::Parallel_if_available_tag());
   for(int i = 0; i < 300; ++i)
   {
     const PDI::Vec3 p = rnd(0.6);
-    double best = std::numeric_limits<double>::infinity();
-    for(const auto& t : tris) best = std::min(best, PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]));
+    const double best = brute_force(tris, p);
     const std::pair<std::uint32_t, double> got = large.closest(p);
     CHECK(got.second == best);
     const auto& t = many[got.first];
     CHECK(PDI::squared_distance_to_triangle(p, t[0], t[1], t[2]) == got.second);
+    CHECK(large_parallel.closest(p) == got);
   }
 }
 

@@ -133,13 +133,12 @@ public:
   template <typename ConcurrencyTag = CGAL::Sequential_tag>
   explicit Triangle_soup_aabb_tree(const std::vector<Triangle_points>& soup, ConcurrencyTag = ConcurrencyTag())
   {
-    typedef ConcurrencyTag Tag;
     const std::size_t n = soup.size();
     const auto centroid = [&](std::size_t i, int a) { return (soup[i][0][a] + soup[i][1][a] + soup[i][2][a]) / 3.; };
     // the box of the centroids: a min and a max per block, the same whatever the blocks
     constexpr std::size_t block = 1 << 16;
     std::vector<std::array<Vec3, 2> > box((n + block - 1) / block);
-    for_each_block<Tag>(n, block, [&](std::size_t b, std::size_t e) {
+    for_each_block<ConcurrencyTag>(n, block, [&](std::size_t b, std::size_t e) {
       Vec3 lo, hi;
       lo.fill(std::numeric_limits<double>::infinity());
       hi.fill(-std::numeric_limits<double>::infinity());
@@ -163,7 +162,7 @@ public:
     // 21 bits per axis of the centroid's cell, interleaved; ties keep the soup order.
     const double cells = double(1u << 21);
     std::vector<std::pair<std::uint64_t, std::uint32_t> > key(n);
-    for_each_range<Tag>(n, [&](std::size_t b, std::size_t e) {
+    for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
       for(std::size_t i = b; i < e; ++i)
       {
         std::uint32_t q[3];
@@ -178,12 +177,12 @@ public:
         key[i] = std::make_pair(code, std::uint32_t(i));
       }
     }, 4096);
-    sort_values<Tag>(key.begin(), key.end());
+    sort_values<ConcurrencyTag>(key.begin(), key.end());
 
     m_triangles.resize(n);
     m_soup_index.resize(n);
     m_position.resize(n);
-    for_each_range<Tag>(n, [&](std::size_t b, std::size_t e) {
+    for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
       auto point = [](const Vec3& p) { return Aabb_kernel::Point_3(p[0], p[1], p[2]); };
       for(std::size_t r = b; r < e; ++r)
       {
@@ -197,7 +196,7 @@ public:
     // CGAL builds a tree on one thread: a large soup is split into the two halves of its Morton
     // order (two boxes apart in space), one tree each, built side by side and both searched
     const std::size_t half = n >= split_size ? n / 2 : n;
-    run_side_by_side<Tag>([&] { build_tree(m_trees[0], 0, half); }, [&] { build_tree(m_trees[1], half, n); });
+    run_side_by_side<ConcurrencyTag>([&] { build_tree(m_trees[0], 0, half); }, [&] { build_tree(m_trees[1], half, n); });
   }
   // The tree refers to m_triangles.
   Triangle_soup_aabb_tree(const Triangle_soup_aabb_tree&) = delete;
