@@ -1630,6 +1630,61 @@ TEST_CASE("a few congruent pieces on a plate are not a pattern: they stay parts"
 
 namespace {
 
+// Racks beside a large plate: per rack a rod and `fins` congruent fins standing on it, each fin
+// about a fifth of the rod's area. Returns per face its piece: 0 the plate, then per rack its rod
+// and its fins.
+Mesh make_racks(std::size_t fins, std::vector<std::size_t>& piece)
+{
+  Mesh m;
+  auto add = [&](const Point& a, const Point& b, int subdivisions) {
+    const std::size_t p = piece.empty() ? 0 : piece.back() + 1;
+    test_shapes::append(m, test_shapes::make_box(a, b, subdivisions));
+    piece.resize(num_faces(m), p);
+  };
+  add(Point(0, 0, 0), Point(6, 6, 0.1), 2);
+  for(double y : {1., 4.})
+  {
+    add(Point(8, y, 0), Point(12, y + 0.1, 0.1), 2);
+    for(std::size_t k = 0; k < fins; ++k)
+    {
+      const double x = 8.1 + 0.33 * double(k);
+      add(Point(x, y, 0.1), Point(x + 0.1, y + 0.05, 1.1), 1);
+    }
+  }
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("congruent fins on several small rods are one pattern: each rack is one default part",
+          "[hierarchy][pieces]")
+{
+  // 24 fins, 12 per rod: a pattern although no rod holds 20 fins or is 10 times a fin's area
+  std::vector<std::size_t> piece;
+  const Mesh m = make_racks(12, piece);
+  const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(piece));
+  REQUIRE(h.number_of_leaves() == 27);
+  REQUIRE(h.level_below_cost(27, PD::defaults::maximum_merge_cost) == 3);
+  const std::vector<std::size_t> labels = h.labels(3);
+  const std::size_t second_rack = 1 + 13; // the piece of the second rod
+  std::map<std::size_t, std::set<std::size_t> > parts_of_rack;
+  for(std::size_t i = 0; i < labels.size(); ++i)
+    parts_of_rack[piece[i] == 0 ? 0 : piece[i] < second_rack ? 1 : 2].insert(labels[i]);
+  for(std::size_t r = 0; r < 3; ++r) CHECK(parts_of_rack[r].size() == 1);
+  CHECK(parts_of_rack[1] != parts_of_rack[2]);
+  auto attached = [](const PD::Part_hierarchy<K>& t) {
+    return std::count_if(t.nodes.begin(), t.nodes.end(),
+                         [](const PD::Part_hierarchy_node<K>& n) { return n.kind == PD::Merge_kind::ATTACHED; });
+  };
+  CHECK(attached(h) == 24);
+  // 18 fins are too few for a pattern: none is attached
+  std::vector<std::size_t> few_piece;
+  const Mesh few = make_racks(9, few_piece);
+  CHECK(attached(PD::build_part_hierarchy(few, CGAL::make_property_map(few_piece))) == 0);
+}
+
+namespace {
+
 // A one-sided figure cut out of a sheet, as an OBJ file: a round body of radius 1 and three limbs
 // 0.5 wide reaching radius 2.6, at 90, 210 and 330 degrees, on a grid of step 0.1 (two triangles
 // per cell whose centre is in the figure). `bend` lifts the sheet by bend (x^2 + y^2): a relief.

@@ -335,9 +335,10 @@ neighbours in the Hilbert order of their centres (parts in separate places). Bef
 piece merge, the pieces a person names with the piece they sit on join it (`Merge_kind::ATTACHED`):
 a crumb, a piece of at most 0.02% of the surface's area touching a piece at least 10 times as
 large (the smallest such piece), and a pattern, at least 20 congruent pieces (the same number of
-faces, areas and box extents within 5%), each at most 0.5% of the surface, touching one piece at
-least 10 times as large, with the pieces of at most twice their size that touch that piece too
-(the keys of a keyboard, of several widths). A grouped piece keeps only its contacts within its
+faces, areas and box extents within 5%), each at most 0.5% of the surface and touching a piece at
+least 3 times as large (the largest such piece, its host; the hosts may differ, as the frames of
+several racks), with the pieces of at most twice their size that touch a host too (the keys of a
+keyboard, of several widths). A grouped piece keeps only its contacts within its
 group. These merges are always below the default parts, so the crumbs and the members of a
 pattern are one part with their host by default and separate nodes of the tree. The other pairs
 are taken by kind first, parts of one piece before parts in contact before the others, so that

@@ -19,10 +19,10 @@
 #include <CGAL/Part_decomposition/internal/parts/part_merging.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <cstddef>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -35,13 +35,14 @@ namespace internal {
 constexpr double crumb_area_fraction = 0.0002;
 constexpr double crumb_host_ratio = 10.;
 // A pattern: at least `pattern_count` congruent pieces (same number of faces, areas and box extents
-// within `congruence_tolerance`) that touch one piece at least `pattern_host_ratio` times as large,
-// each at most `pattern_area_fraction` of the surface. The other pieces touching that host that
-// are no larger than `pattern_size_ratio` times its members join the pattern (keys of other widths).
+// within `congruence_tolerance`), each at most `pattern_area_fraction` of the surface and touching a
+// piece at least `pattern_host_ratio` times as large, its host (the largest such piece). The hosts
+// may differ: the slats of several racks are one pattern. The other pieces touching a host that are
+// no larger than `pattern_size_ratio` times its members join the pattern (keys of other widths).
 constexpr std::size_t pattern_count = 20;
 constexpr double congruence_tolerance = 0.05;
 constexpr double pattern_area_fraction = 0.005;
-constexpr double pattern_host_ratio = 10.;
+constexpr double pattern_host_ratio = 3.;
 constexpr double pattern_size_ratio = 2.;
 
 // The classes of congruent pieces: per piece its class, the first piece of the class.
@@ -100,24 +101,27 @@ inline std::vector<std::size_t> pattern_hosts(const std::vector<Part_box>& box, 
 {
   const std::size_t none = (std::numeric_limits<std::size_t>::max)(), n = box.size();
   const std::vector<std::size_t> cls = congruence_classes(box, faces);
-  // (host, class) -> members touching the host
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > on_host;
+  // per small piece, the largest piece it touches that is large enough
+  std::vector<std::size_t> candidate(n, none);
   for(const std::pair<std::size_t, std::size_t>& c : contacts)
     for(int side = 0; side < 2; ++side)
     {
       const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
-      if(box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area)
-        on_host[{h, cls[p]}].push_back(p);
+      if(box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area &&
+         (candidate[p] == none || box[h].area > box[candidate[p]].area))
+        candidate[p] = h;
     }
+  std::vector<std::size_t> members(n, 0); // per class, its members with a candidate host
+  for(std::size_t p = 0; p < n; ++p)
+    if(candidate[p] != none) ++members[cls[p]];
   std::vector<std::size_t> host(n, none);
   std::vector<double> pattern_area(n, 0.); // per host, its largest pattern member
-  for(const auto& e : on_host)
-    if(e.second.size() >= pattern_count)
-      for(std::size_t p : e.second)
-      {
-        host[p] = e.first.first;
-        pattern_area[e.first.first] = (std::max)(pattern_area[e.first.first], box[p].area);
-      }
+  for(std::size_t p = 0; p < n; ++p)
+    if(candidate[p] != none && members[cls[p]] >= pattern_count)
+    {
+      host[p] = candidate[p];
+      pattern_area[host[p]] = (std::max)(pattern_area[host[p]], box[p].area);
+    }
   for(const std::pair<std::size_t, std::size_t>& c : contacts)
     for(int side = 0; side < 2; ++side)
     {
