@@ -1568,6 +1568,21 @@ TEST_CASE("above the default parts two large parts of one piece wait with the co
 
 namespace {
 
+// Appends the box [a, b] to `m` and gives its faces `value` in `label`.
+void append_labelled_box(Mesh& m, std::vector<std::size_t>& label, const Point& a, const Point& b, int subdivisions,
+                         std::size_t value)
+{
+  test_shapes::append(m, test_shapes::make_box(a, b, subdivisions));
+  label.resize(num_faces(m), value);
+}
+
+std::size_t number_of_attached_merges(const PD::Part_hierarchy<K>& h)
+{
+  return std::size_t(std::count_if(h.nodes.begin(), h.nodes.end(), [](const PD::Part_hierarchy_node<K>& n) {
+    return n.kind == PD::Merge_kind::ATTACHED;
+  }));
+}
+
 // A keyboard: a base plate, a lid standing on its back edge, `keys` small congruent boxes on the
 // plate in rows of 8 (the last one wider) and a crumb on the lid. Returns per face its
 // box: 0 plate, 1 lid, 2 keys, 3 crumb.
@@ -1575,8 +1590,7 @@ Mesh make_keyboard(std::size_t keys, std::vector<std::size_t>& box)
 {
   Mesh m;
   auto add = [&](const Point& a, const Point& b, int subdivisions, std::size_t kind) {
-    test_shapes::append(m, test_shapes::make_box(a, b, subdivisions));
-    box.resize(num_faces(m), kind);
+    append_labelled_box(m, box, a, b, subdivisions, kind);
   };
   add(Point(0, 0, 0), Point(4, 2, 0.1), 4, 0);
   add(Point(0, 2, 0), Point(4, 2.1, 2), 4, 1);
@@ -1604,9 +1618,7 @@ TEST_CASE("keys laid out on a plate and a crumb join the piece they sit on; the 
     if((part[i] == part[0]) != (box[i] == 0 || box[i] == 2)) FAIL("face " << i << " of box kind " << box[i]);
   // every key and the crumb are leaves of their own, joined to their group by attached merges
   CHECK(h.number_of_leaves() >= 28);
-  const std::size_t attached = std::size_t(std::count_if(
-    h.nodes.begin(), h.nodes.end(), [](const PD::Part_hierarchy_node<K>& n) { return n.kind == PD::Merge_kind::ATTACHED; }));
-  CHECK(attached == 26);
+  CHECK(number_of_attached_merges(h) == 26);
   // a level of the hierarchy reaches the keys: each key a part of its own
   const std::vector<std::size_t> fine = h.labels(h.default_number_of_parts + 26);
   std::set<std::size_t> key_parts;
@@ -1637,9 +1649,7 @@ Mesh make_racks(std::size_t fins, std::vector<std::size_t>& piece)
 {
   Mesh m;
   auto add = [&](const Point& a, const Point& b, int subdivisions) {
-    const std::size_t p = piece.empty() ? 0 : piece.back() + 1;
-    test_shapes::append(m, test_shapes::make_box(a, b, subdivisions));
-    piece.resize(num_faces(m), p);
+    append_labelled_box(m, piece, a, b, subdivisions, piece.empty() ? 0 : piece.back() + 1);
   };
   add(Point(0, 0, 0), Point(6, 6, 0.1), 2);
   for(double y : {1., 4.})
@@ -1672,15 +1682,11 @@ TEST_CASE("congruent fins on several small rods are one pattern: each rack is on
     parts_of_rack[piece[i] == 0 ? 0 : piece[i] < second_rack ? 1 : 2].insert(labels[i]);
   for(std::size_t r = 0; r < 3; ++r) CHECK(parts_of_rack[r].size() == 1);
   CHECK(parts_of_rack[1] != parts_of_rack[2]);
-  auto attached = [](const PD::Part_hierarchy<K>& t) {
-    return std::count_if(t.nodes.begin(), t.nodes.end(),
-                         [](const PD::Part_hierarchy_node<K>& n) { return n.kind == PD::Merge_kind::ATTACHED; });
-  };
-  CHECK(attached(h) == 24);
+  CHECK(number_of_attached_merges(h) == 24);
   // 18 fins are too few for a pattern: none is attached
   std::vector<std::size_t> few_piece;
   const Mesh few = make_racks(9, few_piece);
-  CHECK(attached(PD::build_part_hierarchy(few, CGAL::make_property_map(few_piece))) == 0);
+  CHECK(number_of_attached_merges(PD::build_part_hierarchy(few, CGAL::make_property_map(few_piece))) == 0);
 }
 
 namespace {
