@@ -1689,6 +1689,29 @@ TEST_CASE("congruent fins on several small rods are one pattern: each rack is on
   CHECK(number_of_attached_merges(PD::build_part_hierarchy(few, CGAL::make_property_map(few_piece))) == 0);
 }
 
+TEST_CASE("flat pieces side by side that tile one plate are one default part; staggered, they stay apart",
+          "[hierarchy][pieces]")
+{
+  for(double stagger : {0., 0.3})
+  {
+    // an L-bracket, one piece in two parts that do not merge by default, and 5 rows of keys
+    std::vector<int> plate;
+    Mesh m = test_shapes::make_l_bracket(12., 12., 0.5, 12., 2., &plate);
+    std::vector<std::size_t> part(plate.begin(), plate.end());
+    for(std::size_t r = 0; r < 5; ++r)
+    {
+      const double y = 0.52 * double(r), z = r % 2 ? stagger : 0.;
+      append_labelled_box(m, part, Point(14, y, z), Point(18, y + 0.5, z + 0.05), 1, 2 + r);
+    }
+    const PD::Part_hierarchy<K> h = PD::build_part_hierarchy(m, CGAL::make_property_map(part));
+    REQUIRE(h.number_of_leaves() == 7);
+    const std::size_t parts = h.level_below_cost(7, PD::defaults::maximum_merge_cost);
+    CAPTURE(stagger);
+    CHECK(parts == (stagger == 0. ? 3 : 7));
+    CHECK(number_of_attached_merges(h) == (stagger == 0. ? 4 : 0));
+  }
+}
+
 namespace {
 
 // A one-sided figure cut out of a sheet, as an OBJ file: a round body of radius 1 and three limbs

@@ -115,13 +115,13 @@ inline std::vector<std::size_t> label_of_leaves(const std::vector<std::size_t>& 
   return result;
 }
 
-// Groups crumbs and repeated pieces with the piece they sit on (`grouped_pieces()`): `leaf_piece`
-// (per leaf its piece, `none` if several) becomes the piece of the group's root, and `attached`
-// flags the leaves of grouped pieces that are not roots. `touching`: the touching leaves.
+// Groups crumbs, repeated pieces and tiles (`grouped_pieces()`; `thickness` as in the merge costs):
+// `leaf_piece` (per leaf its piece, `none` if several) becomes the piece of the group's root, and
+// `attached` flags the leaves of grouped pieces that are not roots. `touching`: the touching leaves.
 template <typename ConcurrencyTag, typename Corner>
 void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, const std::vector<std::size_t>& piece,
                            const std::vector<std::pair<std::size_t, std::size_t> >& touching, const Eigen::Vector3d& origin,
-                           std::vector<std::size_t>& leaf_piece, std::vector<std::uint8_t>& attached)
+                           double thickness, std::vector<std::size_t>& leaf_piece, std::vector<std::uint8_t>& attached)
 {
   if(touching.empty()) return;
   const std::size_t none = (std::numeric_limits<std::size_t>::max)(); // a leaf of several pieces
@@ -137,7 +137,8 @@ void group_attached_leaves(std::size_t number_of_faces, const Corner& corner, co
   std::sort(contacts.begin(), contacts.end());
   contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
   const std::vector<std::size_t> root =
-    grouped_pieces(leaf_boxes<ConcurrencyTag>(number_of_faces, corner, piece, number_of_pieces, origin), faces, contacts);
+    grouped_pieces(leaf_boxes<ConcurrencyTag>(number_of_faces, corner, piece, number_of_pieces, origin), faces, contacts,
+                   thickness);
   for(std::size_t l = 0; l < leaf_piece.size(); ++l)
     if(leaf_piece[l] != none && root[leaf_piece[l]] != leaf_piece[l])
     {
@@ -305,7 +306,7 @@ Part_hierarchy<GeomTraits> hierarchy_of_leaves(const Face_adjacency& adj, const 
     touching = touching_leaves(nf, corner, leaf, leaf_piece, p.contact_distance);
   std::vector<std::size_t> host_piece = leaf_piece;
   std::vector<std::uint8_t> attached(number_of_leaves, 0);
-  group_attached_leaves<ConcurrencyTag>(nf, corner, piece, touching, origin, host_piece, attached);
+  group_attached_leaves<ConcurrencyTag>(nf, corner, piece, touching, origin, p.thickness, host_piece, attached);
   Part_agglomeration agglomeration(leaf_boxes<ConcurrencyTag>(nf, corner, leaf, number_of_leaves, origin), leaf_subgroup, leaf_group,
                                    host_piece, attached, p, total_volume);
 
@@ -338,8 +339,11 @@ large (the smallest such piece), and a pattern, at least 20 congruent pieces (th
 faces, areas and box extents within 5%), each at most 0.5% of the surface and touching a piece at
 least 3 times as large (the largest such piece, its host; the hosts may differ, as the frames of
 several racks), with the pieces of at most twice their size that touch a host too (the keys of a
-keyboard, of several widths). A grouped piece keeps only its contacts within its
-group. These merges are always below the default parts, so the crumbs and the members of a
+keyboard, of several widths). Tiles join one another the same way, their largest piece being the
+root: flat pieces in contact (the smallest side of the box at most a quarter of the next), each at
+most 1.5% of the surface, whose common box is as thin as they are and holds the volume of their two
+boxes within 5% (the rows of a keyboard, side by side). A grouped piece keeps only its contacts
+within its group. These merges are always below the default parts, so the crumbs and the members of a
 pattern are one part with their host by default and separate nodes of the tree. The other pairs
 are taken by kind first, parts of one piece before parts in contact before the others, so that
 the pieces of the mesh, with their groups, are a level of the tree, and within a kind by

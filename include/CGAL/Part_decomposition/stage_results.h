@@ -249,7 +249,7 @@ enum class Merge_kind
   NONE,           ///< a leaf: no merge
   SAME_PRIMITIVE, ///< two pieces of one part of the default decomposition explained by one fitted primitive
   SAME_PART,      ///< two pieces of one part of the default decomposition
-  ATTACHED,       ///< a crumb or a repeated piece and the piece it is grouped with (see `build_part_hierarchy()`)
+  ATTACHED,       ///< a crumb, a repeated piece or a tile and the piece it is grouped with (see `build_part_hierarchy()`)
   SAME_PIECE,   ///< two parts of one piece of the mesh that share an edge
   CONTACT,      ///< two parts of different pieces whose surfaces touch
   NO_CONTACT    ///< two parts that do not touch (the parts of a mesh in separate places)

@@ -9,7 +9,7 @@
 #define CGAL_PART_DECOMPOSITION_INTERNAL_PIECE_GROUPING_H
 
 // Which pieces of an assembly a person names with the piece they sit on: crumbs, and pieces
-// repeated in a pattern (keys, buttons, slats, vents).
+// repeated in a pattern (keys, buttons, slats, vents); and which plates, side by side, are one.
 //
 // Inputs: per piece its box (`Part_box`: area, half extents) and number of faces; the pairs of
 // pieces whose surfaces touch (a < b).
@@ -17,6 +17,7 @@
 // contacts whose root is its largest piece.
 
 #include <CGAL/Part_decomposition/internal/parts/part_merging.h>
+#include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <algorithm>
 #include <array>
@@ -44,6 +45,33 @@ constexpr double congruence_tolerance = 0.05;
 constexpr double pattern_area_fraction = 0.005;
 constexpr double pattern_host_ratio = 3.;
 constexpr double pattern_size_ratio = 2.;
+
+// Tiles: two flat pieces in contact (smallest half extent at most `tile_flatness` times the middle
+// one), each at most `tile_area_fraction` of the surface, whose union's box is as thin as the
+// thicker of them and holds the volume of their two boxes within `tile_volume_tolerance`: the
+// rows of a keyboard, the boards of a panel, laid side by side in one plate.
+constexpr double tile_area_fraction = 0.015;
+constexpr double tile_volume_tolerance = 0.05;
+constexpr double tile_flatness = 0.25;
+
+inline bool is_flat(const Part_box& b)
+{
+  std::array<double, 3> h = {{b.half[0], b.half[1], b.half[2]}};
+  std::sort(h.begin(), h.end());
+  return h[0] <= tile_flatness * h[1];
+}
+
+// Whether pieces `a` and `b`, in contact, tile one plate; `thickness`: the least half extent of a
+// box's volume (as in the merge costs).
+inline bool tile_one_plate(const Part_box& a, const Part_box& b, double total_area, double thickness)
+{
+  if(a.area > tile_area_fraction * total_area || b.area > tile_area_fraction * total_area || !is_flat(a) || !is_flat(b))
+    return false;
+  const Part_box u = merge_boxes(a, b);
+  const double va = box_volume(a, thickness), vb = box_volume(b, thickness), vu = box_volume(u, thickness);
+  if(std::abs(vu - va - vb) > tile_volume_tolerance * (va + vb) || vu < 1.2 * (std::max)(va, vb)) return false;
+  return u.half.minCoeff() <= 1.2 * (std::max)(a.half.minCoeff(), b.half.minCoeff());
+}
 
 // The classes of congruent pieces: per piece its class, the first piece of the class.
 inline std::vector<std::size_t> congruence_classes(const std::vector<Part_box>& box,
@@ -133,25 +161,29 @@ inline std::vector<std::size_t> pattern_hosts(const std::vector<Part_box>& box, 
   return host;
 }
 
-// Per piece, the root of its group (itself if none): patterns join their host, then crumbs the
-// smallest large enough piece they touch. A host is always larger, so the walk to the root ends.
+// Per piece, the root of its group (itself if none), its largest piece: patterns join their host,
+// crumbs the smallest large enough piece they touch, and tiles one another.
 inline std::vector<std::size_t> grouped_pieces(const std::vector<Part_box>& box, const std::vector<std::size_t>& faces,
-                                               const std::vector<std::pair<std::size_t, std::size_t> >& contacts)
+                                               const std::vector<std::pair<std::size_t, std::size_t> >& contacts,
+                                               double thickness)
 {
   const std::size_t none = (std::numeric_limits<std::size_t>::max)(), n = box.size();
   double total = 0.;
   for(const Part_box& b : box) total += b.area;
-  std::vector<std::size_t> host = pattern_hosts(box, faces, contacts, total);
+  const std::vector<std::size_t> host = pattern_hosts(box, faces, contacts, total);
   const std::vector<std::size_t> crumb = crumb_hosts(box, contacts, total);
-  std::vector<std::size_t> root(n);
+  Index_sets groups(n);
   for(std::size_t p = 0; p < n; ++p)
-    if(host[p] == none) host[p] = crumb[p];
+    if(host[p] != none || crumb[p] != none) groups.unite(p, host[p] != none ? host[p] : crumb[p]);
+  for(const std::pair<std::size_t, std::size_t>& c : contacts)
+    if(tile_one_plate(box[c.first], box[c.second], total, thickness)) groups.unite(c.first, c.second);
+  std::vector<std::size_t> root(n, none); // per set's smallest index, then per piece: its largest piece
   for(std::size_t p = 0; p < n; ++p)
   {
-    std::size_t r = p;
-    while(host[r] != none && box[host[r]].area > box[r].area) r = host[r];
-    root[p] = r;
+    std::size_t& r = root[groups.find(p)];
+    if(r == none || box[p].area > box[r].area) r = p;
   }
+  for(std::size_t p = 0; p < n; ++p) root[p] = root[groups.find(p)];
   return root;
 }
 
