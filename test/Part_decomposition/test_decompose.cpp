@@ -1603,6 +1603,28 @@ Mesh make_keyboard(std::size_t keys, std::vector<std::size_t>& box)
   return m;
 }
 
+// Racks beside a large plate: per rack a rod and `fins` congruent fins standing on it, each fin
+// about a fifth of the rod's area. Returns per face its piece: 0 the plate, then per rack its rod
+// and its fins.
+Mesh make_racks(std::size_t fins, std::vector<std::size_t>& piece)
+{
+  Mesh m;
+  auto add = [&](const Point& a, const Point& b, int subdivisions) {
+    append_labelled_box(m, piece, a, b, subdivisions, piece.empty() ? 0 : piece.back() + 1);
+  };
+  add(Point(0, 0, 0), Point(6, 6, 0.1), 2);
+  for(double y : {1., 4.})
+  {
+    add(Point(8, y, 0), Point(12, y + 0.1, 0.1), 2);
+    for(std::size_t k = 0; k < fins; ++k)
+    {
+      const double x = 8.1 + 0.33 * double(k);
+      add(Point(x, y, 0.1), Point(x + 0.1, y + 0.05, 1.1), 1);
+    }
+  }
+  return m;
+}
+
 } // namespace
 
 TEST_CASE("keys laid out on a plate and a crumb join the piece they sit on; the hierarchy keeps them apart",
@@ -1639,32 +1661,6 @@ TEST_CASE("a few congruent pieces on a plate are not a pattern: they stay parts"
     if(box[i] == 2) key_parts.insert(part[i]);
   CHECK(key_parts.size() == 4);
 }
-
-namespace {
-
-// Racks beside a large plate: per rack a rod and `fins` congruent fins standing on it, each fin
-// about a fifth of the rod's area. Returns per face its piece: 0 the plate, then per rack its rod
-// and its fins.
-Mesh make_racks(std::size_t fins, std::vector<std::size_t>& piece)
-{
-  Mesh m;
-  auto add = [&](const Point& a, const Point& b, int subdivisions) {
-    append_labelled_box(m, piece, a, b, subdivisions, piece.empty() ? 0 : piece.back() + 1);
-  };
-  add(Point(0, 0, 0), Point(6, 6, 0.1), 2);
-  for(double y : {1., 4.})
-  {
-    add(Point(8, y, 0), Point(12, y + 0.1, 0.1), 2);
-    for(std::size_t k = 0; k < fins; ++k)
-    {
-      const double x = 8.1 + 0.33 * double(k);
-      add(Point(x, y, 0.1), Point(x + 0.1, y + 0.05, 1.1), 1);
-    }
-  }
-  return m;
-}
-
-} // namespace
 
 TEST_CASE("congruent fins on several small rods are one pattern: each rack is one default part",
           "[hierarchy][pieces]")

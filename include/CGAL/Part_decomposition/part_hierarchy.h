@@ -343,8 +343,8 @@ keyboard, of several widths). Tiles join one another the same way, their largest
 root: flat pieces in contact (the smallest side of the box at most a quarter of the next), each at
 most 1.5% of the surface, whose common box is as thin as they are and holds the volume of their two
 boxes within 5% (the rows of a keyboard, side by side). A grouped piece keeps only its contacts
-within its group. These merges are always below the default parts, so the crumbs and the members of a
-pattern are one part with their host by default and separate nodes of the tree. The other pairs
+within its group. These merges are always below the default parts, so the pieces of a group are
+one part by default and separate nodes of the tree. The other pairs
 are taken by kind first, parts of one piece before parts in contact before the others, so that
 the pieces of the mesh, with their groups, are a level of the tree, and within a kind by
 increasing cost

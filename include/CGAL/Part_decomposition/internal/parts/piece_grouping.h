@@ -48,16 +48,26 @@ constexpr double pattern_size_ratio = 2.;
 
 // Tiles: two flat pieces in contact (smallest half extent at most `tile_flatness` times the middle
 // one), each at most `tile_area_fraction` of the surface, whose union's box is as thin as the
-// thicker of them and holds the volume of their two boxes within `tile_volume_tolerance`: the
-// rows of a keyboard, the boards of a panel, laid side by side in one plate.
+// thicker of them (within `tile_thickness_slack`) and holds the volume of their two boxes within
+// `tile_volume_tolerance`, while at least `tile_side_by_side` times the larger box (neither lies in
+// the other's box): the rows of a keyboard, the boards of a panel, laid side by side in one plate.
 constexpr double tile_area_fraction = 0.015;
 constexpr double tile_volume_tolerance = 0.05;
 constexpr double tile_flatness = 0.25;
+constexpr double tile_thickness_slack = 1.2;
+constexpr double tile_side_by_side = 1.2;
 
-inline bool is_flat(const Part_box& b)
+// The half extents of a box, smallest first.
+inline std::array<double, 3> sorted_half_extents(const Part_box& b)
 {
   std::array<double, 3> h = {{b.half[0], b.half[1], b.half[2]}};
   std::sort(h.begin(), h.end());
+  return h;
+}
+
+inline bool is_flat(const Part_box& b)
+{
+  const std::array<double, 3> h = sorted_half_extents(b);
   return h[0] <= tile_flatness * h[1];
 }
 
@@ -69,8 +79,9 @@ inline bool tile_one_plate(const Part_box& a, const Part_box& b, double total_ar
     return false;
   const Part_box u = merge_boxes(a, b);
   const double va = box_volume(a, thickness), vb = box_volume(b, thickness), vu = box_volume(u, thickness);
-  if(std::abs(vu - va - vb) > tile_volume_tolerance * (va + vb) || vu < 1.2 * (std::max)(va, vb)) return false;
-  return u.half.minCoeff() <= 1.2 * (std::max)(a.half.minCoeff(), b.half.minCoeff());
+  if(std::abs(vu - va - vb) > tile_volume_tolerance * (va + vb) || vu < tile_side_by_side * (std::max)(va, vb))
+    return false;
+  return u.half.minCoeff() <= tile_thickness_slack * (std::max)(a.half.minCoeff(), b.half.minCoeff());
 }
 
 // The classes of congruent pieces: per piece its class, the first piece of the class.
@@ -81,11 +92,7 @@ inline std::vector<std::size_t> congruence_classes(const std::vector<Part_box>& 
   std::vector<std::size_t> order(n), cls(n);
   for(std::size_t p = 0; p < n; ++p) order[p] = cls[p] = p;
   std::vector<std::array<double, 3> > extent(n);
-  for(std::size_t p = 0; p < n; ++p)
-  {
-    for(int d = 0; d < 3; ++d) extent[p][d] = box[p].half[d];
-    std::sort(extent[p].begin(), extent[p].end());
-  }
+  for(std::size_t p = 0; p < n; ++p) extent[p] = sorted_half_extents(box[p]);
   // sorted by face count then area: congruent pieces are neighbours in this order
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return faces[a] != faces[b] ? faces[a] < faces[b] : (box[a].area != box[b].area ? box[a].area < box[b].area : a < b);
@@ -129,15 +136,17 @@ inline std::vector<std::size_t> pattern_hosts(const std::vector<Part_box>& box, 
 {
   const std::size_t none = (std::numeric_limits<std::size_t>::max)(), n = box.size();
   const std::vector<std::size_t> cls = congruence_classes(box, faces);
+  // whether p is small enough to join a pattern on h
+  auto may_sit_on = [&](std::size_t p, std::size_t h) {
+    return box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area;
+  };
   // per small piece, the largest piece it touches that is large enough
   std::vector<std::size_t> candidate(n, none);
   for(const std::pair<std::size_t, std::size_t>& c : contacts)
     for(int side = 0; side < 2; ++side)
     {
       const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
-      if(box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area &&
-         (candidate[p] == none || box[h].area > box[candidate[p]].area))
-        candidate[p] = h;
+      if(may_sit_on(p, h) && (candidate[p] == none || box[h].area > box[candidate[p]].area)) candidate[p] = h;
     }
   std::vector<std::size_t> members(n, 0); // per class, its members with a candidate host
   for(std::size_t p = 0; p < n; ++p)
@@ -155,7 +164,7 @@ inline std::vector<std::size_t> pattern_hosts(const std::vector<Part_box>& box, 
     {
       const std::size_t p = side ? c.second : c.first, h = side ? c.first : c.second;
       if(host[p] == none && pattern_area[p] == 0. && box[p].area <= pattern_size_ratio * pattern_area[h] &&
-         box[p].area <= pattern_area_fraction * total_area && box[h].area >= pattern_host_ratio * box[p].area)
+         may_sit_on(p, h))
         host[p] = h;
     }
   return host;
@@ -177,13 +186,14 @@ inline std::vector<std::size_t> grouped_pieces(const std::vector<Part_box>& box,
     if(host[p] != none || crumb[p] != none) groups.unite(p, host[p] != none ? host[p] : crumb[p]);
   for(const std::pair<std::size_t, std::size_t>& c : contacts)
     if(tile_one_plate(box[c.first], box[c.second], total, thickness)) groups.unite(c.first, c.second);
-  std::vector<std::size_t> root(n, none); // per set's smallest index, then per piece: its largest piece
+  std::vector<std::size_t> largest(n, none); // per set, by its smallest index
   for(std::size_t p = 0; p < n; ++p)
   {
-    std::size_t& r = root[groups.find(p)];
+    std::size_t& r = largest[groups.find(p)];
     if(r == none || box[p].area > box[r].area) r = p;
   }
-  for(std::size_t p = 0; p < n; ++p) root[p] = root[groups.find(p)];
+  std::vector<std::size_t> root(n);
+  for(std::size_t p = 0; p < n; ++p) root[p] = largest[groups.find(p)];
   return root;
 }
 
