@@ -726,15 +726,17 @@ TEST_CASE("the final labelling reaches the least energy of two labels and a loca
   }
 }
 
-TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh", "[assignment]")
+namespace {
+
+// A 40 x 8 grid of squares of 0.025 along x in [0, 1], the part beyond x = `fold_crease` folded up
+// by 90 degrees (a concave crease for the upward normals).
+constexpr double fold_crease = 0.55;
+Mesh folded_strip()
 {
-  // A 40 x 8 grid of squares of 0.025 along x in [0, 1], the part beyond x = 0.55 folded up by
-  // 90 degrees (a concave crease for the upward normals). The data prefer a cut at x = 0.45, on
-  // flat surface; the cut is far cheaper along the crease, so the least energy cuts there.
   test_shapes::Soup soup;
-  const double crease = 0.55, w = 0.025;
+  const double w = 0.025;
   const auto fold = [&](double x, double y) {
-    return x <= crease ? Point(x, y, 0.) : Point(crease, y, x - crease);
+    return x <= fold_crease ? Point(x, y, 0.) : Point(fold_crease, y, x - fold_crease);
   };
   for(int i = 0; i < 40; ++i)
     for(int j = 0; j < 8; ++j)
@@ -744,23 +746,39 @@ TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh
       soup.triangle(a, b, c);
       soup.triangle(a, c, d);
     }
-  Mesh m = soup.mesh();
+  return soup.mesh();
+}
+
+// Candidates that prefer a cut at x = 0.45 (unfolded), on flat surface: label 0 before, 1 after,
+// the other at the area times the distance to x = 0.45.
+void add_fold_candidates(const PD::internal::Weighted_point& u, PD::internal::Face_candidates& c, std::size_t i)
+{
+  const double x = u.point[2] > 1e-9 ? fold_crease + u.point[2] : u.point[0]; // unfolded abscissa
+  const std::int32_t near = x < 0.45 ? 0 : 1;
+  c.label[i] = {{near, 1 - near, -1, -1}};
+  c.cost[i] = {{0., u.area * std::abs(x - 0.45), 0., 0.}};
+  c.excluded[i] = u.area;
+}
+
+} // namespace
+
+TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh", "[assignment]")
+{
+  // The cut is far cheaper along the crease than where the data prefer it, so the least energy
+  // cuts there: face by face, in two levels and on superfaces.
+  Mesh m = folded_strip();
   const std::size_t nf = num_faces(m);
   const PD::internal::Face_adjacency adj =
     PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, get(CGAL::face_index, m), CGAL::parameters::default_values());
   const PD::internal::Face_corners corners(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m));
+  const auto face_point = [&](std::size_t i) {
+    const Eigen::Vector3d g = (corners(i, 0) + corners(i, 1) + corners(i, 2)) / 3.;
+    return PD::internal::Weighted_point{
+      {{g.x(), g.y(), g.z()}}, 0.5 * (corners(i, 1) - corners(i, 0)).cross(corners(i, 2) - corners(i, 0)).norm()};
+  };
   PD::internal::Face_candidates c;
   c.resize(nf);
-  for(std::size_t i = 0; i < nf; ++i)
-  {
-    Eigen::Vector3d g = (corners(i, 0) + corners(i, 1) + corners(i, 2)) / 3.;
-    const double x = g.z() > 1e-9 ? crease + g.z() : g.x(); // unfolded abscissa
-    const double area = 0.5 * (corners(i, 1) - corners(i, 0)).cross(corners(i, 2) - corners(i, 0)).norm();
-    const std::int32_t near = x < 0.45 ? 0 : 1;
-    c.label[i] = {{near, 1 - near, -1, -1}};
-    c.cost[i] = {{0., area * std::abs(x - 0.45), 0., 0.}};
-    c.excluded[i] = area;
-  }
+  for(std::size_t i = 0; i < nf; ++i) add_fold_candidates(face_point(i), c, i);
   const std::vector<int> up(nf, 1);
   const double edge_scale = 0.01;
   const std::vector<std::int32_t> one_level =
@@ -776,6 +794,20 @@ TEST_CASE("the two-level final labelling finds the concave crease of a fine mesh
   CHECK(two_levels == one_level);
   CHECK(PD::internal::cut_face_labels<CGAL::Parallel_if_available_tag>(adj, corners, c, up, edge_scale, 0.1) ==
         two_levels);
+  // superfaces of 0.1: each is one point, whose data cost puts the cut at x = 0.45; the faces of
+  // the superfaces next to that cut move it to the crease
+  const PD::internal::Superfaces sf = PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, 0.1);
+  CHECK(8 * sf.size() <= nf);
+  const auto candidates_of = [](const std::vector<PD::internal::Weighted_point>& points) {
+    PD::internal::Face_candidates out;
+    out.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) add_fold_candidates(points[i], out, i);
+    return out;
+  };
+  CHECK(PD::internal::superface_labels<CGAL::Sequential_tag>(adj, corners, up, edge_scale, sf, face_point,
+                                                             candidates_of) == one_level);
+  CHECK(PD::internal::superface_labels<CGAL::Parallel_if_available_tag>(adj, corners, up, edge_scale, sf, face_point,
+                                                                        candidates_of) == one_level);
 }
 
 TEST_CASE("with the final labelling the parts do not depend on the patches", "[assignment]")
@@ -803,6 +835,35 @@ TEST_CASE("with the final labelling the parts do not depend on the patches", "[a
     if(x > 0. && x < 0.05) CHECK(prim[part_a[f]] == 5);
     if(x > 0.15 + 0.1875 + 0.07) CHECK(prim[part_a[f]] == 2);
   }
+}
+
+TEST_CASE("on faces much smaller than a voxel the final labelling runs on superfaces and finds the slabs", "[assignment]")
+{
+  Mesh m = test_shapes::make_sphere(Point(0, 0, 0), 0.4, 5); // 20480 faces, edges of about 0.02
+  const Claims claimed = three_slab_claims();
+  const PD::internal::Face_adjacency adj =
+    PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, get(CGAL::face_index, m), CGAL::parameters::default_values());
+  // cells of half a voxel of 1/16: at most half as many superfaces as faces, the switch to them
+  CHECK(2 * PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, 0.5 / 16.).size() <= num_faces(m));
+  std::vector<std::size_t> one(num_faces(m), 0), part, part_parallel;
+  const std::vector<std::size_t> prim = assign(m, one, claimed, part, 1., 1.);
+  CHECK(prim == std::vector<std::size_t>({2, 5, 9}));
+  std::size_t wrong = 0;
+  for(face_descriptor f : faces(m))
+  {
+    const double x = m.point(source(halfedge(f, m), m)).x();
+    wrong += (x < -0.1 - 0.1875 - 0.07 && prim[part[f]] != 9) || (x > 0. && x < 0.05 && prim[part[f]] != 5) ||
+             (x > 0.15 + 0.1875 + 0.07 && prim[part[f]] != 2);
+  }
+  CHECK(wrong == 0);
+  auto qmap = m.add_property_map<face_descriptor, std::size_t>("f:parallel", 0).first;
+  auto pmap = m.add_property_map<face_descriptor, std::size_t>("f:one", 0).first;
+  CHECK(PD::assign_parts<CGAL::Parallel_if_available_tag>(
+          m, pmap, claimed.labels, claimed.tsdf, qmap,
+          PDP::combine(PDP::vote_temperature(1.), PDP::boundary_smoothness(1.))) == prim);
+  std::size_t differ = 0;
+  for(face_descriptor f : faces(m)) differ += qmap[f] != part[f];
+  CHECK(differ == 0);
 }
 
 TEST_CASE("without claimed leaves all faces form one part", "[assignment]")

@@ -14,6 +14,7 @@
 #include <CGAL/Part_decomposition/normalization.h>
 #include <CGAL/Part_decomposition/parameters.h>
 #include <CGAL/Part_decomposition/internal/parts/boundary_graph_cut.h>
+#include <CGAL/Part_decomposition/internal/parts/superface_labelling.h>
 #include <CGAL/Part_decomposition/internal/fitting/claimed_leaf_search.h>
 #include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
@@ -71,51 +72,60 @@ void nearest_claimed_voxels(const TriangleMesh& tm, const FaceIndexMap& fim, con
   }, 1024);
 }
 
-// The candidate primitives of each face index for the final labelling: its nearest claimed leaf
-// (label k0, distance d0) and the other labels claimed within the window of the leaf holding its
-// centroid (`Claimed_leaf_search::labels_near()`) at a distance below d0 + `margin`, nearest
-// first; a candidate at distance d costs (face area / h^2) * (d - d0) / tau, so that the cost of a
-// face is an area in voxels of side h; a label that is not a candidate costs at least the margin:
-// `excluded`.
-template <typename ConcurrencyTag>
-Face_candidates face_candidates(const Face_corners& corners, const Claimed_leaf_search<Adaptive_grid>& search,
-                                const Normalization& normalization, double h, double tau, double margin)
+// The candidates of a point u of the normalized cube standing for `area` (in voxels of side h)
+// for the final labelling, written at index i of `out`: its nearest claimed leaf (label k0,
+// distance d0) and the other labels claimed within the window of the leaf holding u
+// (`Claimed_leaf_search::labels_near()`) at a distance below d0 + `margin`, nearest first; a
+// candidate at distance d costs area * (d - d0) / tau, so that the cost of a face is an area in
+// voxels; a label that is not a candidate costs at least the margin: `excluded`. `near` is scratch.
+inline void add_point_candidates(const Claimed_leaf_search<Adaptive_grid>& search, const Weighted_point& u,
+                                 double tau, double margin, std::vector<std::pair<double, std::int32_t> >& near,
+                                 Face_candidates& out, std::size_t i)
 {
-  const std::size_t nf = corners.vertex.size() / 3;
+  const Claimed_leaf_search<Adaptive_grid>::Result nearest = search.nearest(u.point);
+  near.assign(1, std::make_pair(nearest.distance, nearest.label));
+  out.excluded[i] = u.area * margin / tau;
+  const std::size_t own = search.leaf_of(u.point);
+  for(std::int32_t k : search.labels_near(own))
+  {
+    if(k < 0) break;
+    if(k == nearest.label) continue;
+    const double d = std::sqrt(search.squared_distance_to_label(k, u.point, own));
+    if(d <= nearest.distance + margin) near.emplace_back(d, k);
+  }
+  std::sort(near.begin() + 1, near.end());
+  const std::size_t n = (std::min)(near.size(), std::size_t(Face_candidates::capacity));
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    out.label[i][k] = near[k].second;
+    out.cost[i][k] = u.area * (std::max)(0., near[k].first - nearest.distance) / tau;
+  }
+}
+
+// The centroid of face index i in the normalized cube and its area in voxels of side h.
+inline Weighted_point face_point(const Face_corners& corners, const Normalization& normalization, double h,
+                                 std::size_t i)
+{
+  std::array<Eigen::Vector3d, 3> u;
+  for(int k = 0; k < 3; ++k)
+  {
+    const std::array<double, 3> q = normalization.to_unit(corners(i, k).x(), corners(i, k).y(), corners(i, k).z());
+    u[std::size_t(k)] = Eigen::Vector3d(q[0], q[1], q[2]);
+  }
+  const Eigen::Vector3d c = (u[0] + u[1] + u[2]) / 3.;
+  return Weighted_point{{{c.x(), c.y(), c.z()}}, 0.5 * (u[1] - u[0]).cross(u[2] - u[0]).norm() / (h * h)};
+}
+
+// The candidates of `n` points, `point_of(i)` the i-th (see add_point_candidates()).
+template <typename ConcurrencyTag, typename PointOf>
+Face_candidates point_candidates(std::size_t n, const PointOf& point_of,
+                                 const Claimed_leaf_search<Adaptive_grid>& search, double tau, double margin)
+{
   Face_candidates out;
-  out.resize(nf);
-  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
+  out.resize(n);
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
     std::vector<std::pair<double, std::int32_t> > near; // (distance, label), one per label
-    for(std::size_t i = b; i < e; ++i)
-    {
-      std::array<Eigen::Vector3d, 3> u;
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::array<double, 3> q = normalization.to_unit(corners(i, k).x(), corners(i, k).y(), corners(i, k).z());
-        u[std::size_t(k)] = Eigen::Vector3d(q[0], q[1], q[2]);
-      }
-      const Eigen::Vector3d c = (u[0] + u[1] + u[2]) / 3.;
-      const std::array<double, 3> ca = {{c.x(), c.y(), c.z()}};
-      const double area = 0.5 * (u[1] - u[0]).cross(u[2] - u[0]).norm() / (h * h);
-      const Claimed_leaf_search<Adaptive_grid>::Result nearest = search.nearest(ca);
-      near.assign(1, std::make_pair(nearest.distance, nearest.label));
-      out.excluded[i] = area * margin / tau;
-      const std::size_t own = search.leaf_of(ca);
-      for(std::int32_t k : search.labels_near(own))
-      {
-        if(k < 0) break;
-        if(k == nearest.label) continue;
-        const double d = std::sqrt(search.squared_distance_to_label(k, ca, own));
-        if(d <= nearest.distance + margin) near.emplace_back(d, k);
-      }
-      std::sort(near.begin() + 1, near.end());
-      const std::size_t n = (std::min)(near.size(), std::size_t(Face_candidates::capacity));
-      for(std::size_t k = 0; k < n; ++k)
-      {
-        out.label[i][k] = near[k].second;
-        out.cost[i][k] = area * (std::max)(0., near[k].first - nearest.distance) / tau;
-      }
-    }
+    for(std::size_t i = b; i < e; ++i) add_point_candidates(search, point_of(i), tau, margin, near, out, i);
   }, 256);
   return out;
 }
@@ -237,20 +247,31 @@ constexpr double candidate_margin = 3.;
 constexpr double cluster_cell = 0.5;
 
 // The final labelling of `cut_face_labels()`: the primitive of each face index; `h` is the voxel
-// of the finest prior resolution, the unit of lengths.
+// of the finest prior resolution, the unit of lengths. Where the faces are much smaller than the
+// cells of the clusters (twice as many faces as superfaces), on superfaces
+// (`superface_labels()`).
 template <typename ConcurrencyTag>
 std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, const Face_adjacency& adj,
                                                const Claimed_leaf_search<Adaptive_grid>& search, double h,
                                                const Normalization& normalization,
                                                const Assignment_parameters& p)
 {
-  const Face_candidates candidates = face_candidates<ConcurrencyTag>(
-      corners, search, normalization, h, p.vote_temperature * h, candidate_margin * h);
+  const double tau = p.vote_temperature * h, margin = candidate_margin * h;
+  const double cell = cluster_cell * h / normalization.scale();
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
+  const double edge_scale = p.boundary_smoothness * normalization.scale() / h;
   const std::vector<int> outward(adj.number_of_faces, 1);
-  return cut_face_labels<ConcurrencyTag>(adj, corners, candidates, outward,
-                                         p.boundary_smoothness * normalization.scale() / h,
-                                         cluster_cell * h / normalization.scale());
+  const auto point_of_face = [&](std::size_t i) { return face_point(corners, normalization, h, i); };
+  const Superfaces sf = make_superfaces<ConcurrencyTag>(adj, cell);
+  if(2 * sf.size() <= adj.number_of_faces)
+    return superface_labels<ConcurrencyTag>(adj, corners, outward, edge_scale, sf, point_of_face,
+                                            [&](const std::vector<Weighted_point>& points) {
+      return point_candidates<ConcurrencyTag>(points.size(), [&](std::size_t i) { return points[i]; }, search, tau,
+                                              margin);
+    });
+  const Face_candidates candidates =
+    point_candidates<ConcurrencyTag>(adj.number_of_faces, point_of_face, search, tau, margin);
+  return cut_face_labels<ConcurrencyTag>(adj, corners, candidates, outward, edge_scale, cell);
 }
 
 // `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of

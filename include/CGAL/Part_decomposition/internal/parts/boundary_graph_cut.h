@@ -106,23 +106,24 @@ struct Set_ranks
 
 // The problem on the faces `faces` (increasing; `rank_of(j)`: the rank of j in `faces`, or
 // Label_problem::fixed), each starting with label_of(i), a candidate; the other faces around them
-// are fixed at label_of(j).
-template <typename ConcurrencyTag, typename RankOf, typename LabelOf>
+// are fixed at label_of(j). The candidates of faces[m] are row `row(m)` of `candidates`.
+template <typename ConcurrencyTag, typename RankOf, typename LabelOf, typename Row>
 Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corners, const Face_candidates& candidates,
                            const std::vector<int>& orientation, double edge_scale,
-                           const std::vector<std::size_t>& faces, const RankOf& rank_of, const LabelOf& label_of)
+                           const std::vector<std::size_t>& faces, const RankOf& rank_of, const LabelOf& label_of,
+                           const Row& row)
 {
   const std::size_t n = faces.size();
   Label_problem p;
-  p.allocate(n, [&](std::size_t m) { return std::size_t(candidates.size(faces[m])); });
+  p.allocate(n, [&](std::size_t m) { return std::size_t(candidates.size(row(m))); });
   for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
     for(std::size_t m = b; m < e; ++m)
     {
-      const std::size_t i = faces[m];
-      for(int c = 0; c < candidates.size(i); ++c)
+      const std::size_t i = faces[m], r = row(m);
+      for(int c = 0; c < candidates.size(r); ++c)
       {
-        p.option[p.first[m] + std::size_t(c)] = candidates.label[i][std::size_t(c)];
-        p.option_cost[p.first[m] + std::size_t(c)] = candidates.cost[i][std::size_t(c)];
+        p.option[p.first[m] + std::size_t(c)] = candidates.label[r][std::size_t(c)];
+        p.option_cost[p.first[m] + std::size_t(c)] = candidates.cost[r][std::size_t(c)];
       }
       p.label[m] = label_of(i);
       for(int k = 0; k < 3; ++k)
@@ -138,23 +139,26 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
   return p;
 }
 
+// Whether the centroids of faces i and j lie in one cell of a grid of spacing `cell`. The cells are
+// compared edge by edge: kept per face, they would raise the peak memory of a large mesh, which
+// the final labelling reaches.
+inline bool in_one_cell(const Face_adjacency& adj, std::size_t i, std::size_t j, double cell)
+{
+  for(std::size_t a = 0; a < 3; ++a)
+    if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
+  return true;
+}
+
 // Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
 // a grid of spacing `cell` (a face elsewhere is alone).
 template <typename ConcurrencyTag>
 std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
                                               double cell)
 {
-  // the cells are compared edge by edge: kept per face, they would raise the peak memory of a
-  // large mesh, which this step reaches
-  const auto same_cell = [&](std::size_t i, std::size_t j) {
-    for(std::size_t a = 0; a < 3; ++a)
-      if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
-    return true;
-  };
   std::vector<std::size_t> cluster;
   face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
-    return contested[i] && contested[j] && same_cell(i, j);
+    return contested[i] && contested[j] && in_one_cell(adj, i, j, cell);
   }, cluster);
   return cluster;
 }
@@ -295,7 +299,7 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
   if(2 * number_of_clusters > faces.size())
   {
     Label_problem p = face_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of,
-                                                   initial_label);
+                                                   initial_label, [&](std::size_t m) { return faces[m]; });
     minimize_labels(p);
     for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = p.label[m];
     return;
@@ -341,10 +345,31 @@ void label_contested_set(const Face_adjacency& adj, const Face_corners& corners,
     return r == Label_problem::fixed ? r : band_rank[r];
   };
   Label_problem fine =
-    face_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, band, rank_in_band, label_of);
+    face_problem<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, band, rank_in_band, label_of,
+                                 [&](std::size_t m) { return band[m]; });
   minimize_labels(fine);
   for(std::size_t m = 0; m < faces.size(); ++m) face_label[faces[m]] = projected[m];
   for(std::size_t b = 0; b < band.size(); ++b) face_label[band[b]] = fine.label[b];
+}
+
+// Calls label_set(c, faces) for each set c of `sets` (`faces` is scratch), the largest beside all
+// the others: its minimum cuts run on one thread.
+template <typename ConcurrencyTag, typename SizeOf, typename LabelSet>
+void label_sets_side_by_side(const std::vector<std::size_t>& sets, const SizeOf& size_of, const LabelSet& label_set)
+{
+  if(sets.empty()) return;
+  const std::size_t largest = *std::max_element(sets.begin(), sets.end(),
+                                                [&](std::size_t a, std::size_t b) { return size_of(a) < size_of(b); });
+  run_side_by_side<ConcurrencyTag>([&] {
+    std::vector<std::size_t> faces;
+    label_set(largest, faces);
+  }, [&] {
+    for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
+      std::vector<std::size_t> faces;
+      for(std::size_t s = b; s < e; ++s)
+        if(sets[s] != largest) label_set(sets[s], faces);
+    }, 1);
+  });
 }
 
 // The final labels: every face starts with its cheapest candidate; the edge-connected sets of
@@ -393,21 +418,7 @@ std::vector<std::int32_t> cut_face_labels(const Face_adjacency& adj, const Face_
     label_contested_set<ConcurrencyTag>(adj, corners, candidates, orientation, edge_scale, faces, rank_of, cluster,
                                         initial, face_label);
   };
-  if(sets.empty()) return face_label;
-  // the largest set beside all the others: its minimum cuts run on one thread
-  const auto size_of = [&](std::size_t c) { return start[c + 1] - start[c]; };
-  const std::size_t largest = *std::max_element(sets.begin(), sets.end(),
-                                                [&](std::size_t a, std::size_t b) { return size_of(a) < size_of(b); });
-  run_side_by_side<ConcurrencyTag>([&] {
-    std::vector<std::size_t> faces;
-    label_set(largest, faces);
-  }, [&] {
-    for_each_range<ConcurrencyTag>(sets.size(), [&](std::size_t b, std::size_t e) {
-      std::vector<std::size_t> faces;
-      for(std::size_t s = b; s < e; ++s)
-        if(sets[s] != largest) label_set(sets[s], faces);
-    }, 1);
-  });
+  label_sets_side_by_side<ConcurrencyTag>(sets, [&](std::size_t c) { return start[c + 1] - start[c]; }, label_set);
   return face_label;
 }
 
