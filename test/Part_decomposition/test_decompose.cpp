@@ -1390,6 +1390,50 @@ TEST_CASE("a closed piece thinner than a voxel does not bound a volume of the di
   CHECK(at_256[thin_piece] == 1);
 }
 
+TEST_CASE("on faces much smaller than a voxel the bounding probes run once per superface", "[decompose][pieces]")
+{
+  // The two L-brackets of the test above in cells of 0.01, about a quarter of a voxel of the 64^3
+  // grid: one probe per superface of half a voxel tells the same pieces as one per face.
+  Mesh m = test_shapes::make_l_bracket(1., 1., 0.2, 0.5, 0.01);
+  Mesh thin = test_shapes::make_l_bracket(1., 1., 0.025, 0.5, 0.01);
+  for(auto v : vertices(thin)) thin.point(v) = thin.point(v) + test_shapes::Vector(1.5, 0., 0.);
+  const std::size_t first_thin = test_shapes::append(m, thin);
+  const PD::Piece_segmentation segmented = PD::segment_pieces(m);
+  REQUIRE(segmented.number_of_pieces == 2);
+  const std::size_t thick_piece = segmented.piece[0], thin_piece = segmented.piece[first_thin];
+  const PD::Truncated_signed_distance_field tsdf = PD::compute_tsdf(m);
+  PD::Piece_segmentation pieces = segmented;
+  const std::vector<std::uint8_t> volumetric = PD::volumetric_pieces(m, pieces, tsdf);
+  CHECK(volumetric[thick_piece] == 1);
+  CHECK(volumetric[thin_piece] == 0);
+  // the superfaces were used, and their fractions are those of the faces within 5% (the thin
+  // bracket's few bounding faces lie along its edges, where a superface's mean normal turns most)
+  const auto fim = get(CGAL::face_index, m);
+  const PD::internal::Face_adjacency adj =
+    PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, fim, CGAL::parameters::default_values());
+  const PD::internal::Face_corners corners(m, fim, get(CGAL::vertex_point, m));
+  const double cell = PD::internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale();
+  REQUIRE(PD::internal::superfaces_pay(PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, cell), num_faces(m)));
+  const auto triangle = [&](std::size_t i) {
+    PD::internal::Triangle_points t;
+    for(int c = 0; c < 3; ++c)
+      t[std::size_t(c)] = tsdf.normalization.to_unit(corners(i, c).x(), corners(i, c).y(), corners(i, c).z());
+    return t;
+  };
+  const double depth = PD::internal::bounding_probe_depth * tsdf.voxel_size;
+  const PD::internal::Bounding_fractions by_superface = PD::internal::piece_bounding_fractions<CGAL::Sequential_tag>(
+    adj, triangle, segmented, tsdf.grid, tsdf.values, depth, cell);
+  const PD::internal::Bounding_fractions by_face = PD::internal::piece_bounding_fractions<CGAL::Sequential_tag>(
+    adj, triangle, segmented, tsdf.grid, tsdf.values, depth, 1e-9);
+  for(std::size_t q : {thick_piece, thin_piece})
+  {
+    CHECK(std::abs(by_superface.bounding[q] - by_face.bounding[q]) < 0.05);
+    CHECK(std::abs(by_superface.outward[q] - by_face.outward[q]) < 0.05);
+  }
+  CHECK(by_face.bounding[thick_piece] > 0.9);
+  CHECK(by_face.bounding[thin_piece] < 0.1);
+}
+
 TEST_CASE("an assembly of sheets glued along a junction needs no distance field", "[decompose][pieces]")
 {
   // The corrugated sheet alone is not convex: it may need the volumetric stages. A fin glued along

@@ -21,6 +21,7 @@
 #include <CGAL/Part_decomposition/internal/toolbox/face_adjacency.h>
 #include <CGAL/Part_decomposition/internal/parts/part_merging.h>
 #include <CGAL/Part_decomposition/internal/parts/piece_regions.h>
+#include <CGAL/Part_decomposition/internal/parts/superface_labelling.h>
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -281,6 +282,27 @@ void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector
   c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
 }
 
+// The bounding fractions of the pieces (`bounding_area_fractions()`), probed face by face, or once
+// per superface of cells of side `cell` (mesh units) where the faces are much smaller.
+template <typename ConcurrencyTag, typename TriangleOf, typename Grid>
+Bounding_fractions piece_bounding_fractions(const Face_adjacency& adj, const TriangleOf& triangle,
+                                            const Piece_segmentation& pieces, const Grid& grid,
+                                            const std::vector<double>& field, double depth, double cell)
+{
+  const Superfaces sf = make_superfaces<ConcurrencyTag>(adj, cell);
+  if(superfaces_pay(sf, adj.number_of_faces))
+    return bounding_area_fractions<ConcurrencyTag>(
+      sf.size(),
+      [&](std::size_t s, double& twice_area) {
+        return bounding_side_of_faces(sf.face, sf.start[s], sf.start[s + 1], triangle, grid, field, depth, twice_area);
+      },
+      [&](std::size_t s) { return pieces.piece[sf.face[sf.start[s]]]; }, pieces.number_of_pieces);
+  return bounding_area_fractions<ConcurrencyTag>(
+    adj.number_of_faces,
+    [&](std::size_t i, double& twice_area) { return bounding_side(triangle(i), grid, field, depth, twice_area); },
+    [&](std::size_t i) { return pieces.piece[i]; }, pieces.number_of_pieces);
+}
+
 // Per piece: 1 if it is splittable (`splittable_pieces(adj, ...)`) and not an assembly of sheets,
 // whose parts are its regions: only such a piece needs the distance field.
 inline std::vector<std::uint8_t> splittable_solid_pieces(const Face_adjacency& adj, const Face_corners& corners,
@@ -369,8 +391,8 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
     return t;
   };
   const double depth = internal::bounding_probe_depth * tsdf.voxel_size;
-  const internal::Bounding_fractions sides = internal::bounding_area_fractions<ConcurrencyTag>(
-    num_faces(tm), triangle, pieces.piece, pieces.number_of_pieces, tsdf.grid, tsdf.values, depth);
+  const internal::Bounding_fractions sides = internal::piece_bounding_fractions<ConcurrencyTag>(
+    adj, triangle, pieces, tsdf.grid, tsdf.values, depth, internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale());
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
   {

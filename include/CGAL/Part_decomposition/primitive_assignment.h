@@ -242,9 +242,6 @@ inline std::vector<std::size_t> parts_of_winners(const std::vector<std::int32_t>
 // three voxels from a primitive's claimed leaves than from its nearest one has no say in it.
 constexpr double candidate_window = 3.;
 constexpr double candidate_margin = 3.;
-// The cell of the clusters of the two-level final labelling, in voxels: the data costs vary at the
-// scale of a voxel, the cut is then refined face by face.
-constexpr double cluster_cell = 0.5;
 
 // The final labelling of `cut_face_labels()`: the primitive of each face index; `h` is the voxel
 // of the finest prior resolution, the unit of lengths. Where the faces are much smaller than the
@@ -263,7 +260,7 @@ std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, cons
   const std::vector<int> outward(adj.number_of_faces, 1);
   const auto point_of_face = [&](std::size_t i) { return face_point(corners, normalization, h, i); };
   const Superfaces sf = make_superfaces<ConcurrencyTag>(adj, cell);
-  if(2 * sf.size() <= adj.number_of_faces)
+  if(superfaces_pay(sf, adj.number_of_faces))
     return superface_labels<ConcurrencyTag>(adj, corners, outward, edge_scale, sf, point_of_face,
                                             [&](const std::vector<Weighted_point>& points) {
       return point_candidates<ConcurrencyTag>(points.size(), [&](std::size_t i) { return points[i]; }, search, tau,

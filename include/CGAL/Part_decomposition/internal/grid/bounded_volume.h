@@ -11,10 +11,11 @@
 // Whether each piece of a mesh bounds a volume of a signed distance field.
 //
 // Inputs: the triangles of the mesh in the normalized cube, by face index (made one at a time by
-// `triangle(i)`, so that a large mesh's copy is never held); the piece of each
-// face; a signed distance field on a grid of the cube (negative inside). Output: per piece, the
-// fraction of its area whose faces have the field's inside at `depth` on one side and its outside
-// at `depth` on the other, and on which side the outside mostly is.
+// `triangle(i)`, so that a large mesh's copy is never held), probed face by face or in groups of
+// faces; the piece of each face or group; a signed distance field on a grid of the cube (negative
+// inside). Output: per piece, the fraction of its area whose faces have the field's inside at
+// `depth` on one side and its outside at `depth` on the other, and on which side the outside
+// mostly is.
 
 #include <CGAL/Part_decomposition/internal/toolbox/toolbox.h>
 #include <CGAL/Part_decomposition/internal/grid/winding_number.h>
@@ -71,50 +72,91 @@ struct Bounding_fractions
   std::vector<double> bounding, outward;
 };
 
-// +1 if face `t` has the inside of `field` below it (against its normal) and the outside above, -1
-// for the reverse, 0 otherwise or for a face of zero area; `twice_area` receives its double area.
+// +1 if the point c has the inside of `field` at `depth` below it along n (of length `length`) and
+// its outside above, -1 for the reverse, 0 otherwise or for a zero n.
 template <typename Grid>
-int bounding_side(const Triangle_points& t, const Grid& grid, const std::vector<double>& field, double depth,
-                  double& twice_area)
+int probe_side(const Vec3& c, const Vec3& n, double length, const Grid& grid, const std::vector<double>& field,
+               double depth)
 {
-  const Vec3 n = cross3(sub3(t[1], t[0]), sub3(t[2], t[0]));
-  twice_area = norm3(n);
-  if(!(twice_area > 0.)) return 0;
+  if(!(length > 0.)) return 0;
   Vec3 below, above;
   for(int a = 0; a < 3; ++a)
   {
-    const double c = (t[0][a] + t[1][a] + t[2][a]) / 3., step = depth * n[a] / twice_area;
-    below[a] = c - step;
-    above[a] = c + step;
+    const double step = depth * n[a] / length;
+    below[a] = c[a] - step;
+    above[a] = c[a] + step;
   }
   const bool inside_below = std::signbit(interpolate_field(grid, field, below));
   if(inside_below == std::signbit(interpolate_field(grid, field, above))) return 0;
   return inside_below ? 1 : -1;
 }
 
-template <typename ConcurrencyTag, typename Grid, typename TriangleOf>
-Bounding_fractions bounding_area_fractions(std::size_t number_of_faces, const TriangleOf& triangle,
-                                           const std::vector<std::size_t>& piece, std::size_t number_of_pieces,
-                                           const Grid& grid, const std::vector<double>& field, double depth)
+// The side of face `t` (probe_side() at its centroid along its normal); `twice_area` receives its
+// double area.
+template <typename Grid>
+int bounding_side(const Triangle_points& t, const Grid& grid, const std::vector<double>& field, double depth,
+                  double& twice_area)
 {
-  const std::size_t nf = number_of_faces;
-  std::vector<double> twice_area(nf);
-  std::vector<signed char> side(nf);
-  for_each_range<ConcurrencyTag>(nf, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i) side[i] = (signed char)(bounding_side(triangle(i), grid, field, depth, twice_area[i]));
+  const Vec3 n = cross3(sub3(t[1], t[0]), sub3(t[2], t[0]));
+  twice_area = norm3(n);
+  Vec3 c;
+  for(int a = 0; a < 3; ++a) c[a] = (t[0][a] + t[1][a] + t[2][a]) / 3.;
+  return probe_side(c, n, twice_area, grid, field, depth);
+}
+
+// The side of the faces [first, last) of `faces` taken as one surface, probed once at their
+// area-weighted centroid along the sum of their area-weighted normals, each turned to the side of
+// the first (a face and its twin do not cancel); `twice_area` receives their double area. Faces
+// within a fraction of a voxel see the same field one voxel away.
+template <typename Grid, typename TriangleOf>
+int bounding_side_of_faces(const std::vector<std::size_t>& faces, std::size_t first, std::size_t last,
+                           const TriangleOf& triangle, const Grid& grid, const std::vector<double>& field,
+                           double depth, double& twice_area)
+{
+  Vec3 c = {{0., 0., 0.}}, n = {{0., 0., 0.}};
+  twice_area = 0.;
+  for(std::size_t r = first; r < last; ++r)
+  {
+    const Triangle_points t = triangle(faces[r]);
+    const Vec3 m = cross3(sub3(t[1], t[0]), sub3(t[2], t[0]));
+    const double a = norm3(m), turn = dot3(m, n) < 0. ? -1. : 1.;
+    for(int x = 0; x < 3; ++x)
+    {
+      c[x] += a * (t[0][x] + t[1][x] + t[2][x]) / 3.;
+      n[x] += turn * m[x];
+    }
+    twice_area += a;
+  }
+  if(!(twice_area > 0.)) return 0;
+  for(int x = 0; x < 3; ++x) c[x] /= twice_area;
+  return probe_side(c, n, norm3(n), grid, field, depth);
+}
+
+// Per piece, the bounding fractions of `number_of_items` surface elements (faces, or groups of
+// faces): `side(i, twice_area)` probes element i (bounding_side()), `piece_of(i)` is its piece.
+template <typename ConcurrencyTag, typename Side, typename PieceOf>
+Bounding_fractions bounding_area_fractions(std::size_t number_of_items, const Side& side_of,
+                                           const PieceOf& piece_of, std::size_t number_of_pieces)
+{
+  const std::size_t n = number_of_items;
+  std::vector<double> twice_area(n);
+  std::vector<signed char> side(n);
+  for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i) side[i] = (signed char)(side_of(i, twice_area[i]));
   }, 1024);
-  // the sums in face order, whatever the number of threads
+  // the sums in item order, whatever the number of threads
   std::vector<double> area(number_of_pieces, 0.);
   Bounding_fractions out;
   out.bounding.assign(number_of_pieces, 0.);
   out.outward.assign(number_of_pieces, 0.);
-  for(std::size_t i = 0; i < nf; ++i)
+  for(std::size_t i = 0; i < n; ++i)
   {
     if(!(twice_area[i] > 0.)) continue;
-    area[piece[i]] += twice_area[i];
+    const std::size_t q = piece_of(i);
+    area[q] += twice_area[i];
     if(side[i] == 0) continue;
-    out.bounding[piece[i]] += twice_area[i];
-    out.outward[piece[i]] += side[i] > 0 ? twice_area[i] : -twice_area[i];
+    out.bounding[q] += twice_area[i];
+    out.outward[q] += side[i] > 0 ? twice_area[i] : -twice_area[i];
   }
   for(std::size_t p = 0; p < number_of_pieces; ++p)
     if(area[p] > 0.)
