@@ -1413,7 +1413,8 @@ TEST_CASE("on faces much smaller than a voxel the bounding probes run once per s
     PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, fim, CGAL::parameters::default_values());
   const PD::internal::Face_corners corners(m, fim, get(CGAL::vertex_point, m));
   const double cell = PD::internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale();
-  REQUIRE(PD::internal::superfaces_pay(PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, cell), num_faces(m)));
+  const PD::internal::Superfaces sf = PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, cell);
+  REQUIRE(PD::internal::superfaces_pay(sf, num_faces(m)));
   const auto triangle = [&](std::size_t i) {
     PD::internal::Triangle_points t;
     for(int c = 0; c < 3; ++c)
@@ -1422,9 +1423,10 @@ TEST_CASE("on faces much smaller than a voxel the bounding probes run once per s
   };
   const double depth = PD::internal::bounding_probe_depth * tsdf.voxel_size;
   const PD::internal::Bounding_fractions by_superface = PD::internal::piece_bounding_fractions<CGAL::Sequential_tag>(
-    adj, triangle, segmented, tsdf.grid, tsdf.values, depth, cell);
+    sf, num_faces(m), triangle, segmented, tsdf.grid, tsdf.values, depth);
   const PD::internal::Bounding_fractions by_face = PD::internal::piece_bounding_fractions<CGAL::Sequential_tag>(
-    adj, triangle, segmented, tsdf.grid, tsdf.values, depth, 1e-9);
+    PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, 1e-9), num_faces(m), triangle, segmented, tsdf.grid,
+    tsdf.values, depth);
   for(std::size_t q : {thick_piece, thin_piece})
   {
     CHECK(std::abs(by_superface.bounding[q] - by_face.bounding[q]) < 0.05);

@@ -282,15 +282,14 @@ void finest_parts(const std::vector<std::size_t>& volume_part, const std::vector
   c.number_of_finest_parts = renumber_by_first_face(c.finest_parts);
 }
 
-// The bounding fractions of the pieces (`bounding_area_fractions()`), probed face by face, or once
-// per superface of cells of side `cell` (mesh units) where the faces are much smaller.
+// The bounding fractions of the pieces (`bounding_area_fractions()`) of a mesh of F faces, probed
+// face by face, or once per superface of `sf` where the faces are much smaller than its cells.
 template <typename ConcurrencyTag, typename TriangleOf, typename Grid>
-Bounding_fractions piece_bounding_fractions(const Face_adjacency& adj, const TriangleOf& triangle,
+Bounding_fractions piece_bounding_fractions(const Superfaces& sf, std::size_t F, const TriangleOf& triangle,
                                             const Piece_segmentation& pieces, const Grid& grid,
-                                            const std::vector<double>& field, double depth, double cell)
+                                            const std::vector<double>& field, double depth)
 {
-  const Superfaces sf = make_superfaces<ConcurrencyTag>(adj, cell);
-  if(superfaces_pay(sf, adj.number_of_faces))
+  if(superfaces_pay(sf, F))
     return bounding_area_fractions<ConcurrencyTag>(
       sf.size(),
       [&](std::size_t s, double& twice_area) {
@@ -298,8 +297,7 @@ Bounding_fractions piece_bounding_fractions(const Face_adjacency& adj, const Tri
       },
       [&](std::size_t s) { return pieces.piece[sf.face[sf.start[s]]]; }, pieces.number_of_pieces);
   return bounding_area_fractions<ConcurrencyTag>(
-    adj.number_of_faces,
-    [&](std::size_t i, double& twice_area) { return bounding_side(triangle(i), grid, field, depth, twice_area); },
+    F, [&](std::size_t i, double& twice_area) { return bounding_side(triangle(i), grid, field, depth, twice_area); },
     [&](std::size_t i) { return pieces.piece[i]; }, pieces.number_of_pieces);
 }
 
@@ -391,8 +389,12 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
     return t;
   };
   const double depth = internal::bounding_probe_depth * tsdf.voxel_size;
+  // superfaces of the graph without glued edges: they never cross a piece
+  const auto superfaces = internal::shared_superfaces<ConcurrencyTag>(
+    *internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np),
+    internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale(), np);
   const internal::Bounding_fractions sides = internal::piece_bounding_fractions<ConcurrencyTag>(
-    adj, triangle, pieces, tsdf.grid, tsdf.values, depth, internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale());
+    *superfaces, num_faces(tm), triangle, pieces, tsdf.grid, tsdf.values, depth);
   bool reoriented = false;
   for(std::size_t q = 0; q < pieces.number_of_pieces; ++q)
   {

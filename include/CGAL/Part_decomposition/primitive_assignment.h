@@ -249,6 +249,7 @@ constexpr double candidate_margin = 3.;
 // (`superface_labels()`).
 template <typename ConcurrencyTag>
 std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, const Face_adjacency& adj,
+                                               const Superfaces& sf,
                                                const Claimed_leaf_search<Adaptive_grid>& search, double h,
                                                const Normalization& normalization,
                                                const Assignment_parameters& p)
@@ -259,7 +260,6 @@ std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, cons
   const double edge_scale = p.boundary_smoothness * normalization.scale() / h;
   const std::vector<int> outward(adj.number_of_faces, 1);
   const auto point_of_face = [&](std::size_t i) { return face_point(corners, normalization, h, i); };
-  const Superfaces sf = make_superfaces<ConcurrencyTag>(adj, cell);
   if(superfaces_pay(sf, adj.number_of_faces))
     return superface_labels<ConcurrencyTag>(adj, corners, outward, edge_scale, sf, point_of_face,
                                             [&](const std::vector<Weighted_point>& points) {
@@ -273,8 +273,8 @@ std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, cons
 
 // `assign_parts()` on vectors indexed by the face index map `fim`: `patch` holds the patch of
 // each face (any ids), `part` receives its part; returns the primitive of each part. With a
-// positive `boundary_smoothness`, the faces are labelled by `cut_primitive_labels()` on `adj` and
-// `corners` instead of the patch vote (neither is read otherwise).
+// positive `boundary_smoothness`, the faces are labelled by `cut_primitive_labels()` on `adj`,
+// `corners` and `superfaces` instead of the patch vote (none is read otherwise).
 template <typename ConcurrencyTag, typename TriangleMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, const FaceIndexMap& fim,
                                                       const VertexPointMap& vpm, std::vector<std::size_t> patch,
@@ -282,7 +282,8 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
                                                       const Adaptive_grid& grid, double h,
                                                       const Normalization& normalization,
                                                       const Assignment_parameters& p, const Face_adjacency& adj,
-                                                      const Face_corners* corners, std::vector<std::size_t>& part)
+                                                      const Face_corners* corners, const Superfaces* superfaces,
+                                                      std::vector<std::size_t>& part)
 {
   Claimed_leaf_search<Adaptive_grid> search;
   search.build<ConcurrencyTag>(grid, claimed_labels, p.boundary_smoothness > 0. ? candidate_window * h : 0.);
@@ -294,7 +295,7 @@ std::vector<std::size_t> assign_patches_to_primitives(const TriangleMesh& tm, co
   if(p.boundary_smoothness > 0.)
   {
     const std::vector<std::int32_t> label =
-        cut_primitive_labels<ConcurrencyTag>(*corners, adj, search, h, normalization, p);
+        cut_primitive_labels<ConcurrencyTag>(*corners, adj, *superfaces, search, h, normalization, p);
     std::iota(patch.begin(), patch.end(), std::size_t(0)); // one patch per face
     return parts_of_winners(label, patch, part);
   }
@@ -412,9 +413,13 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
   const internal::Face_adjacency& adj = *graph;
   const auto corners = p.boundary_smoothness > 0. ? internal::shared_face_corners<ConcurrencyTag>(tm, fim, vpm, np)
                                                   : std::shared_ptr<const internal::Face_corners>();
+  const auto superfaces =
+    p.boundary_smoothness > 0.
+      ? internal::shared_superfaces<ConcurrencyTag>(adj, internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale(), np)
+      : std::shared_ptr<const internal::Superfaces>();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
       tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj,
-      corners.get(), part);
+      corners.get(), superfaces.get(), part);
   internal::put_face_values(tm, fim, part, face_part_map);
   return primitives;
 }

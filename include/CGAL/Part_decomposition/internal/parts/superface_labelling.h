@@ -30,6 +30,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <vector>
 
@@ -41,13 +43,6 @@ struct Weighted_point
 {
   Vec3 point;
   double area;
-};
-
-struct Superfaces
-{
-  std::vector<std::size_t> of_face; // per face index, its superface, numbered by first face
-  std::vector<std::size_t> start, face; // superface s: faces face[start[s] .. start[s + 1]), increasing
-  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
 };
 
 // The cell of the superfaces, in voxels: the data costs of the final labelling vary at the scale
@@ -77,6 +72,23 @@ Superfaces make_superfaces(const Face_adjacency& adj, double cell)
   group_indices(adj.number_of_faces, n, [&](std::size_t i) { return sf.of_face[i]; }, [](std::size_t) { return true; },
                 sf.start, sf.face);
   return sf;
+}
+
+// The superfaces of `plain`, the graph `face_adjacency_of()` of a mesh, in cells of side `cell`;
+// when `np` holds the face graphs of `decompose()` (whose `plain` it is), made once for its stages.
+template <typename ConcurrencyTag, typename NamedParameters>
+std::shared_ptr<const Superfaces> shared_superfaces(const Face_adjacency& plain, double cell, const NamedParameters& np)
+{
+  const Face_graphs* graphs = face_graphs_of(np);
+  if(graphs == nullptr) return std::make_shared<const Superfaces>(make_superfaces<ConcurrencyTag>(plain, cell));
+  Face_graphs::Superface_cache& cache = *graphs->superfaces;
+  const std::lock_guard<std::mutex> lock(cache.mutex);
+  if(!cache.superfaces || cache.cell != cell)
+  {
+    cache.superfaces = std::make_shared<const Superfaces>(make_superfaces<ConcurrencyTag>(plain, cell));
+    cache.cell = cell;
+  }
+  return cache.superfaces;
 }
 
 // Per superface, its faces' area-weighted centroid and their area, summed in face order.

@@ -254,6 +254,15 @@ Face_adjacency face_adjacency_of(const TriangleMesh& tm, const FaceIndexMap& fim
 
 // The face graphs of one mesh, built once by `decompose()` and read by every stage it runs: a
 // graph costs about 0.5 s per million faces (1 s glued), and nine stages read one.
+// Superfaces: the edge-connected faces whose centroids lie in one cell of a grid (see
+// `make_superfaces()`).
+struct Superfaces
+{
+  std::vector<std::size_t> of_face; // per face index, its superface, numbered by first face
+  std::vector<std::size_t> start, face; // superface s: faces face[start[s] .. start[s + 1]), increasing
+  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+};
+
 struct Face_graphs
 {
   // the corners of the faces, made by the first stage that asks (shared_face_corners())
@@ -266,6 +275,14 @@ struct Face_graphs
   std::shared_ptr<const Face_adjacency> plain;  // face_adjacency_of()
   std::shared_ptr<const Face_adjacency> pieces; // piece_adjacency()
   std::shared_ptr<Corners> corners = std::make_shared<Corners>();
+  // the superfaces of `plain`, made by the first stage that asks for their cell (shared_superfaces())
+  struct Superface_cache
+  {
+    std::mutex mutex;
+    double cell = 0.;
+    std::shared_ptr<const Superfaces> superfaces;
+  };
+  std::shared_ptr<Superface_cache> superfaces = std::make_shared<Superface_cache>();
 };
 
 } // namespace internal
