@@ -166,7 +166,7 @@ Truncated_signed_distance_field compute_tsdf_of_checked_mesh(const TriangleMesh&
   out.voxel_size = 1. / double(parameters.resolution);
   out.sign_method = parameters.sign_method;
 
-  const std::vector<Triangle_points> tris = normalized_triangles(tm, vpm, out.normalization);
+  const std::vector<Triangle_points> tris = normalized_triangles(tm, vpm, out.normalization, ConcurrencyTag());
   const bool closed = faces_form_closed_surface(tm);
   Grid_refinement_rule rule;
   rule.base_depth = Adaptive_grid::depth_of(parameters.resolution);

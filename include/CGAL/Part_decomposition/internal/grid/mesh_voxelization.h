@@ -34,25 +34,28 @@ namespace internal {
 // vertex is mapped once per incident face with the same arithmetic, so shared vertices keep equal
 // coordinates (the crossing counts below rely on it).
 // `Normalization`: Part_decomposition::Normalization.
-template <typename TriangleMesh, typename VertexPointMap, typename Normalization>
+template <typename TriangleMesh, typename VertexPointMap, typename Normalization,
+          typename ConcurrencyTag = CGAL::Sequential_tag>
 std::vector<Triangle_points> normalized_triangles(const TriangleMesh& tm, const VertexPointMap& vpm,
-                                                  const Normalization& normalization)
+                                                  const Normalization& normalization,
+                                                  ConcurrencyTag = ConcurrencyTag())
 {
-  std::vector<Triangle_points> out;
-  out.reserve(num_faces(tm));
-  for(auto f : faces(tm))
-  {
-    Triangle_points t;
-    int c = 0;
-    for(auto v : vertices_around_face(halfedge(f, tm), tm))
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  std::vector<Triangle_points> out(face_list.size());
+  for_each_range<ConcurrencyTag>(face_list.size(), [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
     {
-      CGAL_precondition(c < 3);
-      if(c < 3) t[c] = normalization.to_unit(get(vpm, v));
-      ++c;
+      int c = 0;
+      for(auto v : vertices_around_face(halfedge(face_list[i], tm), tm))
+      {
+        CGAL_precondition(c < 3);
+        if(c < 3) out[i][c] = normalization.to_unit(get(vpm, v));
+        ++c;
+      }
+      CGAL_precondition(c == 3);
     }
-    CGAL_precondition(c == 3);
-    out.push_back(t);
-  }
+  }, 4096);
   return out;
 }
 
