@@ -1365,16 +1365,28 @@ TEST_CASE("whether a piece bounds a volume is decided by the distance field, not
   CHECK(open_decomposer.needs_volumetric_stages());
 }
 
+namespace {
+
+// Two L-brackets apart, non-convex closed pieces 2.5 long together, in cells of about `cell`: one
+// 0.2 thick (4.8 voxels of the 64^3 grid), one 0.025 thick (0.6 voxel of the 64^3 grid, 2.4 of the
+// 256^3 one); `first_thin` receives the first face of the thin one.
+Mesh thick_and_thin_brackets(double cell, std::size_t& first_thin)
+{
+  Mesh m = test_shapes::make_l_bracket(1., 1., 0.2, 0.5, cell);
+  Mesh thin = test_shapes::make_l_bracket(1., 1., 0.025, 0.5, cell);
+  for(auto v : vertices(thin)) thin.point(v) = thin.point(v) + test_shapes::Vector(1.5, 0., 0.);
+  first_thin = test_shapes::append(m, thin);
+  return m;
+}
+
+} // namespace
+
 TEST_CASE("a closed piece thinner than a voxel does not bound a volume of the distance field", "[decompose][pieces]")
 {
-  // Two L-brackets apart, non-convex closed pieces 2.5 long together: one 0.2 thick (4.8 voxels of
-  // the 64^3 grid), one 0.025 thick (0.6 voxel of the 64^3 grid, 2.4 of the 256^3 one). The probes
-  // one voxel off its faces find the outside on both sides of the thin one at 64 (though its
-  // leaves are at 128), the inside at 256.
-  Mesh m = test_shapes::make_l_bracket(1., 1., 0.2, 0.5, 0.05);
-  Mesh thin = test_shapes::make_l_bracket(1., 1., 0.025, 0.5, 0.05);
-  for(auto v : vertices(thin)) thin.point(v) = thin.point(v) + test_shapes::Vector(1.5, 0., 0.);
-  const std::size_t first_thin = test_shapes::append(m, thin);
+  // The probes one voxel off the faces find the outside on both sides of the thin bracket at 64
+  // (though its leaves are at 128), the inside at 256.
+  std::size_t first_thin = 0;
+  Mesh m = thick_and_thin_brackets(0.05, first_thin);
   const PD::Piece_segmentation segmented = PD::segment_pieces(m);
   REQUIRE(segmented.number_of_pieces == 2);
   CHECK(PD::splittable_pieces(m, segmented) == std::vector<std::uint8_t>{1, 1});
@@ -1394,10 +1406,8 @@ TEST_CASE("on faces much smaller than a voxel the bounding probes run once per s
 {
   // The two L-brackets of the test above in cells of 0.01, about a quarter of a voxel of the 64^3
   // grid: one probe per superface of half a voxel tells the same pieces as one per face.
-  Mesh m = test_shapes::make_l_bracket(1., 1., 0.2, 0.5, 0.01);
-  Mesh thin = test_shapes::make_l_bracket(1., 1., 0.025, 0.5, 0.01);
-  for(auto v : vertices(thin)) thin.point(v) = thin.point(v) + test_shapes::Vector(1.5, 0., 0.);
-  const std::size_t first_thin = test_shapes::append(m, thin);
+  std::size_t first_thin = 0;
+  Mesh m = thick_and_thin_brackets(0.01, first_thin);
   const PD::Piece_segmentation segmented = PD::segment_pieces(m);
   REQUIRE(segmented.number_of_pieces == 2);
   const std::size_t thick_piece = segmented.piece[0], thin_piece = segmented.piece[first_thin];

@@ -355,7 +355,9 @@ returns, per piece of `pieces`, 1 if the volumetric stages decompose it: it is s
 distance field `tsdf`, closed or not: at least half of its area separates the field's inside from
 its outside, probed one voxel away on both sides of each face (an open sheet has the outside on
 both sides, a piece thinner than a voxel too, a wall inside a volume the inside on both); this
-holds for a scan with holes and for each piece of a group that encloses space together.
+holds for a scan with holes and for each piece of a group that encloses space together. Where the
+faces are much smaller than a voxel (see `assign_parts()`), each superface is probed once, at its
+faces' area-weighted centroid along their mean normal.
 
 An open piece that the volumetric stages decompose is turned in `pieces` to face out of the volume
 (as the reader turns closed ones), and the regions are recomputed for that orientation: its

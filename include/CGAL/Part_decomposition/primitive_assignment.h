@@ -345,8 +345,11 @@ voxels of the leaf of its centroid and at most three voxels farther than its nea
 faces with a single such primitive take it, and each edge-connected set of the others is labelled
 by alpha expansion \cgalCite{Boykov2001FastApproximate}, each expansion move solved exactly by one
 minimum cut on the faces that may take the expanded primitive. Where the faces are much smaller
-than a voxel, a set is labelled in two levels: clusters of faces within half a voxel first, then
-face by face next to the cuts. The faces of one primitive form one part, and the patches of
+than a voxel (at least twice as many faces as superfaces: the edge-connected faces whose centroids
+lie in one cell of half a voxel), the energy is minimized on the superfaces first, each weighed as
+one point (its faces' area-weighted centroid and their area), then face by face on the superfaces
+next to a cut; otherwise, each set whose faces are much smaller than that cell is labelled in the
+same two levels. The faces of one primitive form one part, and the patches of
 `face_patch_map` are not used.
 If no leaf is claimed, all faces form the single part `0` and its primitive is `no_primitive`.
 The result does not depend on the number of threads.

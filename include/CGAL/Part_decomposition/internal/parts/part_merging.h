@@ -76,21 +76,30 @@ inline void principal_axes(const Part_box& box, const Eigen::Vector3d& fallback,
   if(axes.determinant() < 0) axes.col(0) = -axes.col(0);
 }
 
-// The centre and half extents of `points` on `axes` (through `mean`).
-inline void extents_on_axes(const Eigen::Matrix3d& axes, const Eigen::Vector3d& mean,
-                            const std::vector<Eigen::Vector3d>& points, Eigen::Vector3d& center, Eigen::Vector3d& half)
+// The centre and half extents of `points` on each of `axes` (through `mean`), in one pass over
+// the points.
+inline void extents_on_axes(const std::vector<Eigen::Matrix3d>& axes, const Eigen::Vector3d& mean,
+                            const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& center,
+                            std::vector<Eigen::Vector3d>& half)
 {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
+  const std::size_t n = axes.size();
+  std::vector<Eigen::Vector3d> lo(n, Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()));
+  std::vector<Eigen::Vector3d> hi(n, Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity()));
   for(const Eigen::Vector3d& p : points)
+    for(std::size_t c = 0; c < n; ++c)
+    {
+      const Eigen::Vector3d l = axes[c].transpose() * (p - mean);
+      lo[c] = lo[c].cwiseMin(l);
+      hi[c] = hi[c].cwiseMax(l);
+    }
+  center.resize(n);
+  half.resize(n);
+  for(std::size_t c = 0; c < n; ++c)
   {
-    const Eigen::Vector3d l = axes.transpose() * (p - mean);
-    lo = lo.cwiseMin(l);
-    hi = hi.cwiseMax(l);
+    if(points.empty()) lo[c] = hi[c] = Eigen::Vector3d::Zero();
+    half[c] = (hi[c] - lo[c]) / 2.;
+    center[c] = mean + axes[c] * ((hi[c] + lo[c]) / 2.);
   }
-  if(points.empty()) lo = hi = Eigen::Vector3d::Zero();
-  half = (hi - lo) / 2.;
-  center = mean + axes * ((hi + lo) / 2.);
 }
 
 // Sets the axes and extents of `box` to the smallest box of `points` on the principal axes of its
@@ -99,28 +108,30 @@ inline void extents_on_axes(const Eigen::Matrix3d& axes, const Eigen::Vector3d& 
 inline void fit_box_to_points(Part_box& box, const std::vector<Eigen::Vector3d>& points,
                               const std::vector<Eigen::Matrix3d>& more_axes = std::vector<Eigen::Matrix3d>())
 {
+  // the mean of the points stands for the centroid of a surface of zero area only
   Eigen::Vector3d fallback = Eigen::Vector3d::Zero();
-  for(const Eigen::Vector3d& p : points) fallback += p / double(points.size());
+  if(!(box.area > 0.))
+    for(const Eigen::Vector3d& p : points) fallback += p / double(points.size());
   Eigen::Vector3d mean;
   Eigen::Matrix3d principal;
   principal_axes(box, fallback, principal, mean);
   std::vector<Eigen::Matrix3d> candidates(1, principal);
   candidates.push_back(Eigen::Matrix3d::Identity());
   candidates.insert(candidates.end(), more_axes.begin(), more_axes.end());
+  std::vector<Eigen::Vector3d> center, half;
+  extents_on_axes(candidates, mean, points, center, half);
   double best = std::numeric_limits<double>::infinity();
-  for(const Eigen::Matrix3d& axes : candidates)
+  for(std::size_t c = 0; c < candidates.size(); ++c)
   {
-    Eigen::Vector3d center, half;
-    extents_on_axes(axes, mean, points, center, half);
     // a flat box still has a size: its two largest extents break the tie
-    const double floor = 1e-6 * half.maxCoeff();
-    const double volume = (half[0] + floor) * (half[1] + floor) * (half[2] + floor);
+    const double floor = 1e-6 * half[c].maxCoeff();
+    const double volume = (half[c][0] + floor) * (half[c][1] + floor) * (half[c][2] + floor);
     if(volume < best * (1. - 1e-9))
     {
       best = volume;
-      box.axes = axes;
-      box.center = center;
-      box.half = half;
+      box.axes = candidates[c];
+      box.center = center[c];
+      box.half = half[c];
     }
   }
 }
