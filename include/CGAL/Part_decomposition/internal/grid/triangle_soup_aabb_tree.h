@@ -64,7 +64,7 @@ typedef CGAL::AABB_tree<Aabb_triangle_traits> Aabb_triangle_tree;
 // and a run of neighbours in Morton order is compact, so a query tests few more triangles.
 struct Aabb_chunk
 {
-  static constexpr std::size_t chunk_size = 8;
+  static constexpr std::size_t chunk_size = 4;
   std::size_t id;
   Aabb_kernel::Point_3 centre; // of its box, the point the build splits by
 };
