@@ -58,13 +58,15 @@ typedef CGAL::AABB_traits<Aabb_kernel, Aabb_triangle_primitive> Aabb_triangle_tr
 #endif
 typedef CGAL::AABB_tree<Aabb_triangle_traits> Aabb_triangle_tree;
 
-// A primitive of the tree: a run of consecutive triangles of the Morton order (`chunk_size` of
-// them, fewer at the end), its box read from a property map. CGAL builds its tree in
-// O(n log n) on the primitives: runs make the build several times cheaper than single triangles,
-// and a run of neighbours in Morton order is compact, so a query tests few more triangles.
+// A primitive of the tree: a run of consecutive triangles of the Morton order, its box read from a
+// property map. CGAL builds its tree in O(n log n) on the primitives, while the distance field asks
+// for about as many distances as the grid has leaves near the surface: on a soup of many more
+// triangles than that, runs of `Aabb_chunk::large_run` triangles make the build several times
+// cheaper for a few more triangles tested per query (a run of neighbours in Morton order is
+// compact); on a smaller soup each triangle is its own run, as queries dominate there.
 struct Aabb_chunk
 {
-  static constexpr std::size_t chunk_size = 4;
+  static constexpr std::size_t large_run = 4, large_soup = std::size_t(1) << 18;
   std::size_t id;
   Aabb_kernel::Point_3 centre; // of its box, the point the build splits by
 };
@@ -104,10 +106,10 @@ class Closest_triangle_traversal
 public:
   typedef double Priority;
 
-  // `triangles`: the stored triangles; `soup_index`: the soup index of each.
-  Closest_triangle_traversal(const std::vector<Aabb_kernel::Triangle_3>& triangles, const std::uint32_t* soup_index,
-                             double bound2, std::uint32_t bound_triangle)
-    : m_triangles(triangles), m_soup_index(soup_index), m_best2(bound2), m_best(bound_triangle)
+  // `triangles`: the stored triangles, in runs of `run`; `soup_index`: the soup index of each.
+  Closest_triangle_traversal(const std::vector<Aabb_kernel::Triangle_3>& triangles, std::size_t run,
+                             const std::uint32_t* soup_index, double bound2, std::uint32_t bound_triangle)
+    : m_triangles(triangles), m_run(run), m_soup_index(soup_index), m_best2(bound2), m_best(bound_triangle)
   {}
 
   bool go_further() const { return true; }
@@ -115,8 +117,8 @@ public:
   template <typename Primitive>
   void intersection(const Vec3& p, const Primitive& primitive)
   {
-    const std::size_t first = primitive.id() * Aabb_chunk::chunk_size;
-    const std::size_t last = (std::min)(first + Aabb_chunk::chunk_size, m_triangles.size());
+    const std::size_t first = primitive.id() * m_run;
+    const std::size_t last = (std::min)(first + m_run, m_triangles.size());
     for(std::size_t r = first; r < last; ++r)
     {
       const Aabb_kernel::Triangle_3& t = m_triangles[r];
@@ -161,6 +163,7 @@ private:
   static Vec3 vec(const Aabb_kernel::Point_3& p) { return {{p.x(), p.y(), p.z()}}; }
 
   const std::vector<Aabb_kernel::Triangle_3>& m_triangles;
+  std::size_t m_run;
   const std::uint32_t* m_soup_index;
   double m_best2;
   std::uint32_t m_best;
@@ -242,7 +245,7 @@ public:
     make_chunks<ConcurrencyTag>();
     // CGAL builds a tree on one thread: a large soup is split into the two halves of its Morton
     // order (two boxes apart in space), one tree each, built side by side and both searched
-    const std::size_t half = m_chunks.size() >= split_size ? m_chunks.size() / 2 : m_chunks.size();
+    const std::size_t half = m_triangles.size() >= split_size ? m_chunks.size() / 2 : m_chunks.size();
     run_side_by_side<ConcurrencyTag>([&] { build_tree(m_trees[0], 0, half); },
                                      [&] { build_tree(m_trees[1], half, m_chunks.size()); });
   }
@@ -256,7 +259,7 @@ public:
   std::pair<std::uint32_t, double> closest(const Vec3& p, double bound2 = std::numeric_limits<double>::infinity(),
                                            std::uint32_t bound_triangle = 0) const
   {
-    Closest_triangle_traversal traversal(m_triangles, m_soup_index.data(), bound2, bound_triangle);
+    Closest_triangle_traversal traversal(m_triangles, m_run, m_soup_index.data(), bound2, bound_triangle);
     // the nearer tree first, so that its answer prunes the other
     const Aabb_chunk_tree &a = *m_trees[0], &b = *m_trees[1];
     const bool second_first =
@@ -276,13 +279,15 @@ public:
   }
 
 private:
-  // the number of chunks from which the soup is held in two trees
-  static constexpr std::size_t split_size = (std::size_t(1) << 16) / Aabb_chunk::chunk_size;
+  // the number of triangles from which the soup is held in two trees
+  static constexpr std::size_t split_size = std::size_t(1) << 16;
 
   template <typename ConcurrencyTag>
   void make_chunks()
   {
-    const std::size_t n = m_triangles.size(), size = Aabb_chunk::chunk_size;
+    const std::size_t n = m_triangles.size();
+    m_run = n >= Aabb_chunk::large_soup ? Aabb_chunk::large_run : 1;
+    const std::size_t size = m_run;
     m_chunks.resize((n + size - 1) / size);
     m_boxes.resize(m_chunks.size());
     for_each_range<ConcurrencyTag>(m_chunks.size(), [&](std::size_t b, std::size_t e) {
@@ -307,10 +312,11 @@ private:
   std::vector<Aabb_kernel::Triangle_3> m_triangles;
   std::vector<std::uint32_t> m_soup_index;
   std::vector<std::uint32_t> m_position; // soup index -> index in m_triangles
+  std::size_t m_run = 1; // triangles per chunk
   std::vector<Aabb_chunk> m_chunks;
   std::vector<CGAL::Bbox_3> m_boxes; // per chunk, read by the trees
   // made once m_boxes is filled (their traits hold its address); the second holds no chunk below
-  // split_size chunks
+  // split_size triangles
   std::array<std::unique_ptr<Aabb_chunk_tree>, 2> m_trees;
 };
 
