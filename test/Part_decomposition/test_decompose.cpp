@@ -1422,7 +1422,7 @@ TEST_CASE("on faces much smaller than a voxel the bounding probes run once per s
   const PD::internal::Face_adjacency adj =
     PD::internal::face_adjacency_of<CGAL::Sequential_tag>(m, fim, CGAL::parameters::default_values());
   const PD::internal::Face_corners corners(m, fim, get(CGAL::vertex_point, m));
-  const double cell = PD::internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale();
+  const double cell = PD::internal::superface_cell(tsdf.voxel_size, tsdf.normalization.scale());
   const PD::internal::Superfaces sf = PD::internal::make_superfaces<CGAL::Sequential_tag>(adj, cell);
   REQUIRE(PD::internal::superfaces_pay(sf, num_faces(m)));
   const auto triangle = [&](std::size_t i) {

@@ -394,7 +394,7 @@ std::vector<std::uint8_t> volumetric_pieces(const TriangleMesh& tm, Piece_segmen
   // superfaces of the graph without glued edges: they never cross a piece
   const auto superfaces = internal::shared_superfaces<ConcurrencyTag>(
     *internal::shared_face_adjacency<ConcurrencyTag>(tm, maps.fim, np),
-    internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale(), np);
+    internal::superface_cell(tsdf.voxel_size, tsdf.normalization.scale()), np);
   const internal::Bounding_fractions sides = internal::piece_bounding_fractions<ConcurrencyTag>(
     *superfaces, num_faces(tm), triangle, pieces, tsdf.grid, tsdf.values, depth);
   bool reoriented = false;

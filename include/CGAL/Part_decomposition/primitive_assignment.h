@@ -255,7 +255,7 @@ std::vector<std::int32_t> cut_primitive_labels(const Face_corners& corners, cons
                                                const Assignment_parameters& p)
 {
   const double tau = p.vote_temperature * h, margin = candidate_margin * h;
-  const double cell = cluster_cell * h / normalization.scale();
+  const double cell = superface_cell(h, normalization.scale());
   // the cut cost of an edge is measured in voxels of length, like the data cost in voxels of area
   const double edge_scale = p.boundary_smoothness * normalization.scale() / h;
   const std::vector<int> outward(adj.number_of_faces, 1);
@@ -418,7 +418,8 @@ std::vector<std::size_t> assign_parts(const TriangleMesh& tm, FacePatchMap face_
                                                   : std::shared_ptr<const internal::Face_corners>();
   const auto superfaces =
     p.boundary_smoothness > 0.
-      ? internal::shared_superfaces<ConcurrencyTag>(adj, internal::cluster_cell * tsdf.voxel_size / tsdf.normalization.scale(), np)
+      ? internal::shared_superfaces<ConcurrencyTag>(
+          adj, internal::superface_cell(tsdf.voxel_size, tsdf.normalization.scale()), np)
       : std::shared_ptr<const internal::Superfaces>();
   std::vector<std::size_t> primitives = internal::assign_patches_to_primitives<ConcurrencyTag>(
       tm, fim, vpm, std::move(patch), claimed_labels, tsdf.grid, tsdf.voxel_size, tsdf.normalization, p, adj,

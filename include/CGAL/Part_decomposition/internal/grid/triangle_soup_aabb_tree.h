@@ -38,9 +38,8 @@
 // runs of triangles. The tree is walked through its public `traversal_with_priority()` with our
 // own traversal traits: nearest child first, nodes pruned by the best distance so far (which the
 // caller may seed with an upper bound), and the exact double-precision point-triangle distance at
-// the leaves. CGAL's own
-// `closest_point()` gives the same distances but starts from a kd-tree hint, cannot take a bound
-// and visits the children in a fixed order.
+// the leaves. CGAL's own `closest_point()` gives the same distances but starts from a kd-tree
+// hint, cannot take a bound and visits the children in a fixed order.
 
 namespace CGAL {
 namespace Part_decomposition {

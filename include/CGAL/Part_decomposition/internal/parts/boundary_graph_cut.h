@@ -104,6 +104,16 @@ struct Set_ranks
   }
 };
 
+// Writes the candidates of row r of `candidates` as the options of member m of `p` (allocated).
+inline void copy_options(const Face_candidates& candidates, std::size_t r, Label_problem& p, std::size_t m)
+{
+  for(int c = 0; c < candidates.size(r); ++c)
+  {
+    p.option[p.first[m] + std::size_t(c)] = candidates.label[r][std::size_t(c)];
+    p.option_cost[p.first[m] + std::size_t(c)] = candidates.cost[r][std::size_t(c)];
+  }
+}
+
 // The problem on the faces `faces` (increasing; `rank_of(j)`: the rank of j in `faces`, or
 // Label_problem::fixed), each starting with label_of(i), a candidate; the other faces around them
 // are fixed at label_of(j). The candidates of faces[m] are row `row(m)` of `candidates`.
@@ -119,12 +129,8 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
   for_each_range<ConcurrencyTag>(n, [&](std::size_t b, std::size_t e) {
     for(std::size_t m = b; m < e; ++m)
     {
-      const std::size_t i = faces[m], r = row(m);
-      for(int c = 0; c < candidates.size(r); ++c)
-      {
-        p.option[p.first[m] + std::size_t(c)] = candidates.label[r][std::size_t(c)];
-        p.option_cost[p.first[m] + std::size_t(c)] = candidates.cost[r][std::size_t(c)];
-      }
+      const std::size_t i = faces[m];
+      copy_options(candidates, row(m), p, m);
       p.label[m] = label_of(i);
       for(int k = 0; k < 3; ++k)
       {
@@ -139,14 +145,16 @@ Label_problem face_problem(const Face_adjacency& adj, const Face_corners& corner
   return p;
 }
 
-// Whether the centroids of faces i and j lie in one cell of a grid of spacing `cell`. The cells are
-// compared edge by edge: kept per face, they would raise the peak memory of a large mesh, which
-// the final labelling reaches.
-inline bool in_one_cell(const Face_adjacency& adj, std::size_t i, std::size_t j, double cell)
+// Per face index, the cell of a grid of spacing `cell` (mesh units) that holds its centroid.
+template <typename ConcurrencyTag>
+std::vector<std::array<double, 3> > face_cells(const Face_adjacency& adj, double cell)
 {
-  for(std::size_t a = 0; a < 3; ++a)
-    if(std::floor(adj.centroid[3 * i + a] / cell) != std::floor(adj.centroid[3 * j + a] / cell)) return false;
-  return true;
+  std::vector<std::array<double, 3> > key(adj.number_of_faces);
+  for_each_range<ConcurrencyTag>(adj.number_of_faces, [&](std::size_t b, std::size_t e) {
+    for(std::size_t i = b; i < e; ++i)
+      for(std::size_t a = 0; a < 3; ++a) key[i][a] = std::floor(adj.centroid[3 * i + a] / cell);
+  }, 4096);
+  return key;
 }
 
 // Per face index: its cluster, the faces of `contested` that are edge-connected within one cell of
@@ -155,10 +163,11 @@ template <typename ConcurrencyTag>
 std::vector<std::size_t> face_clusters(const Face_adjacency& adj, const std::vector<std::uint8_t>& contested,
                                               double cell)
 {
+  const std::vector<std::array<double, 3> > key = face_cells<ConcurrencyTag>(adj, cell);
   std::vector<std::size_t> cluster;
   face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     const std::size_t j = adj.neighbor[3 * i + std::size_t(k)];
-    return contested[i] && contested[j] && in_one_cell(adj, i, j, cell);
+    return contested[i] && contested[j] && key[i] == key[j];
   }, cluster);
   return cluster;
 }

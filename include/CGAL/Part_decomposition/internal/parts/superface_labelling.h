@@ -49,6 +49,13 @@ struct Weighted_point
 // of a voxel, and the bounding probes reach one voxel away.
 constexpr double cluster_cell = 0.5;
 
+// The side of the superfaces' cells in mesh units, for a voxel of `voxel_size` in the normalized
+// cube and a normalization of scale `scale`; every stage derives it here, so that they share them.
+inline double superface_cell(double voxel_size, double scale)
+{
+  return cluster_cell * voxel_size / scale;
+}
+
 // Whether the superfaces are worth using: at most half as many as the faces.
 inline bool superfaces_pay(const Superfaces& sf, std::size_t number_of_faces)
 {
@@ -59,12 +66,7 @@ inline bool superfaces_pay(const Superfaces& sf, std::size_t number_of_faces)
 template <typename ConcurrencyTag>
 Superfaces make_superfaces(const Face_adjacency& adj, double cell)
 {
-  // the cell of each face, computed once rather than per edge
-  std::vector<std::array<double, 3> > key(adj.number_of_faces);
-  for_each_range<ConcurrencyTag>(adj.number_of_faces, [&](std::size_t b, std::size_t e) {
-    for(std::size_t i = b; i < e; ++i)
-      for(std::size_t a = 0; a < 3; ++a) key[i][a] = std::floor(adj.centroid[3 * i + a] / cell);
-  }, 4096);
+  const std::vector<std::array<double, 3> > key = face_cells<ConcurrencyTag>(adj, cell);
   Superfaces sf;
   const std::size_t n = face_components<ConcurrencyTag>(adj, [&](std::size_t i, int k) {
     return key[i] == key[adj.neighbor[3 * i + std::size_t(k)]];
@@ -128,11 +130,7 @@ Label_problem superface_problem(const Face_adjacency& adj, const Face_corners& c
   for_each_range<ConcurrencyTag>(sf.size(), [&](std::size_t b, std::size_t e) {
     for(std::size_t s = b; s < e; ++s)
     {
-      for(int c = 0; c < candidates.size(s); ++c)
-      {
-        p.option[p.first[s] + std::size_t(c)] = candidates.label[s][std::size_t(c)];
-        p.option_cost[p.first[s] + std::size_t(c)] = candidates.cost[s][std::size_t(c)];
-      }
+      copy_options(candidates, s, p, s);
       p.label[s] = candidates.label[s][0];
       for(std::size_t r = sf.start[s]; r < sf.start[s + 1]; ++r)
         for(int k = 0; k < 3; ++k)
@@ -218,9 +216,9 @@ void refine_next_to_cuts(const Face_adjacency& adj, const Face_corners& corners,
                 start, order);
   std::vector<std::size_t> local(band.size()); // the rank of each face of the band in its set
   for(std::size_t r = 0; r < order.size(); ++r) local[order[r]] = r - start[set[order[r]]];
-  const std::vector<std::int32_t> fixed_label(face_label);
+  // the sets write the faces of the band only: the others are read where they are
   const auto label_of = [&](std::size_t j) {
-    return rank[j] == Label_problem::fixed ? fixed_label[j] : start_label[rank[j]];
+    return rank[j] == Label_problem::fixed ? face_label[j] : start_label[rank[j]];
   };
   const auto label_set = [&](std::size_t c, std::vector<std::size_t>& faces) {
     faces.clear();
